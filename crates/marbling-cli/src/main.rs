@@ -1,0 +1,43 @@
+//! `marbling`: validate, render and benchmark marbling design documents.
+
+mod bench;
+mod input;
+mod render;
+mod validate;
+
+use clap::{Parser, Subcommand};
+use std::process::ExitCode;
+
+/// Mathematical marbling from the command line.
+#[derive(Parser)]
+#[command(name = "marbling", version, about)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Render a design to a PNG exactly (every pixel walks back through every op).
+    Render(render::RenderArgs),
+    /// Check a design and summarise its ops, or list every error with its JSON path.
+    Validate(validate::ValidateArgs),
+    /// Measure renderer throughput in op-samples per second on synthetic designs.
+    Bench(bench::BenchArgs),
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let result = match cli.command {
+        Command::Render(args) => render::run(&args),
+        Command::Validate(args) => validate::run(&args),
+        Command::Bench(args) => bench::run(&args),
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("error: {e:#}");
+            ExitCode::FAILURE
+        }
+    }
+}

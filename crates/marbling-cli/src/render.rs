@@ -1,0 +1,117 @@
+//! `marbling render`: an exact PNG of a design at any scale.
+
+use crate::input::read_design;
+use anyhow::{Context, Result, bail};
+use clap::Args;
+use indicatif::{ProgressBar, ProgressStyle};
+use marbling_core::{Antialias, RenderOptions, output_size, render_with_progress};
+use std::io::Write;
+use std::sync::Mutex;
+use std::time::{Duration, Instant};
+
+/// Arguments of `marbling render`.
+#[derive(Args)]
+pub struct RenderArgs {
+    /// Design document (JSON); `-` reads standard input.
+    design: String,
+    /// Output PNG; `-` writes to standard output.
+    #[arg(short, long)]
+    output: String,
+    /// Output pixels per design pixel (default 1).
+    #[arg(long, conflicts_with = "width")]
+    scale: Option<f64>,
+    /// Output width in pixels (the height follows the design's aspect ratio).
+    #[arg(long)]
+    width: Option<u32>,
+    /// Antialiasing: none, rgss, grid4, quincunx, rooks8, adaptive.
+    #[arg(long, default_value = "rgss")]
+    aa: Antialias,
+}
+
+/// A progress bar on stderr that appears only once a render has taken about a second.
+pub struct LazyProgress {
+    start: Instant,
+    bar: Mutex<Option<ProgressBar>>,
+}
+
+impl LazyProgress {
+    /// Starts the clock.
+    pub fn new() -> Self {
+        Self {
+            start: Instant::now(),
+            bar: Mutex::new(None),
+        }
+    }
+
+    /// Reports `done` of `total` steps.
+    pub fn update(&self, done: usize, total: usize) {
+        if self.start.elapsed() < Duration::from_secs(1) {
+            return;
+        }
+        let Ok(mut bar) = self.bar.lock() else { return };
+        let bar = bar.get_or_insert_with(|| {
+            let b = ProgressBar::new(total as u64);
+            if let Ok(style) =
+                ProgressStyle::with_template("{elapsed_precise} [{bar:40}] {percent}% eta {eta}")
+            {
+                b.set_style(style.progress_chars("=> "));
+            }
+            b
+        });
+        bar.set_position(done as u64);
+    }
+
+    /// Removes the bar, if it was shown.
+    pub fn finish(&self) {
+        if let Ok(Some(bar)) = self.bar.lock().as_deref() {
+            bar.finish_and_clear();
+        }
+    }
+}
+
+/// Renders the design and writes the PNG.
+pub fn run(args: &RenderArgs) -> Result<()> {
+    let design = read_design(&args.design)?;
+    let scale = match (args.scale, args.width) {
+        (Some(s), _) => s,
+        (None, Some(0)) => bail!("--width must be at least 1"),
+        (None, Some(w)) => f64::from(w) / f64::from(design.width),
+        (None, None) => 1.0,
+    };
+    let (w, h) = output_size(&design, scale)?;
+    let opts = RenderOptions {
+        scale,
+        antialias: args.aa,
+    };
+    // Open the output before the (possibly long) render so a bad path fails at once.
+    let mut out: Box<dyn Write> = if args.output == "-" {
+        Box::new(std::io::stdout().lock())
+    } else {
+        Box::new(
+            std::fs::File::create(&args.output)
+                .with_context(|| format!("cannot write '{}'", args.output))?,
+        )
+    };
+    let start = Instant::now();
+    let progress = LazyProgress::new();
+    let image = render_with_progress(&design, &opts, &|d, t| progress.update(d, t))?;
+    progress.finish();
+    let elapsed = start.elapsed();
+    let png = image.to_png()?;
+    out.write_all(&png)
+        .and_then(|()| out.flush())
+        .with_context(|| format!("cannot write '{}'", args.output))?;
+    let summary = format!(
+        "{}: {w}×{h} px, {} ops, aa {}, rendered in {:.3} s",
+        args.output,
+        design.ops.len(),
+        args.aa,
+        elapsed.as_secs_f64()
+    );
+    if args.output == "-" {
+        eprintln!("{summary}");
+    } else {
+        println!("{summary}");
+    }
+    Ok(())
+}

@@ -1,0 +1,35 @@
+//! `marbling validate`: a one-line summary, or every error with its path.
+
+use crate::input::{display_name, read_design};
+use anyhow::Result;
+use clap::Args;
+
+/// Arguments of `marbling validate`.
+#[derive(Args)]
+pub struct ValidateArgs {
+    /// Design document (JSON); `-` reads standard input.
+    design: String,
+}
+
+/// Prints `NAME: valid, W×H, N ops (a drop, b tine, …)`.
+pub fn run(args: &ValidateArgs) -> Result<()> {
+    let d = read_design(&args.design)?;
+    let counts: Vec<String> = d
+        .op_counts()
+        .iter()
+        .map(|(t, n)| format!("{n} {t}"))
+        .collect();
+    let detail = if counts.is_empty() {
+        String::new()
+    } else {
+        format!(": {}", counts.join(", "))
+    };
+    println!(
+        "{}: valid, {}×{}, {} ops{detail}",
+        display_name(&args.design),
+        d.width,
+        d.height,
+        d.ops.len()
+    );
+    Ok(())
+}

@@ -1,0 +1,463 @@
+//! Reading and writing design documents (schema v1 JSON), with errors that name the
+//! JSON path of every problem.
+
+use crate::design::{CURRENT_VERSION, SUPPORTED_VERSIONS};
+use crate::validate::Checker;
+use crate::{Circular, Design, Drop, Op, Rake, Rgb8, Spray, Tine, ValidationErrors, Vortex, Wavy};
+use kurbo::{Point, Vec2};
+use serde_json::{Map, Value, json};
+
+/// Why a design document could not be read.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+pub enum DesignError {
+    /// The text is not JSON; line and column are 1-based.
+    #[error("line {line}, column {column}: {message}")]
+    Syntax {
+        /// 1-based line of the problem.
+        line: usize,
+        /// 1-based column of the problem.
+        column: usize,
+        /// What the JSON parser expected.
+        message: String,
+    },
+    /// The JSON does not describe a valid design; every problem is listed.
+    #[error("{0}")]
+    Invalid(ValidationErrors),
+}
+
+const TOP_FIELDS: &[&str] = &["version", "width", "height", "background", "ops"];
+
+/// Field names of each op type, `type` first, in the order they are written.
+fn op_fields(kind: &str) -> Option<&'static [&'static str]> {
+    Some(match kind {
+        "drop" | "spray" => &["type", "center", "radius", "color"],
+        "tine" => &["type", "origin", "direction", "alpha", "lambda"],
+        "rake" => &["type", "origin", "direction", "spacing", "alpha", "lambda"],
+        "wavy" => &["type", "angle", "amplitude", "wavelength", "phase"],
+        "circular" => &["type", "center", "radius", "alpha", "lambda"],
+        "vortex" => &["type", "center", "alpha", "lambda"],
+        _ => return None,
+    })
+}
+
+fn type_of(v: &Value) -> &'static str {
+    match v {
+        Value::Null => "null",
+        Value::Bool(_) => "a boolean",
+        Value::Number(_) => "a number",
+        Value::String(_) => "a string",
+        Value::Array(_) => "an array",
+        Value::Object(_) => "an object",
+    }
+}
+
+/// Turns JSON values into typed parts, recording every problem with its path.
+struct Reader {
+    c: Checker,
+}
+
+impl Reader {
+    fn object<'a>(
+        &mut self,
+        path: &str,
+        v: &'a Value,
+        allowed: &[&str],
+    ) -> Option<&'a Map<String, Value>> {
+        let Some(obj) = v.as_object() else {
+            self.c
+                .push(path, format!("must be an object, got {}", type_of(v)));
+            return None;
+        };
+        for key in obj.keys().filter(|k| !allowed.contains(&k.as_str())) {
+            self.c.push(
+                join(path, key),
+                format!("unknown field; expected one of {}", allowed.join(", ")),
+            );
+        }
+        Some(obj)
+    }
+
+    fn field<'a>(
+        &mut self,
+        path: &str,
+        obj: &'a Map<String, Value>,
+        name: &str,
+    ) -> Option<&'a Value> {
+        let v = obj.get(name);
+        if v.is_none() {
+            self.c.push(join(path, name), "missing");
+        }
+        v
+    }
+
+    fn number(&mut self, path: &str, obj: &Map<String, Value>, name: &str) -> Option<f64> {
+        let v = self.field(path, obj, name)?;
+        self.number_value(&join(path, name), v)
+    }
+
+    fn number_value(&mut self, path: &str, v: &Value) -> Option<f64> {
+        let n = v.as_f64();
+        if n.is_none() {
+            self.c
+                .push(path, format!("must be a number, got {}", type_of(v)));
+        }
+        n
+    }
+
+    fn pair(&mut self, path: &str, obj: &Map<String, Value>, name: &str) -> Option<(f64, f64)> {
+        let v = self.field(path, obj, name)?;
+        let path = join(path, name);
+        match v.as_array().map(Vec::as_slice) {
+            Some([x, y]) => {
+                let x = self.number_value(&format!("{path}[0]"), x);
+                let y = self.number_value(&format!("{path}[1]"), y);
+                Some((x?, y?))
+            }
+            _ => {
+                self.c.push(
+                    path,
+                    format!("must be an array [x, y] of two numbers, got {}", short(v)),
+                );
+                None
+            }
+        }
+    }
+
+    fn point(&mut self, path: &str, obj: &Map<String, Value>, name: &str) -> Option<Point> {
+        self.pair(path, obj, name).map(Point::from)
+    }
+
+    fn vector(&mut self, path: &str, obj: &Map<String, Value>, name: &str) -> Option<Vec2> {
+        self.pair(path, obj, name).map(Vec2::from)
+    }
+
+    fn color(&mut self, path: &str, obj: &Map<String, Value>, name: &str) -> Option<Rgb8> {
+        let v = self.field(path, obj, name)?;
+        let parsed = v.as_str().map(str::parse::<Rgb8>);
+        match parsed {
+            Some(Ok(c)) => Some(c),
+            _ => {
+                self.c.push(
+                    join(path, name),
+                    format!("must be a colour \"#rrggbb\", got {}", short(v)),
+                );
+                None
+            }
+        }
+    }
+
+    fn side(&mut self, obj: &Map<String, Value>, name: &str) -> Option<u32> {
+        let v = self.field("", obj, name)?;
+        match v.as_u64().and_then(|n| u32::try_from(n).ok()) {
+            Some(n) => {
+                self.c.side(name, n);
+                Some(n)
+            }
+            None => {
+                self.c.push(
+                    name,
+                    format!(
+                        "must be an integer in 1..={}, got {}",
+                        crate::MAX_SIDE,
+                        short(v)
+                    ),
+                );
+                None
+            }
+        }
+    }
+
+    fn op(&mut self, i: usize, v: &Value) -> Option<Op> {
+        let path = format!("ops[{i}]");
+        let Some(obj) = v.as_object() else {
+            self.c
+                .push(path, format!("must be an object, got {}", type_of(v)));
+            return None;
+        };
+        let kind = match obj.get("type") {
+            Some(Value::String(s)) => s.as_str(),
+            Some(other) => {
+                self.c.push(
+                    format!("{path}.type"),
+                    format!("must be a string, got {}", short(other)),
+                );
+                return None;
+            }
+            None => {
+                self.c.push(format!("{path}.type"), "missing");
+                return None;
+            }
+        };
+        let Some(fields) = op_fields(kind) else {
+            self.c.push(
+                format!("{path}.type"),
+                format!(
+                    "unknown op type {kind:?}; expected one of {}",
+                    crate::OP_TYPES.join(", ")
+                ),
+            );
+            return None;
+        };
+        self.object(&path, v, fields)?;
+        let p = path.as_str();
+        let op = match kind {
+            "drop" | "spray" => {
+                let (center, radius, color) = (
+                    self.point(p, obj, "center"),
+                    self.number(p, obj, "radius"),
+                    self.color(p, obj, "color"),
+                );
+                let (center, radius, color) = (center?, radius?, color?);
+                if kind == "drop" {
+                    Op::Drop(Drop {
+                        center,
+                        radius,
+                        color,
+                    })
+                } else {
+                    Op::Spray(Spray {
+                        center,
+                        radius,
+                        color,
+                    })
+                }
+            }
+            "tine" => {
+                let (origin, direction) = (
+                    self.point(p, obj, "origin"),
+                    self.vector(p, obj, "direction"),
+                );
+                let (alpha, lambda) = (self.number(p, obj, "alpha"), self.number(p, obj, "lambda"));
+                Op::Tine(Tine {
+                    origin: origin?,
+                    direction: direction?,
+                    alpha: alpha?,
+                    lambda: lambda?,
+                })
+            }
+            "rake" => {
+                let (origin, direction) = (
+                    self.point(p, obj, "origin"),
+                    self.vector(p, obj, "direction"),
+                );
+                let spacing = self.number(p, obj, "spacing");
+                let (alpha, lambda) = (self.number(p, obj, "alpha"), self.number(p, obj, "lambda"));
+                Op::Rake(Rake {
+                    origin: origin?,
+                    direction: direction?,
+                    spacing: spacing?,
+                    alpha: alpha?,
+                    lambda: lambda?,
+                })
+            }
+            "wavy" => {
+                let (angle, amplitude) = (
+                    self.number(p, obj, "angle"),
+                    self.number(p, obj, "amplitude"),
+                );
+                let (wavelength, phase) = (
+                    self.number(p, obj, "wavelength"),
+                    self.number(p, obj, "phase"),
+                );
+                Op::Wavy(Wavy {
+                    angle: angle?,
+                    amplitude: amplitude?,
+                    wavelength: wavelength?,
+                    phase: phase?,
+                })
+            }
+            "circular" => {
+                let (center, radius) =
+                    (self.point(p, obj, "center"), self.number(p, obj, "radius"));
+                let (alpha, lambda) = (self.number(p, obj, "alpha"), self.number(p, obj, "lambda"));
+                Op::Circular(Circular {
+                    center: center?,
+                    radius: radius?,
+                    alpha: alpha?,
+                    lambda: lambda?,
+                })
+            }
+            _ => {
+                let center = self.point(p, obj, "center");
+                let (alpha, lambda) = (self.number(p, obj, "alpha"), self.number(p, obj, "lambda"));
+                Op::Vortex(Vortex {
+                    center: center?,
+                    alpha: alpha?,
+                    lambda: lambda?,
+                })
+            }
+        };
+        self.c.op(i, &op);
+        Some(op)
+    }
+
+    fn design(&mut self, v: &Value) -> Option<Design> {
+        let obj = self.object("", v, TOP_FIELDS)?;
+        let version = self.field("", obj, "version")?;
+        match version.as_u64() {
+            Some(n) if SUPPORTED_VERSIONS.contains(&n) => {}
+            _ => {
+                let supported: Vec<String> =
+                    SUPPORTED_VERSIONS.iter().map(u64::to_string).collect();
+                self.c.push(
+                    "version",
+                    format!(
+                        "unsupported version {}; this build reads version {}",
+                        short(version),
+                        supported.join(", ")
+                    ),
+                );
+                return None;
+            }
+        }
+        let width = self.side(obj, "width");
+        let height = self.side(obj, "height");
+        let background = self.color("", obj, "background");
+        let ops = match self.field("", obj, "ops") {
+            Some(Value::Array(items)) => {
+                self.c.op_count(items.len());
+                let ops: Vec<Option<Op>> = items
+                    .iter()
+                    .enumerate()
+                    .map(|(i, item)| self.op(i, item))
+                    .collect();
+                ops.into_iter().collect::<Option<Vec<Op>>>()
+            }
+            Some(other) => {
+                self.c
+                    .push("ops", format!("must be an array, got {}", type_of(other)));
+                None
+            }
+            None => None,
+        };
+        Some(Design {
+            width: width?,
+            height: height?,
+            background: background?,
+            ops: ops?,
+        })
+    }
+}
+
+fn join(path: &str, name: &str) -> String {
+    if path.is_empty() {
+        name.to_owned()
+    } else {
+        format!("{path}.{name}")
+    }
+}
+
+/// A value quoted for an error message, cut short when long.
+fn short(v: &Value) -> String {
+    let s = v.to_string();
+    if s.chars().count() > 40 {
+        format!("{}…", s.chars().take(40).collect::<String>())
+    } else {
+        s
+    }
+}
+
+/// A number written as an integer when it is one (shorter documents and share links).
+fn num(v: f64) -> Value {
+    if v.fract() == 0.0 && v.abs() < 9.0e15 {
+        json!(v as i64)
+    } else {
+        json!(v)
+    }
+}
+
+fn pair(x: f64, y: f64) -> Value {
+    json!([num(x), num(y)])
+}
+
+fn op_value(op: &Op) -> Value {
+    let t = op.type_name();
+    match op {
+        Op::Drop(Drop {
+            center,
+            radius,
+            color,
+        })
+        | Op::Spray(Spray {
+            center,
+            radius,
+            color,
+        }) => {
+            json!({"type": t, "center": pair(center.x, center.y), "radius": num(*radius), "color": color.to_string()})
+        }
+        Op::Tine(o) => json!({"type": t, "origin": pair(o.origin.x, o.origin.y),
+            "direction": pair(o.direction.x, o.direction.y), "alpha": num(o.alpha), "lambda": num(o.lambda)}),
+        Op::Rake(o) => json!({"type": t, "origin": pair(o.origin.x, o.origin.y),
+            "direction": pair(o.direction.x, o.direction.y), "spacing": num(o.spacing),
+            "alpha": num(o.alpha), "lambda": num(o.lambda)}),
+        Op::Wavy(o) => json!({"type": t, "angle": num(o.angle), "amplitude": num(o.amplitude),
+            "wavelength": num(o.wavelength), "phase": num(o.phase)}),
+        Op::Circular(o) => json!({"type": t, "center": pair(o.center.x, o.center.y),
+            "radius": num(o.radius), "alpha": num(o.alpha), "lambda": num(o.lambda)}),
+        Op::Vortex(o) => json!({"type": t, "center": pair(o.center.x, o.center.y),
+            "alpha": num(o.alpha), "lambda": num(o.lambda)}),
+    }
+}
+
+impl Design {
+    /// Reads a design document, checking its structure and every value rule.
+    /// All problems are reported at once, each with its JSON path.
+    pub fn from_json(text: &str) -> Result<Design, DesignError> {
+        let value: Value = serde_json::from_str(text).map_err(|e| {
+            let full = e.to_string();
+            let message = match full.rfind(" at line ") {
+                Some(i) => full[..i].to_owned(),
+                None => full,
+            };
+            DesignError::Syntax {
+                line: e.line(),
+                column: e.column(),
+                message,
+            }
+        })?;
+        let mut reader = Reader {
+            c: Checker::default(),
+        };
+        let design = reader.design(&value);
+        match (design, reader.c.errors.is_empty()) {
+            (Some(d), true) => Ok(d),
+            _ => Err(DesignError::Invalid(ValidationErrors(reader.c.errors))),
+        }
+    }
+
+    /// The document as a JSON value in schema v1 field order.
+    pub fn to_value(&self) -> Value {
+        json!({
+            "version": CURRENT_VERSION,
+            "width": self.width,
+            "height": self.height,
+            "background": self.background.to_string(),
+            "ops": self.ops.iter().map(op_value).collect::<Vec<_>>(),
+        })
+    }
+
+    /// The document as indented JSON, one op per line.
+    pub fn to_json_pretty(&self) -> String {
+        let mut out = String::from("{\n");
+        let v = self.to_value();
+        for key in ["version", "width", "height", "background"] {
+            out += &format!("  {:?}: {},\n", key, v[key]);
+        }
+        out += "  \"ops\": [";
+        for (i, op) in self.ops.iter().enumerate() {
+            out += if i == 0 { "\n    " } else { ",\n    " };
+            out += &op_value(op).to_string();
+        }
+        out += if self.ops.is_empty() {
+            "]\n}\n"
+        } else {
+            "\n  ]\n}\n"
+        };
+        out
+    }
+
+    /// The document as compact JSON (for share links).
+    pub fn to_json_compact(&self) -> String {
+        self.to_value().to_string()
+    }
+}

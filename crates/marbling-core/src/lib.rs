@@ -1,0 +1,32 @@
+//! Mathematical marbling (Lu, Jaffer, Jin, Zhao & Mao 2012): the seven operations of
+//! design schema v1 with their exact forward and inverse maps, design documents (JSON,
+//! validated with path-named errors) and the exact CPU reference renderer.
+//!
+//! Conventions: design pixels, origin top-left, x right, y down, angles in radians,
+//! colours sRGB `"#rrggbb"`; all geometry in f64.
+
+pub mod color;
+pub mod compare;
+mod design;
+mod image;
+mod json;
+mod ops;
+mod render;
+pub mod sampling;
+pub mod synth;
+mod validate;
+mod walk;
+
+pub use color::Rgb8;
+pub use design::{CURRENT_VERSION, Design, MAX_OPS, MAX_SIDE, SUPPORTED_VERSIONS};
+pub use image::{PngError, RgbaImage};
+pub use json::DesignError;
+pub use kurbo::{Point, Vec2};
+pub use ops::{Back, Circular, Drop, OP_TYPES, Op, Rake, Spray, Tine, Vortex, Wavy};
+pub use render::{
+    MAX_OUTPUT_PIXELS, MAX_OUTPUT_SIDE, RenderError, RenderOptions, output_size, render,
+    render_with_progress,
+};
+pub use sampling::Antialias;
+pub use validate::{FieldError, ValidationErrors};
+pub use walk::{Batch, Traced, Walker};

@@ -1,0 +1,40 @@
+//! Tine: one straight tine drawn across the tank.
+
+use kurbo::{Point, Vec2};
+
+/// A tine through `origin` moving along `direction`.
+///
+/// M = direction/|direction|, N = (−M.y, M.x), d = |(P − A)·N|;
+/// forward P' = P + αλ/(d + λ)·M. `alpha` is the largest shift (design pixels, at the
+/// tine line) and `lambda` (> 0) how fast the shift decays with distance.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Tine {
+    /// A point on the tine line, design pixels.
+    pub origin: Point,
+    /// Direction of motion (non-zero; its length does not matter).
+    pub direction: Vec2,
+    /// Shift at the tine line, design pixels (negative moves against `direction`).
+    pub alpha: f64,
+    /// Decay length, design pixels, > 0.
+    pub lambda: f64,
+}
+
+impl Tine {
+    /// The displacement applied at `p`; it is constant along M, so the map inverts exactly.
+    pub fn shift(&self, p: Point) -> Vec2 {
+        let m = self.direction.normalize();
+        let n = Vec2::new(-m.y, m.x);
+        let d = (p - self.origin).dot(n).abs();
+        m * (self.alpha * self.lambda / (d + self.lambda))
+    }
+
+    /// Moves `p` along the tine.
+    pub fn forward(&self, p: Point) -> Point {
+        p + self.shift(p)
+    }
+
+    /// Undoes [`Tine::forward`].
+    pub fn inverse(&self, p: Point) -> Point {
+        p - self.shift(p)
+    }
+}

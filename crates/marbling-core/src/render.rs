@@ -1,0 +1,248 @@
+//! The exact CPU reference renderer: every sample of every output pixel walks back
+//! through all ops (no intermediate image is ever resampled), in parallel over bands of
+//! tiles with rayon.
+
+use crate::sampling::Sample;
+use crate::walk::{Batch, Traced, Walker};
+use crate::{Antialias, Design, Rgb8, RgbaImage};
+use rayon::prelude::*;
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+/// Largest output side, pixels.
+pub const MAX_OUTPUT_SIDE: u32 = 65_536;
+/// Largest output area, pixels (16384², i.e. 1 GiB of RGBA).
+pub const MAX_OUTPUT_PIXELS: u64 = 16_384 * 16_384;
+/// Side of the square pixel tiles the renderer works on.
+const TILE: u32 = 32;
+
+/// How to render a design.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RenderOptions {
+    /// Output pixels per design pixel (> 0): pixel (i, j) samples design point
+    /// ((i + 0.5)/s, (j + 0.5)/s) and nearby points for antialiasing.
+    pub scale: f64,
+    /// Antialiasing pattern.
+    pub antialias: Antialias,
+}
+
+impl Default for RenderOptions {
+    fn default() -> Self {
+        Self {
+            scale: 1.0,
+            antialias: Antialias::Rgss,
+        }
+    }
+}
+
+/// Why a render cannot be made.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum RenderError {
+    /// The scale is not a positive finite number.
+    #[error("scale must be a finite number > 0, got {0}")]
+    BadScale(f64),
+    /// The output would be too big.
+    #[error(
+        "output of {width}×{height} pixels is too large (at most {MAX_OUTPUT_SIDE} per side and {MAX_OUTPUT_PIXELS} pixels)"
+    )]
+    TooLarge {
+        /// Requested width, pixels.
+        width: f64,
+        /// Requested height, pixels.
+        height: f64,
+    },
+}
+
+/// The output size in pixels of `design` at `scale`: each side rounded, at least 1.
+pub fn output_size(design: &Design, scale: f64) -> Result<(u32, u32), RenderError> {
+    if !(scale.is_finite() && scale > 0.0) {
+        return Err(RenderError::BadScale(scale));
+    }
+    let w = (f64::from(design.width) * scale).round().max(1.0);
+    let h = (f64::from(design.height) * scale).round().max(1.0);
+    let side = f64::from(MAX_OUTPUT_SIDE);
+    if w > side || h > side || w * h > MAX_OUTPUT_PIXELS as f64 {
+        return Err(RenderError::TooLarge {
+            width: w,
+            height: h,
+        });
+    }
+    Ok((w as u32, h as u32))
+}
+
+/// Renders `design` exactly.
+pub fn render(design: &Design, opts: &RenderOptions) -> Result<RgbaImage, RenderError> {
+    render_with_progress(design, opts, &|_, _| {})
+}
+
+/// Renders `design` exactly, calling `progress(done, total)` (in bands of pixel rows,
+/// from any thread) as work finishes.
+pub fn render_with_progress(
+    design: &Design,
+    opts: &RenderOptions,
+    progress: &(dyn Fn(usize, usize) + Sync),
+) -> Result<RgbaImage, RenderError> {
+    let (width, height) = output_size(design, opts.scale)?;
+    let shader = Shader::new(design);
+    let mut image = RgbaImage::filled(width, height, [0, 0, 0, 255]);
+    let band_bytes = width as usize * 4 * TILE as usize;
+    let bands = height.div_ceil(TILE) as usize;
+    let done = AtomicUsize::new(0);
+    image
+        .pixels
+        .par_chunks_mut(band_bytes)
+        .enumerate()
+        .for_each_init(TileScratch::default, |scratch, (band, rows)| {
+            let y0 = band as u32 * TILE;
+            let h = (rows.len() / (width as usize * 4)) as u32;
+            for x0 in (0..width).step_by(TILE as usize) {
+                let w = TILE.min(width - x0);
+                let tile = Tile { x0, y0, w, h };
+                shader.tile(&tile, opts, scratch, |x, y, rgb| {
+                    let i = (y as usize * width as usize + (x0 + x) as usize) * 4;
+                    rows[i..i + 3].copy_from_slice(&[rgb.r, rgb.g, rgb.b]);
+                });
+            }
+            progress(done.fetch_add(1, Ordering::Relaxed) + 1, bands);
+        });
+    Ok(image)
+}
+
+/// A rectangle of output pixels.
+struct Tile {
+    x0: u32,
+    y0: u32,
+    w: u32,
+    h: u32,
+}
+
+/// Buffers reused from tile to tile on one thread.
+#[derive(Default)]
+struct TileScratch {
+    batch: Batch,
+    traced: Vec<Traced>,
+    /// Palette index of each traced sample.
+    colors: Vec<u32>,
+    refine: Vec<u32>,
+}
+
+/// Turns traced samples into colours.
+struct Shader {
+    walker: Walker,
+    /// sRGB colour of each op's ink (background colour for ops without ink), then the
+    /// background colour at index `ops.len()`.
+    srgb: Vec<Rgb8>,
+    /// The same palette in linear light.
+    linear: Vec<[f32; 3]>,
+}
+
+impl Shader {
+    fn new(design: &Design) -> Self {
+        let mut srgb: Vec<Rgb8> = design
+            .ops
+            .iter()
+            .map(|o| o.ink().unwrap_or(design.background))
+            .collect();
+        srgb.push(design.background);
+        let linear = srgb.iter().map(|c| c.to_linear()).collect();
+        Self {
+            walker: Walker::new(&design.ops),
+            srgb,
+            linear,
+        }
+    }
+
+    /// Palette index of a traced sample.
+    fn index(&self, t: Traced) -> u32 {
+        match t {
+            Traced::Ink(k) => k as u32,
+            Traced::Background(_) => (self.srgb.len() - 1) as u32,
+        }
+    }
+
+    /// Weighted average of palette entries in linear light, encoded back to sRGB.
+    /// Samples of one colour keep that exact colour.
+    fn average(&self, idx: &[u32], samples: &[Sample]) -> Rgb8 {
+        let first = self.srgb[idx[0] as usize];
+        if idx.iter().all(|&i| self.srgb[i as usize] == first) {
+            return first;
+        }
+        let mut acc = [0.0f32; 3];
+        for (&i, s) in idx.iter().zip(samples) {
+            let lin = self.linear[i as usize];
+            for ch in 0..3 {
+                acc[ch] += s.weight * lin[ch];
+            }
+        }
+        let e = crate::color::linear_to_srgb;
+        Rgb8::new(e(acc[0]), e(acc[1]), e(acc[2]))
+    }
+
+    /// Traces `samples` for each listed pixel (local tile index) into `scratch.colors`,
+    /// laid out pixel-major.
+    fn trace(
+        &self,
+        tile: &Tile,
+        pixels: impl Iterator<Item = u32>,
+        samples: &[Sample],
+        scale: f64,
+        scratch: &mut TileScratch,
+    ) {
+        let inv = 1.0 / scale;
+        scratch.batch.clear();
+        let mut n = 0u32;
+        for p in pixels {
+            let (px, py) = (
+                f64::from(tile.x0 + p % tile.w),
+                f64::from(tile.y0 + p / tile.w),
+            );
+            for s in samples {
+                scratch.batch.push((px + s.dx) * inv, (py + s.dy) * inv, n);
+                n += 1;
+            }
+        }
+        scratch.traced.clear();
+        scratch.traced.resize(n as usize, Traced::Ink(0));
+        self.walker
+            .trace_batch(&mut scratch.batch, &mut scratch.traced);
+        scratch.colors.clear();
+        scratch
+            .colors
+            .extend(scratch.traced.iter().map(|&t| self.index(t)));
+    }
+
+    /// Renders one tile, handing each pixel's colour to `put(local x, local y, colour)`.
+    fn tile(
+        &self,
+        tile: &Tile,
+        opts: &RenderOptions,
+        scratch: &mut TileScratch,
+        mut put: impl FnMut(u32, u32, Rgb8),
+    ) {
+        let samples = opts.antialias.samples();
+        let count = tile.w * tile.h;
+        self.trace(tile, 0..count, samples, opts.scale, scratch);
+        let k = samples.len();
+        scratch.refine.clear();
+        for p in 0..count {
+            let cs = &scratch.colors[p as usize * k..(p as usize + 1) * k];
+            if opts.antialias.refinement().is_some()
+                && cs
+                    .iter()
+                    .any(|&c| self.srgb[c as usize] != self.srgb[cs[0] as usize])
+            {
+                scratch.refine.push(p);
+                continue;
+            }
+            put(p % tile.w, p / tile.w, self.average(cs, samples));
+        }
+        if let Some(fine) = opts.antialias.refinement() {
+            let refine = std::mem::take(&mut scratch.refine);
+            self.trace(tile, refine.iter().copied(), fine, opts.scale, scratch);
+            for (i, &p) in refine.iter().enumerate() {
+                let cs = &scratch.colors[i * fine.len()..(i + 1) * fine.len()];
+                put(p % tile.w, p / tile.w, self.average(cs, fine));
+            }
+            scratch.refine = refine;
+        }
+    }
+}

@@ -1,0 +1,121 @@
+//! Deterministic random designs for tests and benchmarks (no external RNG: the same
+//! seed gives the same design on every platform).
+
+use crate::{Circular, Design, Drop, Op, Rake, Rgb8, Spray, Tine, Vortex, Wavy};
+use kurbo::{Point, Vec2};
+
+/// SplitMix64: a tiny, well-distributed 64-bit generator.
+#[derive(Clone, Debug)]
+pub struct SplitMix64(pub u64);
+
+impl SplitMix64 {
+    /// The next 64 random bits.
+    pub fn next_u64(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+        z ^ (z >> 31)
+    }
+
+    /// Uniform in [0, 1).
+    pub fn unit(&mut self) -> f64 {
+        (self.next_u64() >> 11) as f64 / (1u64 << 53) as f64
+    }
+
+    /// Uniform in [lo, hi).
+    pub fn range(&mut self, lo: f64, hi: f64) -> f64 {
+        lo + (hi - lo) * self.unit()
+    }
+
+    /// Uniform integer in 0..n (n > 0).
+    pub fn below(&mut self, n: u64) -> u64 {
+        self.next_u64() % n
+    }
+}
+
+/// What a synthetic design is made of.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Mix {
+    /// About 80 % drops and sprays, the rest combs and swirls.
+    DropHeavy,
+    /// A few drops first, then about 90 % tines, rakes and wavy combs.
+    CombHeavy,
+    /// All seven op types in roughly equal parts.
+    Mixed,
+}
+
+const PALETTE: [Rgb8; 6] = [
+    Rgb8::new(0x1d, 0x35, 0x57),
+    Rgb8::new(0xe6, 0x39, 0x46),
+    Rgb8::new(0xf1, 0xfa, 0xee),
+    Rgb8::new(0xa8, 0xda, 0xdc),
+    Rgb8::new(0x45, 0x7b, 0x9d),
+    Rgb8::new(0xe9, 0xc4, 0x6a),
+];
+
+/// A valid random design of `n_ops` ops on a `width × height` canvas.
+pub fn random_design(seed: u64, width: u32, height: u32, n_ops: usize, mix: Mix) -> Design {
+    let mut rng = SplitMix64(seed);
+    let (w, h) = (f64::from(width), f64::from(height));
+    let size = w.min(h);
+    let mut design = Design::new(width, height, Rgb8::new(0xf3, 0xea, 0xd7));
+    for i in 0..n_ops {
+        let kind = match mix {
+            Mix::DropHeavy => [0, 0, 0, 0, 0, 0, 1, 1, 2, 3, 4, 5][rng.below(12) as usize],
+            Mix::CombHeavy if i < n_ops / 20 + 1 => 0,
+            Mix::CombHeavy => [0, 2, 2, 2, 3, 3, 3, 4, 4, 5][rng.below(10) as usize],
+            Mix::Mixed => rng.below(7) as usize,
+        };
+        let center = Point::new(rng.range(0.0, w), rng.range(0.0, h));
+        let color = PALETTE[rng.below(PALETTE.len() as u64) as usize];
+        let angle = rng.range(0.0, std::f64::consts::TAU);
+        let direction = Vec2::from_angle(angle);
+        let alpha = rng.range(-0.15, 0.15) * size;
+        let lambda = rng.range(0.01, 0.2) * size;
+        let op = match kind {
+            0 => Op::Drop(Drop {
+                center,
+                radius: rng.range(0.01, 0.08) * size,
+                color,
+            }),
+            1 => Op::Spray(Spray {
+                center,
+                radius: rng.range(0.003, 0.02) * size,
+                color,
+            }),
+            2 => Op::Tine(Tine {
+                origin: center,
+                direction,
+                alpha,
+                lambda,
+            }),
+            3 => Op::Rake(Rake {
+                origin: center,
+                direction,
+                spacing: rng.range(0.04, 0.25) * size,
+                alpha,
+                lambda,
+            }),
+            4 => Op::Wavy(Wavy {
+                angle,
+                amplitude: rng.range(-0.05, 0.05) * size,
+                wavelength: rng.range(0.1, 1.0) * size,
+                phase: rng.range(0.0, std::f64::consts::TAU),
+            }),
+            5 => Op::Circular(Circular {
+                center,
+                radius: rng.range(0.05, 0.4) * size,
+                alpha,
+                lambda,
+            }),
+            _ => Op::Vortex(Vortex {
+                center,
+                alpha: alpha * 0.5,
+                lambda,
+            }),
+        };
+        design.ops.push(op);
+    }
+    design
+}

@@ -1,0 +1,158 @@
+//! Value rules of the design schema, each error naming its JSON path.
+
+use crate::design::{MAX_OPS, MAX_SIDE};
+use crate::{Design, Op};
+use kurbo::{Point, Vec2};
+use std::fmt;
+
+/// One broken rule at one place of a design document, e.g.
+/// `ops[12].radius: must be > 0, got -3`.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct FieldError {
+    /// JSON path of the offending value (`ops[3].center[1]`, `width`, …).
+    pub path: String,
+    /// What is wrong, with the value found.
+    pub message: String,
+}
+
+impl fmt::Display for FieldError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}: {}", self.path, self.message)
+    }
+}
+
+/// All the rules a design breaks; displayed one per line.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+pub struct ValidationErrors(pub Vec<FieldError>);
+
+impl fmt::Display for ValidationErrors {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        for (i, e) in self.0.iter().enumerate() {
+            if i > 0 {
+                writeln!(f)?;
+            }
+            write!(f, "{e}")?;
+        }
+        Ok(())
+    }
+}
+
+/// Collects field errors while checking values.
+#[derive(Default)]
+pub(crate) struct Checker {
+    pub(crate) errors: Vec<FieldError>,
+}
+
+impl Checker {
+    pub(crate) fn push(&mut self, path: impl Into<String>, message: impl Into<String>) {
+        self.errors.push(FieldError {
+            path: path.into(),
+            message: message.into(),
+        });
+    }
+
+    fn finite(&mut self, path: &str, v: f64) -> bool {
+        if !v.is_finite() {
+            self.push(path, format!("must be a finite number, got {v}"));
+        }
+        v.is_finite()
+    }
+
+    fn positive(&mut self, path: &str, v: f64) {
+        if self.finite(path, v) && v <= 0.0 {
+            self.push(path, format!("must be > 0, got {v}"));
+        }
+    }
+
+    fn point(&mut self, path: &str, p: Point) {
+        self.finite(&format!("{path}[0]"), p.x);
+        self.finite(&format!("{path}[1]"), p.y);
+    }
+
+    fn direction(&mut self, path: &str, v: Vec2) {
+        let ok = self.finite(&format!("{path}[0]"), v.x) & self.finite(&format!("{path}[1]"), v.y);
+        if ok && v.hypot2() == 0.0 {
+            self.push(path, format!("must be non-zero, got [{}, {}]", v.x, v.y));
+        }
+    }
+
+    pub(crate) fn side(&mut self, path: &str, v: u32) {
+        if !(1..=MAX_SIDE).contains(&v) {
+            self.push(path, format!("must be in 1..={MAX_SIDE}, got {v}"));
+        }
+    }
+
+    pub(crate) fn op_count(&mut self, n: usize) {
+        if n > MAX_OPS {
+            self.push("ops", format!("at most {MAX_OPS} ops are allowed, got {n}"));
+        }
+    }
+
+    /// Checks the values of op number `i`.
+    pub(crate) fn op(&mut self, i: usize, op: &Op) {
+        let f = |name: &str| format!("ops[{i}].{name}");
+        match op {
+            Op::Drop(d) => {
+                self.point(&f("center"), d.center);
+                self.positive(&f("radius"), d.radius);
+            }
+            Op::Spray(s) => {
+                self.point(&f("center"), s.center);
+                self.positive(&f("radius"), s.radius);
+            }
+            Op::Tine(t) => {
+                self.point(&f("origin"), t.origin);
+                self.direction(&f("direction"), t.direction);
+                self.finite(&f("alpha"), t.alpha);
+                self.positive(&f("lambda"), t.lambda);
+            }
+            Op::Rake(r) => {
+                self.point(&f("origin"), r.origin);
+                self.direction(&f("direction"), r.direction);
+                self.positive(&f("spacing"), r.spacing);
+                self.finite(&f("alpha"), r.alpha);
+                self.positive(&f("lambda"), r.lambda);
+            }
+            Op::Wavy(w) => {
+                self.finite(&f("angle"), w.angle);
+                self.finite(&f("amplitude"), w.amplitude);
+                self.positive(&f("wavelength"), w.wavelength);
+                self.finite(&f("phase"), w.phase);
+            }
+            Op::Circular(c) => {
+                self.point(&f("center"), c.center);
+                self.positive(&f("radius"), c.radius);
+                self.finite(&f("alpha"), c.alpha);
+                self.positive(&f("lambda"), c.lambda);
+            }
+            Op::Vortex(v) => {
+                self.point(&f("center"), v.center);
+                self.finite(&f("alpha"), v.alpha);
+                self.positive(&f("lambda"), v.lambda);
+            }
+        }
+    }
+
+    pub(crate) fn finish(self) -> Result<(), ValidationErrors> {
+        if self.errors.is_empty() {
+            Ok(())
+        } else {
+            Err(ValidationErrors(self.errors))
+        }
+    }
+}
+
+impl Design {
+    /// Checks every value rule of the schema and reports all broken ones with their paths.
+    /// Use it on designs built in code; [`crate::Design::from_json`] applies it already.
+    pub fn validate(&self) -> Result<(), ValidationErrors> {
+        let mut c = Checker::default();
+        c.side("width", self.width);
+        c.side("height", self.height);
+        c.op_count(self.ops.len());
+        for (i, op) in self.ops.iter().enumerate() {
+            c.op(i, op);
+        }
+        c.finish()
+    }
+}
