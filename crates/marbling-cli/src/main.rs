@@ -2,6 +2,7 @@
 
 mod bench;
 mod input;
+mod link;
 mod render;
 mod validate;
 
@@ -22,6 +23,8 @@ enum Command {
     Render(render::RenderArgs),
     /// Check a design and summarise its ops, or list every error with its JSON path.
     Validate(validate::ValidateArgs),
+    /// Make a share link (`…#d=…`) for a design, or decode one back to JSON.
+    Link(link::LinkArgs),
     /// Measure renderer throughput in op-samples per second on synthetic designs.
     Bench(bench::BenchArgs),
 }
@@ -32,6 +35,7 @@ fn main() -> ExitCode {
         Command::Render(args) => render::run(&args),
         Command::Validate(args) => validate::run(&args),
         Command::Bench(args) => bench::run(&args),
+        Command::Link(args) => link::run(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -252,3 +252,24 @@ fn bench_reports_throughput() {
         "{text}"
     );
 }
+
+#[test]
+fn link_round_trips_and_broken_links_fail() {
+    let o = marbling(&["link", "-"], Some(GOOD));
+    assert!(o.status.success(), "{}", stderr(&o));
+    let link = stdout(&o).trim().to_owned();
+    assert!(link.starts_with("http://127.0.0.1:8080/#d="), "{link}");
+    let o = marbling(&["link", "--decode", &link], None);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let back = marbling_core::Design::from_json(&stdout(&o)).expect("decoded JSON");
+    assert_eq!(back, marbling_core::Design::from_json(GOOD).expect("good"));
+    let broken = &link[..link.len() - 10];
+    assert_fails_with(
+        &marbling(&["link", "--decode", broken], None),
+        "share link: the compressed design is corrupted",
+    );
+    assert_fails_with(
+        &marbling(&["link", "--decode", "http://x/#z=1"], None),
+        "share link: no \"#d=\" design in it",
+    );
+}
