@@ -263,7 +263,7 @@ fn link_round_trips_and_broken_links_fail() {
     assert!(o.status.success(), "{}", stderr(&o));
     let back = marbling_core::Design::from_json(&stdout(&o)).expect("decoded JSON");
     assert_eq!(back, marbling_core::Design::from_json(GOOD).expect("good"));
-    let broken = &link[..link.len() - 10];
+    let broken = &link[..link.len() - 12];
     assert_fails_with(
         &marbling(&["link", "--decode", broken], None),
         "share link: the compressed design is corrupted",
