@@ -1,0 +1,89 @@
+// Shared by render.wgsl and preview.wgsl (the host prepends this file to each; see
+// src/shaders.rs): the inverse of one marbling op in f32, and the sRGB transfer function.
+//
+// Op encoding: two vec4<f32> per op, `a` and `b`, written by the host in
+// src/encode.rs (keep in sync with `encode_op` there). a.x is the kind:
+//   KIND_DROP, KIND_SPRAY: a = (kind, cx, cy, r²),          b = (ink linear r, g, b, packed sRGB)
+//   KIND_COMB (tine/rake): a = (kind, ax, ay, mx),          b = (my, αλ, λ, spacing; 0 = tine)
+//   KIND_WAVE:             a = (kind, mx, my, amplitude),   b = (2π/wavelength, phase, 0, 0)
+//   KIND_CIRCULAR, KIND_VORTEX: a = (kind, cx, cy, r),      b = (αλ, λ, 0, 0)
+// Packed sRGB is r·65536 + g·256 + b, exact in an f32 (24 bits).
+
+const KIND_DROP: u32 = 0u;
+const KIND_SPRAY: u32 = 1u;
+const KIND_COMB: u32 = 2u;
+const KIND_WAVE: u32 = 3u;
+const KIND_CIRCULAR: u32 = 4u;
+const KIND_VORTEX: u32 = 5u;
+
+// Walks design point `p` back through the op (a, b): returns (x, y, covered), where
+// covered = 1.0 when `p` lies in the op's ink (the walk stops there with colour `b`),
+// else (x, y) is where `p` was before the op. Same formulas as marbling-core's walk.rs.
+fn op_back(a: vec4<f32>, b: vec4<f32>, p: vec2<f32>) -> vec3<f32> {
+    let kind = u32(a.x);
+    switch kind {
+        case 0u, 1u: {
+            let d = p - a.yz;
+            let d2 = dot(d, d);
+            if d2 < a.w {
+                return vec3<f32>(p, 1.0);
+            }
+            if kind == KIND_DROP {
+                return vec3<f32>(a.yz + d * sqrt(1.0 - a.w / d2), 0.0);
+            }
+            return vec3<f32>(p, 0.0);
+        }
+        case 2u: {
+            let m = vec2<f32>(a.w, b.x);
+            let n = vec2<f32>(-m.y, m.x);
+            var d = abs(dot(p - a.yz, n));
+            if b.w > 0.0 {
+                let fr = fract(d / b.w);
+                d = b.w * (0.5 - abs(fr - 0.5));
+            }
+            return vec3<f32>(p - (b.y / (d + b.z)) * m, 0.0);
+        }
+        case 3u: {
+            let m = a.yz;
+            let n = vec2<f32>(m.y, -m.x);
+            let f = a.w * sin(b.x * dot(p, n) + b.y);
+            return vec3<f32>(p - f * m, 0.0);
+        }
+        default: {
+            let d = p - a.yz;
+            let rho = sqrt(dot(d, d));
+            if rho == 0.0 {
+                return vec3<f32>(p, 0.0);
+            }
+            var dist = rho;
+            if kind == KIND_CIRCULAR {
+                dist = abs(rho - a.w);
+            }
+            let theta = b.x / (dist + b.y) / rho;
+            let s = sin(-theta);
+            let c = cos(theta);
+            return vec3<f32>(a.yz + vec2<f32>(d.x * c - d.y * s, d.x * s + d.y * c), 0.0);
+        }
+    }
+}
+
+// The sRGB bytes packed as r·65536 + g·256 + b, as floats in 0..=1 (exact byte/255).
+fn unpack_srgb(packed: f32) -> vec3<f32> {
+    let v = u32(packed);
+    return vec3<f32>(f32((v >> 16u) & 255u), f32((v >> 8u) & 255u), f32(v & 255u)) / 255.0;
+}
+
+// Linear light (0..=1) → sRGB-encoded value in 0..=1 (IEC 61966-2-1), per channel.
+fn linear_to_srgb(l: vec3<f32>) -> vec3<f32> {
+    let c = clamp(l, vec3<f32>(0.0), vec3<f32>(1.0));
+    let lo = c * 12.92;
+    let hi = 1.055 * pow(c, vec3<f32>(1.0 / 2.4)) - 0.055;
+    return select(hi, lo, c <= vec3<f32>(0.0031308));
+}
+
+// A full-screen triangle: vertices 0, 1, 2 cover the whole target.
+fn fullscreen_position(vertex: u32) -> vec4<f32> {
+    let x = f32(i32(vertex & 1u) * 4 - 1);
+    let y = f32(i32(vertex >> 1u) * 4 - 1);
+    return vec4<f32>(x, y, 0.0, 1.0);
+}

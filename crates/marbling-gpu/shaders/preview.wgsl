@@ -1,0 +1,62 @@
+// Live preview while a tool is dragged: the committed design comes from a cache
+// texture (rendered exactly by render.wgsl at ≥ 2× the view resolution, stored as
+// Rgba8UnormSrgb so bilinear filtering happens in linear light); only the pending op
+// is walked here (common.wgsl is prepended). An approximation, used only while dragging.
+
+// Keep in sync with `PreviewParams` in src/params.rs (checked by tests/layout.rs).
+struct PreviewParams {
+    // The pending op, encoded as in common.wgsl.
+    pending_a: vec4<f32>,
+    pending_b: vec4<f32>,
+    // Design point (x, y) at the view target's top-left corner.
+    view_origin: vec2<f32>,
+    // Design pixels per view pixel.
+    view_inv_scale: f32,
+    // 1 when pending_a/pending_b hold an op, 0 to show the cache alone.
+    has_pending: u32,
+    // Design width and height, design pixels (the cache covers exactly this rectangle).
+    design_size: vec2<f32>,
+    // Samples per view pixel, at samples[0 .. sample_count].
+    sample_count: u32,
+    // 1: write sRGB-encoded values (…Unorm targets); 0: write linear light (…UnormSrgb).
+    encode_srgb: u32,
+    // (dx, dy, weight, 0): offsets from the pixel's top-left corner in view pixels.
+    samples: array<vec4<f32>, 4>,
+}
+
+@group(0) @binding(0) var<uniform> params: PreviewParams;
+@group(0) @binding(1) var cache: texture_2d<f32>;
+@group(0) @binding(2) var cache_sampler: sampler;
+
+@vertex
+fn vs_main(@builtin(vertex_index) vertex: u32) -> @builtin(position) vec4<f32> {
+    return fullscreen_position(vertex);
+}
+
+// Linear colour at design point `p0`: the pending op's ink, or the cache (bilinear,
+// clamped to the canvas edge) at the point the pending op moved here.
+fn shade(p0: vec2<f32>) -> vec3<f32> {
+    var p = p0;
+    if params.has_pending != 0u {
+        let r = op_back(params.pending_a, params.pending_b, p);
+        if r.z > 0.0 {
+            return params.pending_b.rgb;
+        }
+        p = r.xy;
+    }
+    return textureSampleLevel(cache, cache_sampler, p / params.design_size, 0.0).rgb;
+}
+
+@fragment
+fn fs_main(@builtin(position) position: vec4<f32>) -> @location(0) vec4<f32> {
+    let pixel = floor(position.xy);
+    var acc = vec3<f32>(0.0);
+    for (var i = 0u; i < params.sample_count; i++) {
+        let s = params.samples[i];
+        acc += s.z * shade(params.view_origin + (pixel + s.xy) * params.view_inv_scale);
+    }
+    if params.encode_srgb == 0u {
+        return vec4<f32>(acc, 1.0);
+    }
+    return vec4<f32>(linear_to_srgb(acc), 1.0);
+}

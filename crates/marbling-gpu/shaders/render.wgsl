@@ -1,0 +1,97 @@
+// The exact renderer: every sample of every output pixel walks back through ALL ops of
+// the design, newest → oldest, in one fragment-shader pass (common.wgsl is prepended).
+// Vertex + fragment only, uniforms + a float texture: runs on WebGPU and WebGL2 alike.
+
+// Keep in sync with `RenderParams` in src/params.rs (checked by tests/layout.rs).
+struct RenderParams {
+    // Background: linear r, g, b and the packed sRGB bytes.
+    background: vec4<f32>,
+    // Output pixel (column, row) of the render target's top-left pixel (tiles, views).
+    offset: vec2<f32>,
+    // Design pixels per output pixel (1 / scale).
+    inv_scale: f32,
+    // Number of ops in the op texture.
+    op_count: u32,
+    // Ops per row of the op texture (2 texels each).
+    ops_per_row: u32,
+    // Samples of the first pass, at samples[0 .. first_count].
+    first_count: u32,
+    // Samples of the refinement pass (0: none), at samples[first_count ..].
+    refine_count: u32,
+    // 1: write sRGB-encoded values (…Unorm targets); 0: write linear light (…UnormSrgb).
+    encode_srgb: u32,
+    // (dx, dy, weight, 0): offsets from the pixel's top-left corner in output pixels.
+    samples: array<vec4<f32>, 20>,
+}
+
+@group(0) @binding(0) var<uniform> params: RenderParams;
+// Rgba32Float, 2 texels per op, op k at (2·(k mod ops_per_row), k div ops_per_row).
+@group(0) @binding(1) var ops: texture_2d<f32>;
+
+@vertex
+fn vs_main(@builtin(vertex_index) vertex: u32) -> @builtin(position) vec4<f32> {
+    return fullscreen_position(vertex);
+}
+
+// Walks design point `p0` back through every op: the colour it shows as
+// (linear r, g, b, packed sRGB).
+fn trace(p0: vec2<f32>) -> vec4<f32> {
+    let n = params.op_count;
+    if n == 0u {
+        return params.background;
+    }
+    let last_col = i32(params.ops_per_row * 2u) - 2;
+    var row = i32((n - 1u) / params.ops_per_row);
+    var col = i32(((n - 1u) % params.ops_per_row) * 2u);
+    var p = p0;
+    for (var i = 0u; i < n; i++) {
+        let a = textureLoad(ops, vec2<i32>(col, row), 0);
+        let b = textureLoad(ops, vec2<i32>(col + 1, row), 0);
+        let r = op_back(a, b, p);
+        if r.z > 0.0 {
+            return b;
+        }
+        p = r.xy;
+        col -= 2;
+        if col < 0 {
+            col = last_col;
+            row -= 1;
+        }
+    }
+    return params.background;
+}
+
+// Weighted average in linear light of samples[start .. start + count] of output pixel
+// `pixel` (its top-left corner): (r, g, b, packed sRGB shared by every sample, or −1).
+fn average(pixel: vec2<f32>, start: u32, count: u32) -> vec4<f32> {
+    var acc = vec3<f32>(0.0);
+    var packed = -1.0;
+    for (var i = 0u; i < count; i++) {
+        let s = params.samples[start + i];
+        let c = trace((pixel + s.xy) * params.inv_scale);
+        acc += s.z * c.rgb;
+        if i == 0u {
+            packed = c.w;
+        } else if c.w != packed {
+            packed = -1.0;
+        }
+    }
+    return vec4<f32>(acc, packed);
+}
+
+@fragment
+fn fs_main(@builtin(position) position: vec4<f32>) -> @location(0) vec4<f32> {
+    let pixel = floor(position.xy) + params.offset;
+    var r = average(pixel, 0u, params.first_count);
+    if r.w < 0.0 && params.refine_count > 0u {
+        r = average(pixel, params.first_count, params.refine_count);
+    }
+    if params.encode_srgb == 0u {
+        return vec4<f32>(r.rgb, 1.0);
+    }
+    if r.w >= 0.0 {
+        // Every sample shows one colour: keep its exact sRGB bytes, as the CPU does.
+        return vec4<f32>(unpack_srgb(r.w), 1.0);
+    }
+    return vec4<f32>(linear_to_srgb(r.rgb), 1.0);
+}

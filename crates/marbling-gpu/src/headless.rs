@@ -1,0 +1,160 @@
+//! Headless exact renders to an [`RgbaImage`], tiled when the output is larger than one
+//! tile (at most the device's texture side), with progress per tile. Native only.
+
+use crate::exact::{ExactRenderer, PreparedDesign, View};
+use crate::target::{RenderTarget, copy_to_buffer, read_buffer};
+use crate::{GpuContext, GpuError};
+use marbling_core::{Design, RenderOptions, RgbaImage, output_size};
+
+/// Default tile side, pixels (smaller when the device's texture limit is smaller).
+/// Large enough that 1080p and 4K frames are one or a few draws, small enough that a
+/// print render shows progress and no single draw runs for too long.
+pub const DEFAULT_TILE_SIDE: u32 = 4096;
+
+/// The format of headless renders: the shader encodes sRGB itself, like the CPU.
+pub const OUTPUT_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8Unorm;
+
+/// Renders designs exactly on one device: the GPU twin of `marbling_core::render`.
+#[derive(Debug)]
+pub struct GpuRenderer {
+    ctx: GpuContext,
+    exact: ExactRenderer,
+    tile_side: u32,
+}
+
+impl GpuRenderer {
+    /// A renderer on `ctx` producing RGBA8 sRGB images.
+    pub fn new(ctx: GpuContext) -> Self {
+        let exact = ExactRenderer::new(&ctx.device, OUTPUT_FORMAT);
+        let tile_side = DEFAULT_TILE_SIDE.min(ctx.max_texture_side());
+        Self {
+            ctx,
+            exact,
+            tile_side,
+        }
+    }
+
+    /// Uses tiles of at most `side` × `side` pixels (clamped to 1..=the device limit).
+    pub fn with_tile_side(mut self, side: u32) -> Self {
+        self.tile_side = side.clamp(1, self.ctx.max_texture_side());
+        self
+    }
+
+    /// The tile side in use, pixels.
+    pub fn tile_side(&self) -> u32 {
+        self.tile_side
+    }
+
+    /// The device this renderer draws on.
+    pub fn context(&self) -> &GpuContext {
+        &self.ctx
+    }
+
+    /// The exact pipeline (for drawing into caller-owned targets of [`OUTPUT_FORMAT`]).
+    pub fn exact(&self) -> &ExactRenderer {
+        &self.exact
+    }
+
+    /// Uploads `design` for [`GpuRenderer::draw`].
+    pub fn prepare(&self, design: &Design) -> Result<PreparedDesign, GpuError> {
+        self.ctx
+            .checked(|| self.exact.prepare(&self.ctx.device, &self.ctx.queue, design))?
+    }
+
+    /// Draws `design` into `target` (format [`OUTPUT_FORMAT`]) with `view` and submits;
+    /// call [`GpuRenderer::wait`] to wait for the GPU.
+    pub fn draw(&self, design: &mut PreparedDesign, target: &RenderTarget, view: &View) {
+        design.set_view(&self.ctx.queue, view);
+        let mut encoder = self
+            .ctx
+            .device
+            .create_command_encoder(&wgpu::CommandEncoderDescriptor { label: None });
+        {
+            let mut pass = target.begin_pass(&mut encoder);
+            self.exact.draw(&mut pass, design);
+        }
+        self.ctx.queue.submit([encoder.finish()]);
+    }
+
+    /// Blocks until all submitted work has finished.
+    pub fn wait(&self) -> Result<(), GpuError> {
+        self.ctx
+            .device
+            .poll(wgpu::PollType::wait_indefinitely())
+            .map(|_| ())
+            .map_err(|e| GpuError::Wgpu(e.to_string()))
+    }
+
+    /// Renders `design` exactly (same output size, sample positions and colour handling
+    /// as `marbling_core::render`, in f32).
+    pub fn render(&self, design: &Design, opts: &RenderOptions) -> Result<RgbaImage, GpuError> {
+        self.render_with_progress(design, opts, &|_, _| {})
+    }
+
+    /// [`GpuRenderer::render`], calling `progress(done, total)` after each tile.
+    pub fn render_with_progress(
+        &self,
+        design: &Design,
+        opts: &RenderOptions,
+        progress: &dyn Fn(usize, usize),
+    ) -> Result<RgbaImage, GpuError> {
+        let (width, height) = output_size(design, opts.scale)?;
+        let mut prepared = self.prepare(design)?;
+        let mut image = RgbaImage::filled(width, height, [0, 0, 0, 255]);
+        let tiles = tile_grid(width, height, self.tile_side);
+        for (done, &(x0, y0, w, h)) in tiles.iter().enumerate() {
+            let view = View {
+                scale: opts.scale,
+                offset: [f64::from(x0), f64::from(y0)],
+                antialias: opts.antialias,
+            };
+            self.ctx.checked(|| -> Result<(), GpuError> {
+                let target = RenderTarget::new(&self.ctx.device, w, h, OUTPUT_FORMAT);
+                prepared.set_view(&self.ctx.queue, &view);
+                let mut encoder = self
+                    .ctx
+                    .device
+                    .create_command_encoder(&wgpu::CommandEncoderDescriptor { label: None });
+                {
+                    let mut pass = target.begin_pass(&mut encoder);
+                    self.exact.draw(&mut pass, &prepared);
+                }
+                let (buffer, padded) = copy_to_buffer(&self.ctx.device, &mut encoder, &target);
+                self.ctx.queue.submit([encoder.finish()]);
+                let row_bytes = width as usize * 4;
+                read_buffer(&self.ctx, &buffer, padded, w, h, |y, bytes| {
+                    let start = (y0 + y) as usize * row_bytes + x0 as usize * 4;
+                    image.pixels[start..start + bytes.len()].copy_from_slice(bytes);
+                })
+            })??;
+            progress(done + 1, tiles.len());
+        }
+        Ok(image)
+    }
+}
+
+/// Tiles (x0, y0, w, h) of at most `side` × `side` covering `width × height`, row-major.
+pub fn tile_grid(width: u32, height: u32, side: u32) -> Vec<(u32, u32, u32, u32)> {
+    let side = side.max(1);
+    let mut tiles = Vec::new();
+    for y0 in (0..height).step_by(side as usize) {
+        for x0 in (0..width).step_by(side as usize) {
+            tiles.push((x0, y0, side.min(width - x0), side.min(height - y0)));
+        }
+    }
+    tiles
+}
+
+#[cfg(test)]
+mod tests {
+    use super::tile_grid;
+
+    #[test]
+    fn tiles_cover_the_output_once() {
+        let tiles = tile_grid(10, 7, 4);
+        assert_eq!(tiles.len(), 6);
+        let area: u32 = tiles.iter().map(|t| t.2 * t.3).sum();
+        assert_eq!(area, 70);
+        assert_eq!(tiles[5], (8, 4, 2, 3));
+    }
+}

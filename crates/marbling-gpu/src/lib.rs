@@ -1,0 +1,58 @@
+//! The WGSL renderer of marbling designs through wgpu: every sample walks back through
+//! the whole op stack of a design in ONE fragment-shader pass, as the f64 CPU reference
+//! (`marbling_core::render`) does, in f32.
+//!
+//! # How the ops reach the shader
+//! The op list is an `Rgba32Float` texture read with `textureLoad` (no sampler, no
+//! filtering): two texels (8 f32) per op, `ops_per_row` ops per row, rows at most the
+//! device's texture side wide (2048 on WebGL2, so 1024 ops per row and the schema's
+//! 100,000 ops in 98 rows). Why a texture:
+//! - WebGL2 (wgpu's GL backend on the web) has no storage buffers and no compute, so a
+//!   storage buffer would not run there; a float texture and `texelFetch` run everywhere.
+//! - Uniform blocks are capped at 16 KiB on WebGL2 (≈ 500 ops): 100,000 ops would need
+//!   hundreds of chunked draws, each re-walking from the previous chunk's output and so
+//!   needing an intermediate position buffer; one texture keeps it one pass.
+//! - Everything the CPU walker precomputes (unit vectors, αλ, r², 2π/wavelength, linear
+//!   ink colours) is computed on the host in f64 and rounded once ([`encode`]).
+//!
+//! Only vertex and fragment shaders are used (a full-screen triangle), so the same WGSL
+//! runs on Vulkan/Metal/DX12, WebGPU and WebGL2.
+//!
+//! # Colours and sampling
+//! The same antialiasing patterns as the CPU ([`marbling_core::Antialias`]; positions
+//! and weights are passed in the uniform block), averaged in linear light; a pixel whose
+//! samples all show one colour keeps that colour's exact sRGB bytes. Into `…Unorm`
+//! targets the shader encodes sRGB itself (as the CPU does); into `…UnormSrgb` targets it
+//! writes linear light and lets the hardware encode.
+//!
+//! # Pieces
+//! - [`GpuContext`]: a device (headless on any adapter, including Mesa lavapipe, or
+//!   the app's own).
+//! - [`ExactRenderer`] + [`PreparedDesign`] + [`View`]: the exact pipeline for any
+//!   target format, for apps drawing into their own render passes.
+//! - [`GpuRenderer`] (native): exact renders to an [`marbling_core::RgbaImage`], tiled
+//!   beyond the device's texture limit, with progress.
+//! - [`PreviewRenderer`] + [`PreviewCache`]: live-editing frames (cached committed design
+//!   + one pending op), an approximation shown only while dragging.
+
+pub mod encode;
+mod context;
+mod error;
+mod exact;
+mod fullscreen;
+#[cfg(not(target_arch = "wasm32"))]
+mod headless;
+pub mod params;
+mod preview;
+pub mod shaders;
+mod target;
+
+pub use context::GpuContext;
+pub use error::GpuError;
+pub use exact::{ExactRenderer, PreparedDesign, View};
+#[cfg(not(target_arch = "wasm32"))]
+pub use headless::{DEFAULT_TILE_SIDE, GpuRenderer, OUTPUT_FORMAT, tile_grid};
+pub use preview::{CACHE_FACTOR, CACHE_FORMAT, PreviewCache, PreviewRenderer};
+pub use target::RenderTarget;
+#[cfg(not(target_arch = "wasm32"))]
+pub use target::{copy_to_buffer, read_buffer};

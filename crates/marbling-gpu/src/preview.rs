@@ -1,0 +1,239 @@
+//! Live editing: while the user drags a tool, frames show the committed design from a
+//! cache (rendered exactly once at ≥ 2× the view resolution) with only the pending op
+//! walked per pixel on top (shaders/preview.wgsl).
+//!
+//! This is an approximation (the committed design is resampled bilinearly, in linear
+//! light, and points the pending op pulls in from outside the canvas take the canvas
+//! edge's colour). It is meant only for frames while dragging: when the op is committed
+//! or the view changes, draw the exact render ([`crate::ExactRenderer`]) instead and
+//! rebuild the cache for the new committed design (or new zoom, see
+//! [`PreviewCache::covers`]).
+
+use crate::encode::encode_op;
+use crate::exact::{ExactRenderer, View};
+use crate::params::PreviewParams;
+use crate::shaders::PREVIEW_WGSL;
+use crate::target::RenderTarget;
+use crate::GpuError;
+use marbling_core::{Antialias, Design, Op, output_size};
+
+/// The cache's format: filtering and blending an sRGB texture happen in linear light.
+pub const CACHE_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8UnormSrgb;
+
+/// How much finer than the view the cache is rendered, when the device allows.
+pub const CACHE_FACTOR: f64 = 2.0;
+
+/// The preview pipeline for one target format, and the exact pipeline that fills caches.
+#[derive(Debug)]
+pub struct PreviewRenderer {
+    layout: wgpu::BindGroupLayout,
+    pipeline: wgpu::RenderPipeline,
+    sampler: wgpu::Sampler,
+    cache_renderer: ExactRenderer,
+    format: wgpu::TextureFormat,
+}
+
+/// A committed design cached in a texture, plus the pending op and view of the next frame.
+#[derive(Debug)]
+pub struct PreviewCache {
+    cache: RenderTarget,
+    uniform: wgpu::Buffer,
+    bind_group: wgpu::BindGroup,
+    design_size: [f64; 2],
+    cache_scale: f64,
+    encode_srgb: bool,
+}
+
+impl PreviewRenderer {
+    /// Builds the pipelines; previews are drawn into targets of `format`.
+    pub fn new(device: &wgpu::Device, format: wgpu::TextureFormat) -> Self {
+        let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+            label: Some("marbling preview.wgsl"),
+            source: wgpu::ShaderSource::Wgsl(PREVIEW_WGSL.into()),
+        });
+        let fragment = wgpu::ShaderStages::FRAGMENT;
+        let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("marbling preview"),
+            entries: &[
+                wgpu::BindGroupLayoutEntry {
+                    binding: 0,
+                    visibility: fragment,
+                    ty: wgpu::BindingType::Buffer {
+                        ty: wgpu::BufferBindingType::Uniform,
+                        has_dynamic_offset: false,
+                        min_binding_size: wgpu::BufferSize::new(
+                            std::mem::size_of::<PreviewParams>() as u64,
+                        ),
+                    },
+                    count: None,
+                },
+                wgpu::BindGroupLayoutEntry {
+                    binding: 1,
+                    visibility: fragment,
+                    ty: wgpu::BindingType::Texture {
+                        sample_type: wgpu::TextureSampleType::Float { filterable: true },
+                        view_dimension: wgpu::TextureViewDimension::D2,
+                        multisampled: false,
+                    },
+                    count: None,
+                },
+                wgpu::BindGroupLayoutEntry {
+                    binding: 2,
+                    visibility: fragment,
+                    ty: wgpu::BindingType::Sampler(wgpu::SamplerBindingType::Filtering),
+                    count: None,
+                },
+            ],
+        });
+        let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: Some("marbling preview"),
+            bind_group_layouts: &[Some(&layout)],
+            immediate_size: 0,
+        });
+        let pipeline = crate::fullscreen::pipeline(
+            device,
+            "marbling preview",
+            &pipeline_layout,
+            &module,
+            format,
+        );
+        let sampler = device.create_sampler(&wgpu::SamplerDescriptor {
+            label: Some("marbling preview cache"),
+            address_mode_u: wgpu::AddressMode::ClampToEdge,
+            address_mode_v: wgpu::AddressMode::ClampToEdge,
+            mag_filter: wgpu::FilterMode::Linear,
+            min_filter: wgpu::FilterMode::Linear,
+            ..Default::default()
+        });
+        Self {
+            layout,
+            pipeline,
+            sampler,
+            cache_renderer: ExactRenderer::new(device, CACHE_FORMAT),
+            format,
+        }
+    }
+
+    /// The target format previews are drawn into.
+    pub fn format(&self) -> wgpu::TextureFormat {
+        self.format
+    }
+
+    /// Renders `committed` exactly (with `antialias`) into a new cache covering its whole
+    /// canvas at [`CACHE_FACTOR`] × `view_scale` output pixels per design pixel, or less
+    /// when that would exceed the device's texture side (see [`PreviewCache::cache_scale`]).
+    /// The work is submitted; it need not have finished when this returns.
+    pub fn build_cache(
+        &self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        committed: &Design,
+        view_scale: f64,
+        antialias: Antialias,
+    ) -> Result<PreviewCache, GpuError> {
+        let max_side = f64::from(device.limits().max_texture_dimension_2d);
+        let longest = f64::from(committed.width.max(committed.height));
+        let cache_scale = (CACHE_FACTOR * view_scale).min(max_side / longest);
+        let (w, h) = output_size(committed, cache_scale)?;
+        let cache = RenderTarget::new(device, w, h, CACHE_FORMAT);
+        let mut prepared = self.cache_renderer.prepare(device, queue, committed)?;
+        prepared.set_view(
+            queue,
+            &View {
+                scale: cache_scale,
+                offset: [0.0; 2],
+                antialias,
+            },
+        );
+        let mut encoder =
+            device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: None });
+        {
+            let mut pass = cache.begin_pass(&mut encoder);
+            self.cache_renderer.draw(&mut pass, &prepared);
+        }
+        queue.submit([encoder.finish()]);
+        let uniform = device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("marbling preview params"),
+            size: std::mem::size_of::<PreviewParams>() as u64,
+            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        });
+        let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("marbling preview"),
+            layout: &self.layout,
+            entries: &[
+                wgpu::BindGroupEntry {
+                    binding: 0,
+                    resource: uniform.as_entire_binding(),
+                },
+                wgpu::BindGroupEntry {
+                    binding: 1,
+                    resource: wgpu::BindingResource::TextureView(&cache.view),
+                },
+                wgpu::BindGroupEntry {
+                    binding: 2,
+                    resource: wgpu::BindingResource::Sampler(&self.sampler),
+                },
+            ],
+        });
+        let mut out = PreviewCache {
+            cache,
+            uniform,
+            bind_group,
+            design_size: [f64::from(committed.width), f64::from(committed.height)],
+            cache_scale,
+            encode_srgb: !self.format.is_srgb(),
+        };
+        out.set_frame(queue, None, [0.0; 2], view_scale, antialias);
+        Ok(out)
+    }
+
+    /// Records a full-target preview draw of `cache` into `pass` (target of this
+    /// renderer's format).
+    pub fn draw(&self, pass: &mut wgpu::RenderPass<'_>, cache: &PreviewCache) {
+        pass.set_pipeline(&self.pipeline);
+        pass.set_bind_group(0, &cache.bind_group, &[]);
+        pass.draw(0..3, 0..1);
+    }
+}
+
+impl PreviewCache {
+    /// Sets what the next preview draws show: `pending` (the op being dragged, or
+    /// `None`) over the cache, the view's top-left corner at design point `view_origin`,
+    /// `view_scale` view pixels per design pixel, sampled with `antialias` (patterns of
+    /// more than 4 samples fall back to RGSS).
+    pub fn set_frame(
+        &mut self,
+        queue: &wgpu::Queue,
+        pending: Option<&Op>,
+        view_origin: [f64; 2],
+        view_scale: f64,
+        antialias: Antialias,
+    ) {
+        let params = PreviewParams::new(
+            self.design_size,
+            pending.map(encode_op),
+            view_origin,
+            view_scale,
+            antialias,
+            self.encode_srgb,
+        );
+        queue.write_buffer(&self.uniform, 0, bytemuck::bytes_of(&params));
+    }
+
+    /// Output pixels per design pixel of the cache.
+    pub fn cache_scale(&self) -> f64 {
+        self.cache_scale
+    }
+
+    /// The cache texture's size, pixels.
+    pub fn cache_size(&self) -> (u32, u32) {
+        (self.cache.width, self.cache.height)
+    }
+
+    /// True while the cache is at least [`CACHE_FACTOR`] times finer than a view of
+    /// `view_scale` (zooming in further calls for a new cache).
+    pub fn covers(&self, view_scale: f64) -> bool {
+        self.cache_scale >= CACHE_FACTOR * view_scale
+    }
+}

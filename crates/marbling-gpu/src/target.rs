@@ -1,0 +1,142 @@
+//! Offscreen render targets and reading their pixels back (native only: readback
+//! blocks on the device).
+
+use crate::{GpuContext, GpuError};
+
+/// Bytes per row of a texture-to-buffer copy must be a multiple of this.
+const ROW_ALIGN: u32 = wgpu::COPY_BYTES_PER_ROW_ALIGNMENT;
+
+/// A texture to draw into, with its view.
+#[derive(Debug)]
+pub struct RenderTarget {
+    /// The texture (usages: render attachment, copy source, texture binding).
+    pub texture: wgpu::Texture,
+    /// Its default view.
+    pub view: wgpu::TextureView,
+    /// Width, pixels.
+    pub width: u32,
+    /// Height, pixels.
+    pub height: u32,
+}
+
+impl RenderTarget {
+    /// A `width × height` target of `format`.
+    pub fn new(device: &wgpu::Device, width: u32, height: u32, format: wgpu::TextureFormat) -> Self {
+        let texture = device.create_texture(&wgpu::TextureDescriptor {
+            label: Some("marbling target"),
+            size: wgpu::Extent3d {
+                width,
+                height,
+                depth_or_array_layers: 1,
+            },
+            mip_level_count: 1,
+            sample_count: 1,
+            dimension: wgpu::TextureDimension::D2,
+            format,
+            usage: wgpu::TextureUsages::RENDER_ATTACHMENT
+                | wgpu::TextureUsages::COPY_SRC
+                | wgpu::TextureUsages::TEXTURE_BINDING,
+            view_formats: &[],
+        });
+        let view = texture.create_view(&wgpu::TextureViewDescriptor::default());
+        Self {
+            texture,
+            view,
+            width,
+            height,
+        }
+    }
+
+    /// Begins a render pass that overwrites the whole target.
+    pub fn begin_pass<'e>(&self, encoder: &'e mut wgpu::CommandEncoder) -> wgpu::RenderPass<'e> {
+        encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+            label: Some("marbling pass"),
+            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+                view: &self.view,
+                depth_slice: None,
+                resolve_target: None,
+                ops: wgpu::Operations {
+                    load: wgpu::LoadOp::Clear(wgpu::Color::BLACK),
+                    store: wgpu::StoreOp::Store,
+                },
+            })],
+            depth_stencil_attachment: None,
+            timestamp_writes: None,
+            occlusion_query_set: None,
+            multiview_mask: None,
+        })
+    }
+}
+
+/// Copies an RGBA8 `target` into a padded buffer: the returned buffer and its padded
+/// bytes per row. Record into `encoder`, submit, then [`read_buffer`].
+pub fn copy_to_buffer(
+    device: &wgpu::Device,
+    encoder: &mut wgpu::CommandEncoder,
+    target: &RenderTarget,
+) -> (wgpu::Buffer, u32) {
+    let padded = (target.width * 4).div_ceil(ROW_ALIGN) * ROW_ALIGN;
+    let buffer = device.create_buffer(&wgpu::BufferDescriptor {
+        label: Some("marbling readback"),
+        size: u64::from(padded) * u64::from(target.height),
+        usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
+        mapped_at_creation: false,
+    });
+    encoder.copy_texture_to_buffer(
+        wgpu::TexelCopyTextureInfo {
+            texture: &target.texture,
+            mip_level: 0,
+            origin: wgpu::Origin3d::ZERO,
+            aspect: wgpu::TextureAspect::All,
+        },
+        wgpu::TexelCopyBufferInfo {
+            buffer: &buffer,
+            layout: wgpu::TexelCopyBufferLayout {
+                offset: 0,
+                bytes_per_row: Some(padded),
+                rows_per_image: Some(target.height),
+            },
+        },
+        wgpu::Extent3d {
+            width: target.width,
+            height: target.height,
+            depth_or_array_layers: 1,
+        },
+    );
+    (buffer, padded)
+}
+
+/// Maps a submitted readback buffer and hands each unpadded row (`width × 4` bytes,
+/// top to bottom) to `row(y, bytes)`.
+pub fn read_buffer(
+    ctx: &GpuContext,
+    buffer: &wgpu::Buffer,
+    padded: u32,
+    width: u32,
+    height: u32,
+    mut row: impl FnMut(u32, &[u8]),
+) -> Result<(), GpuError> {
+    let (tx, rx) = std::sync::mpsc::channel();
+    buffer.map_async(wgpu::MapMode::Read, .., move |r| {
+        // The receiver lives until this function returns; a failed send only means
+        // nobody waits any more.
+        let _ = tx.send(r);
+    });
+    ctx.device
+        .poll(wgpu::PollType::wait_indefinitely())
+        .map_err(|e| GpuError::Readback(e.to_string()))?;
+    rx.recv()
+        .map_err(|e| GpuError::Readback(e.to_string()))?
+        .map_err(|e| GpuError::Readback(e.to_string()))?;
+    {
+        let data = buffer
+            .get_mapped_range(..)
+            .map_err(|e| GpuError::Readback(e.to_string()))?;
+        for y in 0..height {
+            let start = (y * padded) as usize;
+            row(y, &data[start..start + (width * 4) as usize]);
+        }
+    }
+    buffer.unmap();
+    Ok(())
+}

@@ -1,0 +1,73 @@
+//! The host mirrors of the WGSL uniform structs have the same member offsets and size
+//! as naga computes for the shaders (keep src/params.rs and shaders/*.wgsl in sync).
+
+use marbling_gpu::params::{PreviewParams, RenderParams};
+use marbling_gpu::shaders::{PREVIEW_WGSL, RENDER_WGSL};
+use std::mem::{offset_of, size_of};
+
+/// (member name, offset) of WGSL struct `name`, and its size.
+fn wgsl_layout(source: &str, name: &str) -> (Vec<(String, u32)>, u32) {
+    let module = naga::front::wgsl::parse_str(source).expect("parses");
+    let ty = module
+        .types
+        .iter()
+        .find(|(_, t)| t.name.as_deref() == Some(name))
+        .unwrap_or_else(|| panic!("no struct {name}"))
+        .1;
+    let naga::TypeInner::Struct { members, span } = &ty.inner else {
+        panic!("{name} is not a struct");
+    };
+    let members = members
+        .iter()
+        .map(|m| (m.name.clone().unwrap_or_default(), m.offset))
+        .collect();
+    (members, *span)
+}
+
+fn check(source: &str, name: &str, host: &[(&str, usize)], host_size: usize) {
+    let (members, size) = wgsl_layout(source, name);
+    let host: Vec<(String, u32)> = host.iter().map(|&(n, o)| (n.to_owned(), o as u32)).collect();
+    assert_eq!(members, host, "{name}: member offsets differ between WGSL and Rust");
+    assert_eq!(size as usize, host_size, "{name}: sizes differ");
+    assert_eq!(host_size % 16, 0, "{name}: uniform size must be a multiple of 16");
+}
+
+#[test]
+fn render_params_match_wgsl() {
+    check(
+        RENDER_WGSL,
+        "RenderParams",
+        &[
+            ("background", offset_of!(RenderParams, background)),
+            ("offset", offset_of!(RenderParams, offset)),
+            ("inv_scale", offset_of!(RenderParams, inv_scale)),
+            ("op_count", offset_of!(RenderParams, op_count)),
+            ("ops_per_row", offset_of!(RenderParams, ops_per_row)),
+            ("first_count", offset_of!(RenderParams, first_count)),
+            ("refine_count", offset_of!(RenderParams, refine_count)),
+            ("encode_srgb", offset_of!(RenderParams, encode_srgb)),
+            ("samples", offset_of!(RenderParams, samples)),
+        ],
+        size_of::<RenderParams>(),
+    );
+}
+
+#[test]
+fn preview_params_match_wgsl() {
+    check(
+        PREVIEW_WGSL,
+        "PreviewParams",
+        &[
+            ("pending_a", offset_of!(PreviewParams, pending_a)),
+            ("pending_b", offset_of!(PreviewParams, pending_b)),
+            ("view_origin", offset_of!(PreviewParams, view_origin)),
+            ("view_inv_scale", offset_of!(PreviewParams, view_inv_scale)),
+            ("has_pending", offset_of!(PreviewParams, has_pending)),
+            ("design_size", offset_of!(PreviewParams, design_size)),
+            ("sample_count", offset_of!(PreviewParams, sample_count)),
+            ("encode_srgb", offset_of!(PreviewParams, encode_srgb)),
+            ("samples", offset_of!(PreviewParams, samples)),
+        ],
+        size_of::<PreviewParams>(),
+    );
+}
