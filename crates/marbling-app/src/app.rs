@@ -60,6 +60,10 @@ pub struct MarblingApp {
     pub(crate) autosave_pending: bool,
     pub(crate) hooks: Vec<(&'static str, Option<String>)>,
     pub(crate) new_size: [u32; 2],
+    /// The sheet's top-left corner on the page (physical pixels) and the scale.
+    pub(crate) sheet_on_page: Option<[f64; 3]>,
+    /// Recent frame intervals, seconds (for `data-frame-ms`).
+    pub(crate) frame_times: std::collections::VecDeque<f64>,
 }
 
 /// Default canvas of a new design, design pixels.
@@ -121,6 +125,8 @@ impl MarblingApp {
             autosave_pending: false,
             hooks: Vec::new(),
             new_size: NEW_SIZE,
+            sheet_on_page: None,
+            frame_times: std::collections::VecDeque::new(),
         }
     }
 
@@ -249,6 +255,15 @@ impl MarblingApp {
         } else if u {
             self.undo();
         }
+        // Number keys 1–7 pick the tools in panel order (when no text field has focus).
+        if !ctx.wants_keyboard_input() {
+            let keys = [Key::Num1, Key::Num2, Key::Num3, Key::Num4, Key::Num5, Key::Num6, Key::Num7];
+            for (key, tool) in keys.into_iter().zip(ToolKind::ALL) {
+                if ctx.input(|i| i.key_pressed(key) && i.modifiers.is_none()) {
+                    self.tool = tool;
+                }
+            }
+        }
     }
 
     fn poll_picked_file(&mut self) {
@@ -299,11 +314,16 @@ impl MarblingApp {
             .as_ref()
             .filter(|m| m.error)
             .map(|m| m.text.clone());
+        let view = self.sheet_on_page.map(|[x, y, s]| format!("{x:.3},{y:.3},{s:.9}"));
+        let frame_ms = (!self.frame_times.is_empty())
+            .then(|| format!("{:.2}", 1000.0 * self.frame_times.iter().sum::<f64>() / self.frame_times.len() as f64));
         let wanted: Vec<(&'static str, Option<String>)> = vec![
             ("data-ready", ready.then(|| "1".to_owned())),
             ("data-backend", Some(self.backend.clone())),
             ("data-ops", Some(self.shown.ops.len().to_string())),
             ("data-error", error),
+            ("data-view", view),
+            ("data-frame-ms", frame_ms),
         ];
         for (name, value) in &wanted {
             if !self.hooks.contains(&(*name, value.clone())) {
@@ -317,6 +337,12 @@ impl MarblingApp {
 impl eframe::App for MarblingApp {
     fn ui(&mut self, ui: &mut egui::Ui, frame: &mut eframe::Frame) {
         let ctx = ui.ctx().clone();
+        // Mean interval of the last 60 frames, for the `data-frame-ms` hook.
+        let dt = f64::from(ctx.input(|i| i.unstable_dt));
+        if self.frame_times.len() == 60 {
+            self.frame_times.pop_front();
+        }
+        self.frame_times.push_back(dt);
         self.poll_picked_file();
         self.check_fragment();
         self.handle_shortcuts(&ctx);

@@ -56,6 +56,13 @@ impl MarblingApp {
             egui::StrokeKind::Outside,
         );
         let design_pointer = pointer.map(|p| view.to_design(local(p)));
+        // For automation: the sheet's top-left in CSS/physical pixels of the page, and
+        // physical pixels per design pixel.
+        self.sheet_on_page = Some([
+            f64::from(rect.min.x) * ppp + tl[0] * ppp,
+            f64::from(rect.min.y) * ppp + tl[1] * ppp,
+            view.zoom * ppp,
+        ]);
         overlay::draw(&painter, rect, &view, self, design_pointer);
     }
 

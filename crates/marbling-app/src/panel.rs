@@ -84,8 +84,8 @@ impl MarblingApp {
     fn tool_section(&mut self, ui: &mut egui::Ui) {
         ui.label(RichText::new("Tool").strong());
         ui.horizontal_wrapped(|ui| {
-            for t in ToolKind::ALL {
-                ui.selectable_value(&mut self.tool, t, t.label());
+            for (i, t) in ToolKind::ALL.into_iter().enumerate() {
+                ui.selectable_value(&mut self.tool, t, t.label()).on_hover_text(format!("key {}", i + 1));
             }
         });
         let s = &mut self.settings;

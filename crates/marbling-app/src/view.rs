@@ -41,6 +41,15 @@ impl ViewState {
         Self { zoom, origin }
     }
 
+    /// Moves the origin by less than one physical pixel so that design pixel corners
+    /// fall on physical pixel corners (`ppp` physical pixels per point): the canvas then
+    /// samples exactly the points a CPU render at `zoom × ppp` samples.
+    pub fn snapped(mut self, ppp: f64) -> Self {
+        let scale = self.zoom * ppp;
+        self.origin = Point::new((self.origin.x * scale).round() / scale, (self.origin.y * scale).round() / scale);
+        self
+    }
+
     /// The design point under canvas-relative screen position `p` (points).
     pub fn to_design(&self, p: [f64; 2]) -> Point {
         Point::new(
