@@ -111,7 +111,9 @@ impl GpuContext {
 
 /// Waits for an error-scope future. wgpu-core resolves these immediately; on the web
 /// (WebGPU) the browser resolves them later, where we do not block and report nothing.
-fn block_on_ready<F: std::future::Future<Output = Option<wgpu::Error>>>(f: F) -> Option<wgpu::Error> {
+fn block_on_ready<F: std::future::Future<Output = Option<wgpu::Error>>>(
+    f: F,
+) -> Option<wgpu::Error> {
     #[cfg(not(target_arch = "wasm32"))]
     {
         pollster::block_on(f)

@@ -38,11 +38,22 @@ pub fn color_texel(c: Rgb8) -> [f32; 4] {
     [r, g, b, pack_srgb(c)]
 }
 
-fn comb(origin: marbling_core::Point, dir: Vec2, alpha: f64, lambda: f64, spacing: f64) -> EncodedOp {
+fn comb(
+    origin: marbling_core::Point,
+    dir: Vec2,
+    alpha: f64,
+    lambda: f64,
+    spacing: f64,
+) -> EncodedOp {
     let m = dir.normalize();
     [
         [KIND_COMB, origin.x as f32, origin.y as f32, m.x as f32],
-        [m.y as f32, (alpha * lambda) as f32, lambda as f32, spacing as f32],
+        [
+            m.y as f32,
+            (alpha * lambda) as f32,
+            lambda as f32,
+            spacing as f32,
+        ],
     ]
 }
 
@@ -50,11 +61,21 @@ fn comb(origin: marbling_core::Point, dir: Vec2, alpha: f64, lambda: f64, spacin
 pub fn encode_op(op: &Op) -> EncodedOp {
     match *op {
         Op::Drop(d) => [
-            [KIND_DROP, d.center.x as f32, d.center.y as f32, (d.radius * d.radius) as f32],
+            [
+                KIND_DROP,
+                d.center.x as f32,
+                d.center.y as f32,
+                (d.radius * d.radius) as f32,
+            ],
             color_texel(d.color),
         ],
         Op::Spray(s) => [
-            [KIND_SPRAY, s.center.x as f32, s.center.y as f32, (s.radius * s.radius) as f32],
+            [
+                KIND_SPRAY,
+                s.center.x as f32,
+                s.center.y as f32,
+                (s.radius * s.radius) as f32,
+            ],
             color_texel(s.color),
         ],
         Op::Tine(t) => comb(t.origin, t.direction, t.alpha, t.lambda, 0.0),
@@ -63,11 +84,21 @@ pub fn encode_op(op: &Op) -> EncodedOp {
             let (s, c) = w.angle.sin_cos();
             [
                 [KIND_WAVE, c as f32, s as f32, w.amplitude as f32],
-                [(TAU / w.wavelength) as f32, w.phase.rem_euclid(TAU) as f32, 0.0, 0.0],
+                [
+                    (TAU / w.wavelength) as f32,
+                    w.phase.rem_euclid(TAU) as f32,
+                    0.0,
+                    0.0,
+                ],
             ]
         }
         Op::Circular(c) => [
-            [KIND_CIRCULAR, c.center.x as f32, c.center.y as f32, c.radius as f32],
+            [
+                KIND_CIRCULAR,
+                c.center.x as f32,
+                c.center.y as f32,
+                c.radius as f32,
+            ],
             [(c.alpha * c.lambda) as f32, c.lambda as f32, 0.0, 0.0],
         ],
         Op::Vortex(v) => [

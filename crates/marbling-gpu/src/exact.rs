@@ -2,10 +2,10 @@
 //! Pipelines are created once per device and target format; designs are uploaded into
 //! their own op texture and uniform buffer, so an app can keep several.
 
+use crate::GpuError;
 use crate::encode::layout_ops;
 use crate::params::RenderParams;
 use crate::shaders::RENDER_WGSL;
-use crate::GpuError;
 use marbling_core::{Antialias, Design};
 
 /// The exact render pipeline for one target format.

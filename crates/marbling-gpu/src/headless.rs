@@ -57,8 +57,10 @@ impl GpuRenderer {
 
     /// Uploads `design` for [`GpuRenderer::draw`].
     pub fn prepare(&self, design: &Design) -> Result<PreparedDesign, GpuError> {
-        self.ctx
-            .checked(|| self.exact.prepare(&self.ctx.device, &self.ctx.queue, design))?
+        self.ctx.checked(|| {
+            self.exact
+                .prepare(&self.ctx.device, &self.ctx.queue, design)
+        })?
     }
 
     /// Draws `design` into `target` (format [`OUTPUT_FORMAT`]) with `view` and submits;

@@ -35,8 +35,8 @@
 //! - [`PreviewRenderer`] + [`PreviewCache`]: live-editing frames (cached committed design
 //!   + one pending op), an approximation shown only while dragging.
 
-pub mod encode;
 mod context;
+pub mod encode;
 mod error;
 mod exact;
 mod fullscreen;

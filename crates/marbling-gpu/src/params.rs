@@ -2,8 +2,8 @@
 //! WGSL structs (uniform address-space layout; checked against naga by tests/layout.rs).
 
 use crate::encode::{EncodedOp, color_texel};
-use marbling_core::{Antialias, Rgb8};
 use marbling_core::sampling::Sample;
+use marbling_core::{Antialias, Rgb8};
 
 /// Most samples the render shader takes per pixel (first pass + refinement:
 /// adaptive = 4 RGSS + 16 grid).
@@ -141,7 +141,15 @@ mod tests {
 
     #[test]
     fn adaptive_fills_first_and_refinement_samples() {
-        let p = RenderParams::new(Rgb8::new(1, 2, 3), 0, 1, Antialias::Adaptive, 2.0, [0.0; 2], true);
+        let p = RenderParams::new(
+            Rgb8::new(1, 2, 3),
+            0,
+            1,
+            Antialias::Adaptive,
+            2.0,
+            [0.0; 2],
+            true,
+        );
         assert_eq!((p.first_count, p.refine_count), (4, 16));
         assert_eq!(p.samples[0], [0.375, 0.125, 0.25, 0.0]);
         assert_eq!(p.samples[4], [0.125, 0.125, 0.0625, 0.0]);

@@ -9,12 +9,12 @@
 //! rebuild the cache for the new committed design (or new zoom, see
 //! [`PreviewCache::covers`]).
 
+use crate::GpuError;
 use crate::encode::encode_op;
 use crate::exact::{ExactRenderer, View};
 use crate::params::PreviewParams;
 use crate::shaders::PREVIEW_WGSL;
 use crate::target::RenderTarget;
-use crate::GpuError;
 use marbling_core::{Antialias, Design, Op, output_size};
 
 /// The cache's format: filtering and blending an sRGB texture happen in linear light.

@@ -21,7 +21,12 @@ pub struct RenderTarget {
 
 impl RenderTarget {
     /// A `width × height` target of `format`.
-    pub fn new(device: &wgpu::Device, width: u32, height: u32, format: wgpu::TextureFormat) -> Self {
+    pub fn new(
+        device: &wgpu::Device,
+        width: u32,
+        height: u32,
+        format: wgpu::TextureFormat,
+    ) -> Self {
         let texture = device.create_texture(&wgpu::TextureDescriptor {
             label: Some("marbling target"),
             size: wgpu::Extent3d {

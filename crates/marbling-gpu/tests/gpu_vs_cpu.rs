@@ -138,7 +138,11 @@ fn check(gpu: &GpuRenderer, cases: &[(String, Design, RenderOptions)], budget: f
             d.max_channel_diff
         );
         if d.fraction() > budget {
-            worst.push(format!("{name} ({}): {:.3} %", opts.antialias, 100.0 * d.fraction()));
+            worst.push(format!(
+                "{name} ({}): {:.3} %",
+                opts.antialias,
+                100.0 * d.fraction()
+            ));
         }
     }
     assert!(
@@ -163,19 +167,25 @@ fn cases(aa: Antialias) -> Vec<(String, Design, RenderOptions)> {
 
 #[test]
 fn twenty_designs_without_antialiasing() {
-    let Some(gpu) = common::renderer() else { return };
+    let Some(gpu) = common::renderer() else {
+        return;
+    };
     check(&gpu, &cases(Antialias::None), 0.005);
 }
 
 #[test]
 fn twenty_designs_with_rgss() {
-    let Some(gpu) = common::renderer() else { return };
+    let Some(gpu) = common::renderer() else {
+        return;
+    };
     check(&gpu, &cases(Antialias::Rgss), 0.01);
 }
 
 #[test]
 fn other_modes_and_scales() {
-    let Some(gpu) = common::renderer() else { return };
+    let Some(gpu) = common::renderer() else {
+        return;
+    };
     let mut all = Vec::new();
     let some = designs().into_iter().skip(2).step_by(4).take(3);
     for (i, (name, design)) in some.enumerate() {
@@ -197,14 +207,19 @@ fn other_modes_and_scales() {
 
 #[test]
 fn comparator_fails_on_a_perturbed_image() {
-    let Some(gpu) = common::renderer() else { return };
+    let Some(gpu) = common::renderer() else {
+        return;
+    };
     let (_, design) = designs().swap_remove(5);
     let opts = RenderOptions {
         scale: 1.0,
         antialias: Antialias::None,
     };
     let (d, image) = diff(&gpu, &design, &opts);
-    assert!(d.fraction() <= 0.005, "the unperturbed render must pass: {d:?}");
+    assert!(
+        d.fraction() <= 0.005,
+        "the unperturbed render must pass: {d:?}"
+    );
     // Shift 2 % of the pixels (a 24 × 16 block) by 20/255 in red: must fail the budget.
     let cpu = render(&design, &opts).expect("CPU render");
     let mut perturbed = image.clone();
@@ -218,16 +233,24 @@ fn comparator_fails_on_a_perturbed_image() {
     let bad = compare(&cpu, &perturbed, THRESHOLD).expect("same size");
     println!("perturbed: {bad:?}");
     assert!(bad.differing >= 24 * 16 - d.differing, "{bad:?}");
-    assert!(bad.fraction() > 0.005, "the perturbed image passed: {bad:?}");
+    assert!(
+        bad.fraction() > 0.005,
+        "the perturbed image passed: {bad:?}"
+    );
     // A change of exactly the threshold is not counted.
     let mut slight = cpu.clone();
     slight.pixels[0] = slight.pixels[0].wrapping_add(THRESHOLD);
-    assert_eq!(compare(&cpu, &slight, THRESHOLD).expect("size").differing, 0);
+    assert_eq!(
+        compare(&cpu, &slight, THRESHOLD).expect("size").differing,
+        0
+    );
 }
 
 #[test]
 fn full_strength_designs_within_their_f32_conditioning() {
-    let Some(gpu) = common::renderer() else { return };
+    let Some(gpu) = common::renderer() else {
+        return;
+    };
     let opts = RenderOptions {
         scale: 1.0,
         antialias: Antialias::None,
@@ -248,5 +271,8 @@ fn full_strength_designs_within_their_f32_conditioning() {
             over.push(name);
         }
     }
-    assert!(over.is_empty(), "GPU error well beyond f32 rounding: {over:?}");
+    assert!(
+        over.is_empty(),
+        "GPU error well beyond f32 rounding: {over:?}"
+    );
 }

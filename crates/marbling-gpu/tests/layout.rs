@@ -26,10 +26,20 @@ fn wgsl_layout(source: &str, name: &str) -> (Vec<(String, u32)>, u32) {
 
 fn check(source: &str, name: &str, host: &[(&str, usize)], host_size: usize) {
     let (members, size) = wgsl_layout(source, name);
-    let host: Vec<(String, u32)> = host.iter().map(|&(n, o)| (n.to_owned(), o as u32)).collect();
-    assert_eq!(members, host, "{name}: member offsets differ between WGSL and Rust");
+    let host: Vec<(String, u32)> = host
+        .iter()
+        .map(|&(n, o)| (n.to_owned(), o as u32))
+        .collect();
+    assert_eq!(
+        members, host,
+        "{name}: member offsets differ between WGSL and Rust"
+    );
     assert_eq!(size as usize, host_size, "{name}: sizes differ");
-    assert_eq!(host_size % 16, 0, "{name}: uniform size must be a multiple of 16");
+    assert_eq!(
+        host_size % 16,
+        0,
+        "{name}: uniform size must be a multiple of 16"
+    );
 }
 
 #[test]

@@ -10,7 +10,12 @@ fn validate(name: &str, source: &str) -> naga::Module {
         naga::valid::Capabilities::empty(),
     )
     .validate(&module)
-    .unwrap_or_else(|e| panic!("{name}.wgsl does not validate:\n{}", e.emit_to_string(source)));
+    .unwrap_or_else(|e| {
+        panic!(
+            "{name}.wgsl does not validate:\n{}",
+            e.emit_to_string(source)
+        )
+    });
     module
 }
 
@@ -18,7 +23,11 @@ fn validate(name: &str, source: &str) -> naga::Module {
 fn every_shader_parses_and_validates() {
     for (name, source) in ALL {
         let module = validate(name, source);
-        let entries: Vec<&str> = module.entry_points.iter().map(|e| e.name.as_str()).collect();
+        let entries: Vec<&str> = module
+            .entry_points
+            .iter()
+            .map(|e| e.name.as_str())
+            .collect();
         assert_eq!(entries, ["vs_main", "fs_main"], "{name}");
     }
 }

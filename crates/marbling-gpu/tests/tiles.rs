@@ -8,7 +8,9 @@ use std::cell::RefCell;
 
 #[test]
 fn tiled_render_equals_untiled() {
-    let Some(gpu) = common::renderer() else { return };
+    let Some(gpu) = common::renderer() else {
+        return;
+    };
     let design = random_design(42, 230, 170, 400, Mix::Mixed);
     let opts = RenderOptions {
         scale: 1.1,
@@ -21,6 +23,9 @@ fn tiled_render_equals_untiled() {
     let parts = tiled
         .render_with_progress(&design, &opts, &|d, t| calls.borrow_mut().push((d, t)))
         .expect("tiled");
-    assert_eq!(calls.into_inner(), (1..=12).map(|d| (d, 12)).collect::<Vec<_>>());
+    assert_eq!(
+        calls.into_inner(),
+        (1..=12).map(|d| (d, 12)).collect::<Vec<_>>()
+    );
     assert!(whole == parts, "tiles differ from the whole render");
 }

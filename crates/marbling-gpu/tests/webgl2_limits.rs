@@ -21,8 +21,11 @@ fn render_max_ops(gpu: &GpuRenderer) {
         start.elapsed().as_secs_f64()
     );
     assert_eq!((image.width, image.height), (64, 64));
-    let distinct: std::collections::HashSet<[u8; 4]> =
-        image.pixels.chunks_exact(4).map(|p| [p[0], p[1], p[2], p[3]]).collect();
+    let distinct: std::collections::HashSet<[u8; 4]> = image
+        .pixels
+        .chunks_exact(4)
+        .map(|p| [p[0], p[1], p[2], p[3]])
+        .collect();
     assert!(distinct.len() > 5, "a 100,000-op design should not be flat");
     assert!(image.pixels.chunks_exact(4).all(|p| p[3] == 255));
 }
