@@ -35,7 +35,7 @@ unit: setup-rust setup-gpu
 	WGPU_BACKEND=vulkan $(CARGO) test --workspace
 
 wasm-check: setup-rust
-	$(CARGO) clippy --target wasm32-unknown-unknown -p marbling-core -- -D warnings
+	$(CARGO) clippy --target wasm32-unknown-unknown -p marbling-core -p marbling-gpu -- -D warnings
 
 test: fmt-check clippy wasm-check unit
 

@@ -1,8 +1,11 @@
 //! `marbling`: validate, render and benchmark marbling design documents.
 
+mod backend;
 mod bench;
+mod bench_gpu;
 mod input;
 mod render;
+mod size;
 mod validate;
 
 use clap::{Parser, Subcommand};
