@@ -8,7 +8,7 @@ CARGO ?= cargo
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 MARBLING := target/release/marbling
 
-.PHONY: run test gallery setup-rust setup-gpu setup-web setup-browser fmt-check clippy unit wasm-check bench web browser-test
+.PHONY: run test gallery setup-rust setup-gpu setup-web setup-browser fmt-check clippy unit wasm-check bench bench-gpu web browser-test
 
 TRUNK_VERSION := 0.21.14
 # Must equal the wasm-bindgen version in Cargo.lock (see crates/marbling-app/Cargo.toml).
@@ -79,3 +79,11 @@ gallery: $(MARBLING)
 ## Throughput of the CPU reference renderer (see docs/BENCHMARKS.md).
 bench: $(MARBLING)
 	$(MARBLING) bench --ops 10,100,1000,10000 --aa none
+
+## GPU renderer: exact frames and live-editing frames (see docs/BENCHMARKS.md).
+## The same commands run on lavapipe and on a real GPU.
+bench-gpu: $(MARBLING) setup-gpu
+	for s in 1024 1920x1080; do for aa in none rgss; do \
+	  $(MARBLING) bench --backend gpu --mix mixed --ops 1000,10000 --size $$s --aa $$aa || exit 1; \
+	done; done
+	$(MARBLING) bench --backend gpu --pending --mix mixed --ops 1000,10000 --size 1920x1080 --aa rgss --frames 200

@@ -1,8 +1,10 @@
 //! `marbling bench`: renderer throughput in op-samples per second
 //! (output pixels × samples per pixel × ops ÷ seconds) on synthetic designs.
 
+use crate::backend::Backend;
+use crate::size::Size;
 use anyhow::{Result, bail};
-use clap::Args;
+use clap::{Args, ValueEnum};
 use marbling_core::synth::{Mix, random_design};
 use marbling_core::{Antialias, RenderOptions, render};
 use std::time::Instant;
@@ -10,28 +12,74 @@ use std::time::Instant;
 /// Arguments of `marbling bench`.
 #[derive(Args)]
 pub struct BenchArgs {
-    /// Side of the square output, pixels.
-    #[arg(long, default_value_t = 1024)]
-    size: u32,
+    /// Output size: `N` (square) or `WxH`, e.g. 1920x1080.
+    #[arg(long, default_value = "1024")]
+    pub size: Size,
     /// Op counts to measure, comma separated.
     #[arg(long, value_delimiter = ',', default_value = "10,100,1000,10000")]
-    ops: Vec<usize>,
+    pub ops: Vec<usize>,
     /// Antialiasing mode.
     #[arg(long, default_value = "none")]
-    aa: Antialias,
+    pub aa: Antialias,
     /// Renders per case; the fastest is reported.
     #[arg(long, default_value_t = 1)]
-    repeat: u32,
+    pub repeat: u32,
+    /// Renderer to measure.
+    #[arg(long, value_enum, default_value_t = Backend::Cpu)]
+    pub backend: Backend,
+    /// Synthetic design mixes, comma separated.
+    #[arg(
+        long,
+        value_enum,
+        value_delimiter = ',',
+        default_value = "comb-heavy,drop-heavy"
+    )]
+    pub mix: Vec<MixArg>,
+    /// GPU only: measure live-editing frames (cached history + one pending op) and the
+    /// exact frame they stand in for; `--ops` is the committed history length.
+    #[arg(long)]
+    pub pending: bool,
+    /// With `--pending`: preview frames to average.
+    #[arg(long, default_value_t = 200)]
+    pub frames: u32,
+}
+
+/// A synthetic design mix.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum MixArg {
+    /// A few drops, then mostly tines, rakes and wavy combs.
+    CombHeavy,
+    /// Mostly drops and sprays.
+    DropHeavy,
+    /// All seven op types in equal parts.
+    Mixed,
+}
+
+impl MixArg {
+    /// The generator's mix and its name.
+    pub fn mix(self) -> (&'static str, Mix) {
+        match self {
+            MixArg::CombHeavy => ("comb-heavy", Mix::CombHeavy),
+            MixArg::DropHeavy => ("drop-heavy", Mix::DropHeavy),
+            MixArg::Mixed => ("mixed", Mix::Mixed),
+        }
+    }
 }
 
 /// Runs every case and prints a table.
 pub fn run(args: &BenchArgs) -> Result<()> {
-    if args.size == 0 || args.repeat == 0 {
-        bail!("--size and --repeat must be at least 1");
+    if args.repeat == 0 || args.frames == 0 {
+        bail!("--repeat and --frames must be at least 1");
+    }
+    match (args.backend, args.pending) {
+        (Backend::Gpu, true) => return crate::bench_gpu::pending(args),
+        (Backend::Gpu, false) => return crate::bench_gpu::exact(args),
+        (Backend::Cpu, true) => bail!("--pending measures GPU preview frames: add --backend gpu"),
+        (Backend::Cpu, false) => {}
     }
     let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
     println!(
-        "backend cpu, {threads} threads, {0}×{0} px, aa {1} ({2} samples/px)",
+        "backend cpu, {threads} threads, {} px, aa {} ({} samples/px)",
         args.size,
         args.aa,
         args.aa.samples().len()
@@ -40,12 +88,11 @@ pub fn run(args: &BenchArgs) -> Result<()> {
         "{:<12} {:>7} {:>10} {:>18}",
         "design", "ops", "seconds", "op-samples/s"
     );
-    for (name, mix) in [
-        ("comb-heavy", Mix::CombHeavy),
-        ("drop-heavy", Mix::DropHeavy),
-    ] {
+    let Size { width, height } = args.size;
+    for &m in &args.mix {
+        let (name, mix) = m.mix();
         for &n in &args.ops {
-            let design = random_design(7, args.size, args.size, n, mix);
+            let design = random_design(7, width, height, n, mix);
             let opts = RenderOptions {
                 scale: 1.0,
                 antialias: args.aa,
@@ -56,7 +103,8 @@ pub fn run(args: &BenchArgs) -> Result<()> {
                 render(&design, &opts)?;
                 best = best.min(start.elapsed().as_secs_f64());
             }
-            let work = f64::from(args.size).powi(2) * args.aa.samples().len() as f64 * n as f64;
+            let work =
+                f64::from(width) * f64::from(height) * args.aa.samples().len() as f64 * n as f64;
             println!("{name:<12} {n:>7} {best:>10.3} {:>18.3e}", work / best);
         }
     }

@@ -1,9 +1,12 @@
 //! `marbling`: validate, render and benchmark marbling design documents.
 
+mod backend;
 mod bench;
+mod bench_gpu;
 mod input;
 mod link;
 mod render;
+mod size;
 mod validate;
 
 use clap::{Parser, Subcommand};

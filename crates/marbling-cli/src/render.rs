@@ -1,10 +1,11 @@
 //! `marbling render`: an exact PNG of a design at any scale.
 
+use crate::backend::{Backend, render_image};
 use crate::input::read_design;
 use anyhow::{Context, Result, bail};
 use clap::Args;
 use indicatif::{ProgressBar, ProgressStyle};
-use marbling_core::{Antialias, RenderOptions, output_size, render_with_progress};
+use marbling_core::{Antialias, RenderOptions, output_size};
 use std::io::Write;
 use std::sync::Mutex;
 use std::time::{Duration, Instant};
@@ -26,6 +27,9 @@ pub struct RenderArgs {
     /// Antialiasing: none, rgss, grid4, quincunx, rooks8, adaptive.
     #[arg(long, default_value = "rgss")]
     aa: Antialias,
+    /// Renderer: the exact f64 CPU reference, or the WGSL renderer on the GPU (f32).
+    #[arg(long, value_enum, default_value_t = Backend::Cpu)]
+    backend: Backend,
 }
 
 /// A progress bar on stderr that appears only once a render has taken about a second.
@@ -94,7 +98,7 @@ pub fn run(args: &RenderArgs) -> Result<()> {
     };
     let start = Instant::now();
     let progress = LazyProgress::new();
-    let image = render_with_progress(&design, &opts, &|d, t| progress.update(d, t))?;
+    let image = render_image(args.backend, &design, &opts, &progress)?;
     progress.finish();
     let elapsed = start.elapsed();
     let png = image.to_png()?;
@@ -102,10 +106,11 @@ pub fn run(args: &RenderArgs) -> Result<()> {
         .and_then(|()| out.flush())
         .with_context(|| format!("cannot write '{}'", args.output))?;
     let summary = format!(
-        "{}: {w}×{h} px, {} ops, aa {}, rendered in {:.3} s",
+        "{}: {w}×{h} px, {} ops, aa {}, backend {}, rendered in {:.3} s",
         args.output,
         design.ops.len(),
         args.aa,
+        args.backend.name(),
         elapsed.as_secs_f64()
     );
     if args.output == "-" {

@@ -53,6 +53,8 @@ pub use exact::{ExactRenderer, PreparedDesign, View};
 #[cfg(not(target_arch = "wasm32"))]
 pub use headless::{DEFAULT_TILE_SIDE, GpuRenderer, OUTPUT_FORMAT, tile_grid};
 pub use preview::{CACHE_FACTOR, CACHE_FORMAT, PreviewCache, PreviewRenderer};
-pub use target::RenderTarget;
 #[cfg(not(target_arch = "wasm32"))]
-pub use target::{copy_to_buffer, read_buffer};
+pub use target::read_buffer;
+pub use target::{RenderTarget, copy_to_buffer};
+/// The wgpu this crate is built on (so callers use the same version).
+pub use wgpu;

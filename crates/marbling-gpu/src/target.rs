@@ -1,6 +1,7 @@
-//! Offscreen render targets and reading their pixels back (native only: readback
-//! blocks on the device).
+//! Offscreen render targets and reading their pixels back (the blocking read is
+//! native only).
 
+#[cfg(not(target_arch = "wasm32"))]
 use crate::{GpuContext, GpuError};
 
 /// Bytes per row of a texture-to-buffer copy must be a multiple of this.
@@ -111,8 +112,9 @@ pub fn copy_to_buffer(
     (buffer, padded)
 }
 
-/// Maps a submitted readback buffer and hands each unpadded row (`width × 4` bytes,
+/// Maps a submitted readback buffer (native only: it blocks on the device) and hands each unpadded row (`width × 4` bytes,
 /// top to bottom) to `row(y, bytes)`.
+#[cfg(not(target_arch = "wasm32"))]
 pub fn read_buffer(
     ctx: &GpuContext,
     buffer: &wgpu::Buffer,

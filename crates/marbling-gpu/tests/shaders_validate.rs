@@ -46,3 +46,48 @@ fn a_broken_shader_is_caught() {
     });
     assert_ne!(valid, Some(true), "a type error went unnoticed");
 }
+
+/// Each entry point translates to GLSL ES 3.00 for WebGL2 (what wgpu's GL backend does
+/// in the browser), so nothing in the WGSL needs a feature WebGL2 lacks.
+#[test]
+fn every_entry_point_translates_to_webgl2_glsl() {
+    use naga::back::glsl;
+    for (name, source) in ALL {
+        let module = naga::front::wgsl::parse_str(source).expect("parses");
+        let info = naga::valid::Validator::new(
+            naga::valid::ValidationFlags::all(),
+            naga::valid::Capabilities::empty(),
+        )
+        .validate(&module)
+        .expect("validates");
+        let options = glsl::Options {
+            version: glsl::Version::Embedded {
+                version: 300,
+                is_webgl: true,
+            },
+            ..Default::default()
+        };
+        for (stage, entry) in [
+            (naga::ShaderStage::Vertex, "vs_main"),
+            (naga::ShaderStage::Fragment, "fs_main"),
+        ] {
+            let pipeline = glsl::PipelineOptions {
+                shader_stage: stage,
+                entry_point: entry.to_owned(),
+                multiview: None,
+            };
+            let mut out = String::new();
+            glsl::Writer::new(
+                &mut out,
+                &module,
+                &info,
+                &options,
+                &pipeline,
+                naga::proc::BoundsCheckPolicies::default(),
+            )
+            .and_then(|mut w| w.write())
+            .unwrap_or_else(|e| panic!("{name}.wgsl {entry} → GLSL ES 300: {e}"));
+            assert!(out.starts_with("#version 300 es"), "{name} {entry}");
+        }
+    }
+}

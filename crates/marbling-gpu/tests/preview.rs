@@ -1,0 +1,100 @@
+//! Live-preview frames (cached committed design + one pending op) stay close to the
+//! exact render of the design with the op committed: they are an approximation, with
+//! a looser budget than the exact renderer's.
+
+mod common;
+
+use marbling_core::compare::compare;
+use marbling_core::synth::{Mix, random_design};
+use marbling_core::{
+    Antialias, Drop, Op, Point, RenderOptions, Rgb8, RgbaImage, Tine, Vec2, render,
+};
+use marbling_gpu::{
+    GpuRenderer, OUTPUT_FORMAT, PreviewRenderer, RenderTarget, copy_to_buffer, read_buffer,
+};
+
+fn preview_image(
+    gpu: &GpuRenderer,
+    committed: &marbling_core::Design,
+    pending: Option<&Op>,
+) -> RgbaImage {
+    let ctx = gpu.context();
+    let (device, queue) = (&ctx.device, &ctx.queue);
+    let preview = PreviewRenderer::new(device, OUTPUT_FORMAT);
+    let mut cache = preview
+        .build_cache(device, queue, committed, 1.0, Antialias::Rgss)
+        .expect("cache");
+    assert!(cache.covers(1.0));
+    assert_eq!(
+        cache.cache_size(),
+        (committed.width * 2, committed.height * 2)
+    );
+    cache.set_frame(queue, pending, [0.0, 0.0], 1.0, Antialias::Rgss);
+    let target = RenderTarget::new(device, committed.width, committed.height, OUTPUT_FORMAT);
+    let mut encoder =
+        device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: None });
+    {
+        let mut pass = target.begin_pass(&mut encoder);
+        preview.draw(&mut pass, &cache);
+    }
+    let (buffer, padded) = copy_to_buffer(device, &mut encoder, &target);
+    queue.submit([encoder.finish()]);
+    let mut image = RgbaImage::filled(target.width, target.height, [0, 0, 0, 255]);
+    let row = target.width as usize * 4;
+    read_buffer(
+        ctx,
+        &buffer,
+        padded,
+        target.width,
+        target.height,
+        |y, bytes| {
+            image.pixels[y as usize * row..(y as usize + 1) * row].copy_from_slice(bytes);
+        },
+    )
+    .expect("readback");
+    image
+}
+
+#[test]
+fn preview_frames_approximate_the_exact_render() {
+    let Some(gpu) = common::renderer() else {
+        return;
+    };
+    let committed = random_design(77, 160, 120, 300, Mix::DropHeavy);
+    let opts = RenderOptions {
+        scale: 1.0,
+        antialias: Antialias::Rgss,
+    };
+    let tine = Op::Tine(Tine {
+        origin: Point::new(0.0, 60.0),
+        direction: Vec2::new(1.0, 0.2),
+        alpha: 25.0,
+        lambda: 10.0,
+    });
+    let drop = Op::Drop(Drop {
+        center: Point::new(70.0, 50.0),
+        radius: 18.0,
+        color: Rgb8::new(0xe6, 0x39, 0x46),
+    });
+    for pending in [None, Some(tine), Some(drop)] {
+        let mut exact_design = committed.clone();
+        exact_design.ops.extend(pending);
+        let exact = render(&exact_design, &opts).expect("CPU render");
+        let frame = preview_image(&gpu, &committed, pending.as_ref());
+        // Resampling the cache softens ink edges (many small differences) but must not
+        // move ink (few large ones).
+        let soft = compare(&exact, &frame, 24).expect("size");
+        let gross = compare(&exact, &frame, 96).expect("size");
+        println!(
+            "pending {:<5}: {:.3} % of pixels differ by > 24/255, {:.3} % by > 96/255",
+            pending.map_or("none", |o| o.type_name()),
+            100.0 * soft.fraction(),
+            100.0 * gross.fraction(),
+        );
+        assert!(
+            soft.fraction() < 0.12,
+            "preview too far from the exact render: {soft:?}"
+        );
+        assert!(gross.fraction() < 0.01, "preview moved ink: {gross:?}");
+    }
+}
