@@ -256,8 +256,16 @@ impl MarblingApp {
             self.undo();
         }
         // Number keys 1–7 pick the tools in panel order (when no text field has focus).
-        if !ctx.wants_keyboard_input() {
-            let keys = [Key::Num1, Key::Num2, Key::Num3, Key::Num4, Key::Num5, Key::Num6, Key::Num7];
+        if !ctx.egui_wants_keyboard_input() {
+            let keys = [
+                Key::Num1,
+                Key::Num2,
+                Key::Num3,
+                Key::Num4,
+                Key::Num5,
+                Key::Num6,
+                Key::Num7,
+            ];
             for (key, tool) in keys.into_iter().zip(ToolKind::ALL) {
                 if ctx.input(|i| i.key_pressed(key) && i.modifiers.is_none()) {
                     self.tool = tool;
@@ -314,9 +322,15 @@ impl MarblingApp {
             .as_ref()
             .filter(|m| m.error)
             .map(|m| m.text.clone());
-        let view = self.sheet_on_page.map(|[x, y, s]| format!("{x:.3},{y:.3},{s:.9}"));
-        let frame_ms = (!self.frame_times.is_empty())
-            .then(|| format!("{:.2}", 1000.0 * self.frame_times.iter().sum::<f64>() / self.frame_times.len() as f64));
+        let view = self
+            .sheet_on_page
+            .map(|[x, y, s]| format!("{x:.3},{y:.3},{s:.9}"));
+        let frame_ms = (!self.frame_times.is_empty()).then(|| {
+            format!(
+                "{:.2}",
+                1000.0 * self.frame_times.iter().sum::<f64>() / self.frame_times.len() as f64
+            )
+        });
         let wanted: Vec<(&'static str, Option<String>)> = vec![
             ("data-ready", ready.then(|| "1".to_owned())),
             ("data-backend", Some(self.backend.clone())),
@@ -355,10 +369,10 @@ impl eframe::App for MarblingApp {
             });
         egui::Panel::bottom("marbling_status").show(ui, |ui| self.status_bar(ui));
         egui::CentralPanel::default().show(ui, |ui| self.canvas(ui, frame));
-        if let Some(e) = self.status.lock().ok().and_then(|s| s.error.clone()) {
-            if self.message.as_ref().is_none_or(|m| m.text != e) {
-                self.error(e);
-            }
+        if let Some(e) = self.status.lock().ok().and_then(|s| s.error.clone())
+            && self.message.as_ref().is_none_or(|m| m.text != e)
+        {
+            self.error(e);
         }
         self.autosave(frame);
         self.update_hooks();

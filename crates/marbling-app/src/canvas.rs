@@ -18,9 +18,10 @@ impl MarblingApp {
         let painter = ui.painter_at(rect);
         painter.rect_filled(rect, 0.0, Color32::from_gray(48));
         let size = [f64::from(rect.width()), f64::from(rect.height())];
+        let ppp = f64::from(ui.ctx().pixels_per_point());
         let view = *self
             .view
-            .get_or_insert_with(|| ViewState::fit(&self.shown, size));
+            .get_or_insert_with(|| ViewState::fit(&self.shown, size).snapped(ppp));
         let pointer = response.hover_pos();
         let local = |p: Pos2| [f64::from(p.x - rect.min.x), f64::from(p.y - rect.min.y)];
 
@@ -117,23 +118,24 @@ impl MarblingApp {
             self.active = None;
             return;
         }
-        if pressed && response.hovered() {
-            if let Some(p) = pos {
-                self.playback = None;
-                self.active = Some(ActiveGesture {
-                    tool: self.tool,
-                    gesture: Gesture::new(to_design(p)),
-                    seed: self.next_seed,
-                });
-                self.next_seed += 1;
-            }
+        if pressed
+            && response.hovered()
+            && let Some(p) = pos
+        {
+            self.playback = None;
+            self.active = Some(ActiveGesture {
+                tool: self.tool,
+                gesture: Gesture::new(to_design(p)),
+                seed: self.next_seed,
+            });
+            self.next_seed += 1;
         }
         if let Some(active) = &mut self.active {
             if down {
-                if let Some(p) = pos.map(to_design) {
-                    if active.gesture.end() != p {
-                        active.gesture.path.push(p);
-                    }
+                if let Some(p) = pos.map(to_design)
+                    && active.gesture.end() != p
+                {
+                    active.gesture.path.push(p);
                 }
                 active.gesture.held_seconds += dt;
                 ui.ctx().request_repaint();

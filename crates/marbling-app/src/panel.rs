@@ -85,7 +85,8 @@ impl MarblingApp {
         ui.label(RichText::new("Tool").strong());
         ui.horizontal_wrapped(|ui| {
             for (i, t) in ToolKind::ALL.into_iter().enumerate() {
-                ui.selectable_value(&mut self.tool, t, t.label()).on_hover_text(format!("key {}", i + 1));
+                ui.selectable_value(&mut self.tool, t, t.label())
+                    .on_hover_text(format!("key {}", i + 1));
             }
         });
         let s = &mut self.settings;

@@ -46,7 +46,10 @@ impl ViewState {
     /// samples exactly the points a CPU render at `zoom × ppp` samples.
     pub fn snapped(mut self, ppp: f64) -> Self {
         let scale = self.zoom * ppp;
-        self.origin = Point::new((self.origin.x * scale).round() / scale, (self.origin.y * scale).round() / scale);
+        self.origin = Point::new(
+            (self.origin.x * scale).round() / scale,
+            (self.origin.y * scale).round() / scale,
+        );
         self
     }
 
