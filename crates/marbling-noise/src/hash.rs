@@ -48,12 +48,12 @@ pub fn cell_hash(ix: i32, iy: i32, seed: u32) -> u32 {
     pcg_hash(pcg_hash(pcg_hash(seed) ^ ix as u32).wrapping_add(iy as u32))
 }
 
-/// A u32 mapped to a float in the open interval (0, 1): the top 24 bits plus one half,
-/// times 2⁻²⁴, exact in f32 on every platform.
+/// A u32 mapped to a float in the open interval (0, 1): the top 23 bits plus one half,
+/// times 2⁻²³, exact in f32 on every platform.
 #[inline(always)]
 #[must_use]
 pub fn unit_f32(h: u32) -> f32 {
-    ((h >> 8) as f32 + 0.5) * (1.0 / 16_777_216.0)
+    ((h >> 9) as f32 + 0.5) * (1.0 / 8_388_608.0)
 }
 
 /// The deterministic random stream of one grid cell: each draw re-hashes the state.
