@@ -61,8 +61,7 @@ impl Curl {
             CurlComponent::X => vx * self.inv_component_std,
             CurlComponent::Y => vy * self.inv_component_std,
             CurlComponent::Magnitude => {
-                ((vx * vx + vy * vy).sqrt() * self.inv_component_std - RAYLEIGH_MEAN)
-                    / RAYLEIGH_STD
+                ((vx * vx + vy * vy).sqrt() * self.inv_component_std - RAYLEIGH_MEAN) / RAYLEIGH_STD
             }
         }
     }

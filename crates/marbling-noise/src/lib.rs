@@ -25,13 +25,15 @@ mod render;
 mod spec;
 mod transfer;
 mod value;
+pub mod wgsl;
 mod white;
 mod worley;
-pub mod wgsl;
 
 pub use curl::{Curl, CurlComponent};
 pub use fbm::{Basis, Fbm, FbmParams, MAX_OCTAVES, OCTAVE_SEED_STEP};
-pub use fibers::{FiberLayout, FiberParams, Fibers, IMPURITY_SEED, Impurities, MAX_FIBERS_PER_CELL};
+pub use fibers::{
+    FiberLayout, FiberParams, Fibers, IMPURITY_SEED, Impurities, MAX_FIBERS_PER_CELL,
+};
 pub use field::Field;
 pub use gabor::{Drive, GABOR_TRUNCATION, Gabor, GaborKind, GaborParams};
 pub use hash::CellRng;
@@ -48,8 +50,7 @@ pub use spec::{
     Source, SpecError, Transfer,
 };
 pub use transfer::{
-    SplineDecay, SplineDecayTable, Threshold, hsv_to_rgb, hsv_value_blend, rgb_to_hsv,
-    smoothstep,
+    SplineDecay, SplineDecayTable, Threshold, hsv_to_rgb, hsv_value_blend, rgb_to_hsv, smoothstep,
 };
 pub use value::{VALUE_VARIANCE, value2, value2_periodic};
 pub use white::{WHITE_HALF_RANGE, white2};

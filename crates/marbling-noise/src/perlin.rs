@@ -199,7 +199,10 @@ mod tests {
         let count = f64::from(n * n);
         let var = s2 / count - (s / count).powi(2);
         let dvar = d2 / count;
-        assert!((var / f64::from(PERLIN_VARIANCE) - 1.0).abs() < 0.03, "{var}");
+        assert!(
+            (var / f64::from(PERLIN_VARIANCE) - 1.0).abs() < 0.03,
+            "{var}"
+        );
         assert!(
             (dvar / f64::from(PERLIN_DERIVATIVE_VARIANCE) - 1.0).abs() < 0.03,
             "{dvar}"

@@ -21,7 +21,9 @@ pub fn parse_hex(s: &str) -> Option<Rgb> {
 }
 
 /// Names of the built-in palettes, in [`ColorRamp::named`].
-pub const PALETTES: &[&str] = &["grey", "ink", "sepia", "ocean", "ember", "marble", "viridis"];
+pub const PALETTES: &[&str] = &[
+    "grey", "ink", "sepia", "ocean", "ember", "marble", "viridis",
+];
 
 /// A colour ramp: stops at t = 0, 1/(n−1), …, 1 in sRGB, interpolated linearly.
 #[derive(Clone, PartialEq)]

@@ -247,10 +247,7 @@ impl Renderer {
                     }
                 }
             }
-            Node::Product(nodes) => nodes
-                .iter()
-                .map(|n| self.node_intensity(n, x, y))
-                .product(),
+            Node::Product(nodes) => nodes.iter().map(|n| self.node_intensity(n, x, y)).product(),
         }
     }
 

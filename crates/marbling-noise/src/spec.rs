@@ -265,7 +265,14 @@ fn fields_of(kind: &str) -> Option<&'static [&'static str]> {
             "component",
         ],
         "paper" => &["length", "width", "density", "seed", "impurities"],
-        "canvas" => &["length", "width", "density", "seed", "impurities", "weights"],
+        "canvas" => &[
+            "length",
+            "width",
+            "density",
+            "seed",
+            "impurities",
+            "weights",
+        ],
         "product" => &["inputs"],
         _ => return None,
     })
@@ -507,8 +514,7 @@ impl Reader {
             self.push(join(path, "octaves"), "must be a whole number");
         }
         let lacunarity = self.number(path, obj, "lacunarity", Some(2.0), Rule::Within(1.0, 8.0));
-        let persistence =
-            self.number(path, obj, "persistence", Some(0.5), Rule::Within(0.0, 1.0));
+        let persistence = self.number(path, obj, "persistence", Some(0.5), Rule::Within(0.0, 1.0));
         let seed = self.seed(path, obj);
         Some(FbmParams {
             basis,
@@ -554,8 +560,7 @@ impl Reader {
                 let frequency = self.number(path, obj, "frequency", None, Rule::Above(0.0, 0.5));
                 let orientation = self.number(path, obj, "orientation", Some(0.0), Rule::Any);
                 // Radius √(−ln 0.05/π)/a ≤ 512 px.
-                let bandwidth =
-                    self.number(path, obj, "bandwidth", None, Rule::Within(0.002, 1.0));
+                let bandwidth = self.number(path, obj, "bandwidth", None, Rule::Within(0.002, 1.0));
                 let impulses = self.number(
                     path,
                     obj,
@@ -654,7 +659,10 @@ impl Reader {
                             .enumerate()
                             .map(|(i, it)| self.spec(&format!("{p}[{i}]"), it, Role::ProductInput))
                             .collect();
-                        parsed.into_iter().collect::<Option<Vec<_>>>().map(Source::Product)
+                        parsed
+                            .into_iter()
+                            .collect::<Option<Vec<_>>>()
+                            .map(Source::Product)
                     }
                     Some(v) => {
                         self.push(
@@ -858,9 +866,7 @@ impl Reader {
                     None
                 }
             },
-            (None, Some(p)) => self
-                .palette(&join(path, "palette"), p)
-                .map(BlendBase::Ramp),
+            (None, Some(p)) => self.palette(&join(path, "palette"), p).map(BlendBase::Ramp),
             _ => {
                 self.push(path, "needs exactly one of color, palette");
                 None

@@ -212,7 +212,12 @@ mod tests {
 
     #[test]
     fn hsv_round_trip_and_blend() {
-        for c in [[0.2, 0.4, 0.9], [0.9, 0.1, 0.1], [0.5, 0.5, 0.5], [0.1, 0.8, 0.3]] {
+        for c in [
+            [0.2, 0.4, 0.9],
+            [0.9, 0.1, 0.1],
+            [0.5, 0.5, 0.5],
+            [0.1, 0.8, 0.3],
+        ] {
             let back = hsv_to_rgb(rgb_to_hsv(c));
             for k in 0..3 {
                 assert!((back[k] - c[k]).abs() < 1e-5, "{c:?} {back:?}");

@@ -60,6 +60,9 @@ mod tests {
         }
         let c = f64::from(n * n);
         let var = s2 / c - (s / c).powi(2);
-        assert!((var / f64::from(VALUE_VARIANCE) - 1.0).abs() < 0.03, "{var}");
+        assert!(
+            (var / f64::from(VALUE_VARIANCE) - 1.0).abs() < 0.03,
+            "{var}"
+        );
     }
 }
