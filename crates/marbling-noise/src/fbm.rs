@@ -84,7 +84,7 @@ impl Fbm {
         for (i, o) in octaves.iter_mut().take(count).enumerate() {
             let (frequency, period) = match params.period {
                 Some(p) if p > 0 => {
-                    let cells = (f * p as f32).round().max(1.0);
+                    let cells = (f * p as f32 + 0.5).floor().max(1.0);
                     (cells / p as f32, cells as i32)
                 }
                 _ => (f, 0),

@@ -68,11 +68,11 @@ pub struct FiberParams {
 
 /// A grid of generation cells for one Poisson process.
 #[derive(Clone, Copy, Debug)]
-struct Grid {
-    cell: f32,
-    reach_cells: i32,
-    period_cells: i32,
-    exp_neg_mean: f32,
+pub(crate) struct Grid {
+    pub(crate) cell: f32,
+    pub(crate) reach_cells: i32,
+    pub(crate) period_cells: i32,
+    pub(crate) exp_neg_mean: f32,
 }
 
 impl Grid {
@@ -97,11 +97,11 @@ impl Grid {
 #[derive(Clone, Debug)]
 pub struct Fibers {
     params: FiberParams,
-    fibers: Grid,
-    specks: Option<Grid>,
-    horizontal_probability: f32,
-    mean: f32,
-    inv_std: f32,
+    pub(crate) fibers: Grid,
+    pub(crate) specks: Option<Grid>,
+    pub(crate) horizontal_probability: f32,
+    pub(crate) mean: f32,
+    pub(crate) inv_std: f32,
 }
 
 impl Fibers {

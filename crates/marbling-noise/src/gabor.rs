@@ -118,14 +118,14 @@ impl GaborParams {
 pub struct Gabor {
     params: GaborParams,
     /// Side of an impulse cell, pixels.
-    cell: f32,
+    pub(crate) cell: f32,
     /// Cells per tile period, 0 when not tileable.
-    period_cells: i32,
+    pub(crate) period_cells: i32,
     /// e^(−mean impulses per cell), for the Poisson draw.
-    exp_neg_mean: f32,
-    radius2: f32,
-    pi_a2: f32,
-    inv_std: f32,
+    pub(crate) exp_neg_mean: f32,
+    pub(crate) radius2: f32,
+    pub(crate) pi_a2: f32,
+    pub(crate) inv_std: f32,
 }
 
 impl Gabor {

@@ -154,10 +154,10 @@ pub fn noise_field(spec: &NoiseSpec, size: u32) -> Option<Arc<dyn Field>> {
 
 /// A frequency rounded so a whole number of cells fits the period, and that number (0
 /// when not tiling).
-fn lattice_for_period(frequency: f32, period: Option<u32>) -> (f32, i32) {
+pub(crate) fn lattice_for_period(frequency: f32, period: Option<u32>) -> (f32, i32) {
     match period {
         Some(p) if p > 0 => {
-            let cells = (frequency * p as f32).round().max(1.0);
+            let cells = (frequency * p as f32 + 0.5).floor().max(1.0);
             (cells / p as f32, cells as i32)
         }
         _ => (frequency, 0),
