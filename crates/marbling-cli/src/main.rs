@@ -2,6 +2,7 @@
 
 mod bench;
 mod input;
+mod noise;
 mod render;
 mod validate;
 
@@ -24,6 +25,8 @@ enum Command {
     Validate(validate::ValidateArgs),
     /// Measure renderer throughput in op-samples per second on synthetic designs.
     Bench(bench::BenchArgs),
+    /// Evaluate a procedural noise spec (Gabor, Perlin fBm, Worley, paper, …) to a PNG.
+    Noise(noise::NoiseArgs),
 }
 
 fn main() -> ExitCode {
@@ -32,6 +35,7 @@ fn main() -> ExitCode {
         Command::Render(args) => render::run(&args),
         Command::Validate(args) => validate::run(&args),
         Command::Bench(args) => bench::run(&args),
+        Command::Noise(args) => noise::run(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
