@@ -36,6 +36,7 @@ unit: setup-rust setup-gpu
 
 wasm-check: setup-rust
 	$(CARGO) clippy --target wasm32-unknown-unknown -p marbling-core -- -D warnings
+	$(CARGO) clippy --target wasm32-unknown-unknown -p marbling-noise -- -D warnings
 
 test: fmt-check clippy wasm-check unit
 

@@ -71,7 +71,7 @@ fn main() {
     let g = Gabor::new(GaborParams {
         kind: GaborKind::Anisotropic,
         frequency: 0.0625,
-        orientation: 0.7854,
+        orientation: std::f32::consts::FRAC_PI_4,
         bandwidth: 0.05,
         impulses: 64.0,
         seed: 7,

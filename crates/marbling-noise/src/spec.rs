@@ -474,18 +474,15 @@ impl Reader {
         self.object(path, v, &allowed)?;
         let source = self.source(path, obj, kind);
         let tile = self.boolean(path, obj, "tile");
-        let transfer = match obj.get("transfer") {
-            Some(t) => Some(self.transfer(&join(path, "transfer"), t)),
-            None => None,
-        };
-        let palette = match obj.get("palette") {
-            Some(p) => Some(self.palette(&join(path, "palette"), p)),
-            None => None,
-        };
-        let blend = match obj.get("blend") {
-            Some(b) => Some(self.blend(&join(path, "blend"), b)),
-            None => None,
-        };
+        let transfer = obj
+            .get("transfer")
+            .map(|t| self.transfer(&join(path, "transfer"), t));
+        let palette = obj
+            .get("palette")
+            .map(|p| self.palette(&join(path, "palette"), p));
+        let blend = obj
+            .get("blend")
+            .map(|b| self.blend(&join(path, "blend"), b));
         if palette.is_some() && blend.is_some() {
             self.push(
                 join(path, "blend"),
@@ -569,14 +566,12 @@ impl Reader {
                     Rule::Within(1.0, MAX_IMPULSES),
                 );
                 let seed = self.seed(path, obj);
-                let orientation_field = match obj.get("orientation_field") {
-                    Some(d) => Some(self.drive(&join(path, "orientation_field"), d)),
-                    None => None,
-                };
-                let frequency_field = match obj.get("frequency_field") {
-                    Some(d) => Some(self.drive(&join(path, "frequency_field"), d)),
-                    None => None,
-                };
+                let orientation_field = obj
+                    .get("orientation_field")
+                    .map(|d| self.drive(&join(path, "orientation_field"), d));
+                let frequency_field = obj
+                    .get("frequency_field")
+                    .map(|d| self.drive(&join(path, "frequency_field"), d));
                 if gk == Some(GaborKind::Isotropic) && orientation_field.is_some() {
                     self.push(
                         join(path, "orientation_field"),
