@@ -8,7 +8,7 @@ CARGO ?= cargo
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 MARBLING := target/release/marbling
 
-.PHONY: run test gallery setup-rust setup-gpu fmt-check clippy unit wasm-check bench
+.PHONY: run test gallery setup-rust setup-gpu fmt-check clippy unit wasm-check bench noise-gallery bench-noise
 
 run: gallery
 
@@ -53,3 +53,14 @@ gallery: $(MARBLING)
 ## Throughput of the CPU reference renderer (see docs/BENCHMARKS.md).
 bench: $(MARBLING)
 	$(MARBLING) bench --ops 10,100,1000,10000 --aa none
+
+## Renders every example noise spec to docs/noise/NAME.png (256 px).
+noise-gallery: $(MARBLING)
+	@mkdir -p docs/noise
+	@for f in examples/noise/*.json; do \
+	  n=$$(basename $$f .json); $(MARBLING) noise $$f -o docs/noise/$$n.png --size 256 || exit 1; \
+	done
+
+## Noise throughput against fastnoise-lite, Gabor ms/megapixel (see docs/BENCHMARKS.md).
+bench-noise: setup-gpu
+	WGPU_BACKEND=vulkan $(CARGO) bench -p marbling-noise --bench noise
