@@ -10,10 +10,14 @@ struct FiberGrid {
     cell: f32,
     reach_cells: i32,
     period_cells: i32,
-    exp_neg_mean: f32,
+    exp_neg_part: f32,
+    poisson_parts: u32,
+    _pad0: u32,
+    _pad1: u32,
+    _pad2: u32,
 }
 
-// Keep in sync with `FibersGpu` in crates/marbling-noise/src/wgsl.rs (80 bytes).
+// Keep in sync with `FibersGpu` in crates/marbling-noise/src/wgsl.rs (112 bytes).
 struct FiberParams {
     fiber_layout: u32,
     seed: u32,
@@ -42,7 +46,7 @@ fn fibers_height(p: vec2<f32>, fp: FiberParams) -> f32 {
     for (var cy = iy - g.reach_cells; cy <= iy + g.reach_cells; cy = cy + 1) {
         for (var cx = ix - g.reach_cells; cx <= ix + g.reach_cells; cx = cx + 1) {
             var rng = cell_hash(wrap_cell(cx, g.period_cells), wrap_cell(cy, g.period_cells), fp.seed);
-            let count = rng_poisson(&rng, g.exp_neg_mean, POISSON_CAP);
+            let count = rng_poisson_parts(&rng, g.exp_neg_part, g.poisson_parts);
             for (var k = 0u; k < count; k = k + 1u) {
                 let ox = (f32(cx) + rng_next_f32(&rng)) * g.cell;
                 let oy = (f32(cy) + rng_next_f32(&rng)) * g.cell;
@@ -74,7 +78,7 @@ fn fibers_specks(p: vec2<f32>, fp: FiberParams) -> f32 {
     for (var cy = iy - g.reach_cells; cy <= iy + g.reach_cells; cy = cy + 1) {
         for (var cx = ix - g.reach_cells; cx <= ix + g.reach_cells; cx = cx + 1) {
             var rng = cell_hash(wrap_cell(cx, g.period_cells), wrap_cell(cy, g.period_cells), fp.seed ^ IMPURITY_SEED);
-            let count = rng_poisson(&rng, g.exp_neg_mean, POISSON_CAP);
+            let count = rng_poisson_parts(&rng, g.exp_neg_part, g.poisson_parts);
             for (var k = 0u; k < count; k = k + 1u) {
                 let ox = (f32(cx) + rng_next_f32(&rng)) * g.cell;
                 let oy = (f32(cy) + rng_next_f32(&rng)) * g.cell;

@@ -16,12 +16,12 @@ struct GaborParams {
     cell: f32,                // impulse cell side, pixels
     radius2: f32,             // truncation radius squared, pixels^2
     pi_a2: f32,               // pi * a^2
-    exp_neg_mean: f32,        // e^-(mean impulses per cell)
+    exp_neg_part: f32,        // e^-(mean impulses per cell / poisson_parts)
     inv_std: f32,             // 1 / analytical standard deviation
     orientation_amount: f32,  // radians per unit of the driving fBm
     frequency_amount: f32,    // octaves per unit of the driving fBm
-    _pad0: u32,
-    _pad1: u32,
+    poisson_parts: u32,       // the Poisson draw is split into this many parts
+    reach_cells: i32,         // cells searched each way, ceil(R / cell)
     _pad2: u32,
     orientation_drive: FbmParams,
     frequency_drive: FbmParams,
@@ -37,8 +37,9 @@ fn gabor_raw(p: vec2<f32>, g: GaborParams) -> f32 {
     let fy = (v - f32(iy)) * g.cell;
     let base = vec2<f32>(cos(g.orientation), sin(g.orientation));
     var sum = 0.0;
-    for (var dj = -1; dj <= 1; dj = dj + 1) {
-        for (var di = -1; di <= 1; di = di + 1) {
+    let reach = g.reach_cells;
+    for (var dj = -reach; dj <= reach; dj = dj + 1) {
+        for (var di = -reach; di <= reach; di = di + 1) {
             let ex = max(max(f32(di) * g.cell - fx, fx - f32(di + 1) * g.cell), 0.0);
             let ey = max(max(f32(dj) * g.cell - fy, fy - f32(dj + 1) * g.cell), 0.0);
             if ex * ex + ey * ey >= g.radius2 {
@@ -47,7 +48,7 @@ fn gabor_raw(p: vec2<f32>, g: GaborParams) -> f32 {
             let cx = ix + di;
             let cy = iy + dj;
             var rng = cell_hash(wrap_cell(cx, g.period_cells), wrap_cell(cy, g.period_cells), g.seed);
-            let count = rng_poisson(&rng, g.exp_neg_mean, POISSON_CAP);
+            let count = rng_poisson_parts(&rng, g.exp_neg_part, g.poisson_parts);
             for (var k = 0u; k < count; k = k + 1u) {
                 let ox = rng_next_f32(&rng);
                 let oy = rng_next_f32(&rng);

@@ -60,6 +60,16 @@ fn rng_poisson(state: ptr<function, u32>, exp_neg_mean: f32, cap: u32) -> u32 {
     return k;
 }
 
+// Sum of `parts` Poisson draws (CellRng::poisson_parts): means above 64 are split so
+// e^-part stays a normal f32.
+fn rng_poisson_parts(state: ptr<function, u32>, exp_neg_part: f32, parts: u32) -> u32 {
+    var k = 0u;
+    for (var i = 0u; i < parts; i = i + 1u) {
+        k = k + rng_poisson(state, exp_neg_part, POISSON_CAP);
+    }
+    return k;
+}
+
 // Wraps a cell index into [0, period) when period > 0.
 fn wrap_cell(i: i32, period: i32) -> i32 {
     if period > 0 {

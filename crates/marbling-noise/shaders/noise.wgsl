@@ -9,7 +9,7 @@ const NOISE_WHITE: u32 = 3u;
 const NOISE_CURL: u32 = 4u;
 const NOISE_FIBERS: u32 = 5u;
 
-// Keep in sync with `NoiseGpu` in crates/marbling-noise/src/wgsl.rs (272 bytes).
+// Keep in sync with `NoiseGpu` in crates/marbling-noise/src/wgsl.rs (304 bytes).
 struct NoiseUniform {
     noise_type: u32,
     seed: u32,            // worley, white

@@ -13,7 +13,7 @@
 //! `shaders/fibers.wgsl`.
 
 use crate::field::Field;
-use crate::hash::{CellRng, POISSON_CAP, floor_i32, wrap_cell};
+use crate::hash::{CellRng, floor_i32, poisson_split, wrap_cell};
 use std::f32::consts::PI;
 
 /// Most fibers expected per generation cell; cells shrink below the fiber reach to keep
@@ -72,7 +72,8 @@ pub(crate) struct Grid {
     pub(crate) cell: f32,
     pub(crate) reach_cells: i32,
     pub(crate) period_cells: i32,
-    pub(crate) exp_neg_mean: f32,
+    pub(crate) exp_neg_part: f32,
+    pub(crate) poisson_parts: u32,
 }
 
 impl Grid {
@@ -84,11 +85,13 @@ impl Grid {
             cell = p as f32 / cells as f32;
             period_cells = cells;
         }
+        let (exp_neg_part, poisson_parts) = poisson_split(density * cell * cell);
         Self {
             cell,
             reach_cells: (reach / cell).ceil() as i32,
             period_cells,
-            exp_neg_mean: (-density * cell * cell).exp(),
+            exp_neg_part,
+            poisson_parts,
         }
     }
 }
@@ -208,7 +211,7 @@ fn visit(g: &Grid, x: f32, y: f32, seed: u32, mut f: impl FnMut(&mut CellRng, f3
                 wrap_cell(cy, g.period_cells),
                 seed,
             );
-            let count = rng.poisson(g.exp_neg_mean, POISSON_CAP);
+            let count = rng.poisson_parts(g.exp_neg_part, g.poisson_parts);
             for _ in 0..count {
                 f(&mut rng, cx as f32, cy as f32);
             }

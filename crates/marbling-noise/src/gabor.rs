@@ -7,7 +7,8 @@
 //! impulses xᵢ from a Poisson process of density λ = N/(πR²) (N: mean number of kernels
 //! overlapping a point), weights wᵢ uniform in [−1, 1], the kernel truncated at radius
 //! R = √(−ln t/π)/a where the Gaussian envelope falls to t = [`GABOR_TRUNCATION`].
-//! Impulses are generated per grid cell of side R (≥ R in the tileable variant) from the
+//! Impulses are generated per grid cell of side R (the tile divided evenly in the tileable
+//! variant, searching ⌈R/cell⌉ cells each way) from the
 //! cell's seeded stream ([`crate::CellRng`]): a Poisson count, then four uniforms per
 //! impulse (x, y, weight, angle-or-phase).
 //!
@@ -17,7 +18,7 @@
 //! unit variance. Keep in sync with `shaders/gabor.wgsl`.
 
 use crate::field::Field;
-use crate::hash::{CellRng, POISSON_CAP, floor_i32, wrap_cell};
+use crate::hash::{CellRng, floor_i32, poisson_split, wrap_cell};
 use std::f32::consts::{PI, TAU};
 use std::sync::Arc;
 
@@ -121,8 +122,12 @@ pub struct Gabor {
     pub(crate) cell: f32,
     /// Cells per tile period, 0 when not tileable.
     pub(crate) period_cells: i32,
-    /// e^(−mean impulses per cell), for the Poisson draw.
-    pub(crate) exp_neg_mean: f32,
+    /// Cells searched on each side: ⌈R / cell⌉ (1 unless a tile is smaller than R).
+    pub(crate) reach_cells: i32,
+    /// e^(−mean impulses per cell / parts), for the Poisson draw.
+    pub(crate) exp_neg_part: f32,
+    /// Parts the Poisson draw is split into ([`crate::hash::poisson_split`]).
+    pub(crate) poisson_parts: u32,
     pub(crate) radius2: f32,
     pub(crate) pi_a2: f32,
     pub(crate) inv_std: f32,
@@ -141,11 +146,13 @@ impl Gabor {
             _ => (r, 0),
         };
         let lambda = params.impulses / (PI * r * r);
-        let mean = lambda * cell * cell;
+        let (exp_neg_part, poisson_parts) = poisson_split(lambda * cell * cell);
         Self {
             cell,
             period_cells,
-            exp_neg_mean: (-mean).exp(),
+            reach_cells: ((r / cell).ceil() as i32).max(1),
+            exp_neg_part,
+            poisson_parts,
             radius2: r * r,
             pi_a2: PI * params.bandwidth * params.bandwidth,
             inv_std: 1.0 / params.variance().sqrt(),
@@ -165,10 +172,10 @@ impl Gabor {
         self.cell
     }
 
-    /// e^(−mean impulse count per cell), as passed to the WGSL.
+    /// Mean impulse count per cell.
     #[must_use]
-    pub fn exp_neg_mean(&self) -> f32 {
-        self.exp_neg_mean
+    pub fn impulses_per_cell(&self) -> f32 {
+        -self.exp_neg_part.ln() * self.poisson_parts as f32
     }
 
     /// The noise at (x, y), output pixels, normalised to zero mean and unit variance.
@@ -189,8 +196,9 @@ impl Gabor {
         let fy = (v - iy as f32) * self.cell;
         let (cos0, sin0) = (p.orientation.cos(), p.orientation.sin());
         let mut sum = 0.0_f32;
-        for dj in -1..=1_i32 {
-            for di in -1..=1_i32 {
+        let k = self.reach_cells;
+        for dj in -k..=k {
+            for di in -k..=k {
                 // Skip cells whose every point is farther than R.
                 let ex = (di as f32 * self.cell - fx).max(fx - (di + 1) as f32 * self.cell);
                 let ey = (dj as f32 * self.cell - fy).max(fy - (dj + 1) as f32 * self.cell);
@@ -205,7 +213,7 @@ impl Gabor {
                     wrap_cell(cy, self.period_cells),
                     p.seed,
                 );
-                let count = rng.poisson(self.exp_neg_mean, POISSON_CAP);
+                let count = rng.poisson_parts(self.exp_neg_part, self.poisson_parts);
                 for _ in 0..count {
                     let ox = rng.next_f32();
                     let oy = rng.next_f32();

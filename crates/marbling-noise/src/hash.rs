@@ -100,6 +100,28 @@ impl CellRng {
         }
         k
     }
+
+    /// A Poisson count of mean `parts`·(−ln `exp_neg_part`): the sum of `parts` draws
+    /// of [`CellRng::poisson`] (see [`poisson_split`]).
+    #[inline(always)]
+    pub fn poisson_parts(&mut self, exp_neg_part: f32, parts: u32) -> u32 {
+        let mut k = 0;
+        for _ in 0..parts {
+            k += self.poisson(exp_neg_part, POISSON_CAP);
+        }
+        k
+    }
+}
+
+/// Largest mean drawn with one Knuth loop; larger means are split into equal parts and
+/// the part counts summed (Poisson variables add), so e^(−part) stays a normal f32.
+pub const POISSON_PART_MEAN: f32 = 64.0;
+
+/// `(e^(−mean/parts), parts)` for a Poisson mean, parts = ⌈mean / POISSON_PART_MEAN⌉ ≥ 1.
+#[must_use]
+pub fn poisson_split(mean: f32) -> (f32, u32) {
+    let parts = (mean / POISSON_PART_MEAN).ceil().max(1.0) as u32;
+    ((-mean / parts as f32).exp(), parts)
 }
 
 /// Cap on Poisson draws per cell (the WGSL uses the same constant).
@@ -154,6 +176,20 @@ mod tests {
         let v = s2 / f64::from(n) - m * m;
         assert!((m - 12.5).abs() < 0.15, "mean {m}");
         assert!((v / 12.5 - 1.0).abs() < 0.05, "variance {v}");
+    }
+
+    #[test]
+    fn split_poisson_keeps_large_means() {
+        for mean in [10.0_f32, 200.0, 330.0] {
+            let (l, parts) = poisson_split(mean);
+            assert!(l > 0.0 && parts == (mean / 64.0).ceil() as u32);
+            let n = 4000;
+            let total: u64 = (0..n)
+                .map(|i| u64::from(CellRng::new(i, -3, 1).poisson_parts(l, parts)))
+                .sum();
+            let m = total as f64 / f64::from(n);
+            assert!((m / f64::from(mean) - 1.0).abs() < 0.02, "{mean}: {m}");
+        }
     }
 
     #[test]

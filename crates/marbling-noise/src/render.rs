@@ -99,8 +99,13 @@ pub fn noise_field(spec: &NoiseSpec, size: u32) -> Option<Arc<dyn Field>> {
         } => {
             let drive = |d: &Option<crate::spec::DriveSpec>| -> Option<Drive> {
                 let d = d.as_ref()?;
+                // A tiling Gabor tiles its driving fields too.
+                let noise = NoiseSpec {
+                    tile: spec.tile,
+                    ..(*d.noise).clone()
+                };
                 Some(Drive {
-                    field: noise_field(&d.noise, size)?,
+                    field: noise_field(&noise, size)?,
                     amount: d.amount,
                 })
             };
@@ -201,7 +206,19 @@ impl NoiseImage {
 
 fn build(spec: &NoiseSpec, size: u32) -> Node {
     match &spec.source {
-        Source::Product(inputs) => Node::Product(inputs.iter().map(|s| build(s, size)).collect()),
+        // Inputs of a tiling product tile too.
+        Source::Product(inputs) => Node::Product(
+            inputs
+                .iter()
+                .map(|s| {
+                    let s = NoiseSpec {
+                        tile: s.tile || spec.tile,
+                        ..s.clone()
+                    };
+                    build(&s, size)
+                })
+                .collect(),
+        ),
         _ => match noise_field(spec, size) {
             Some(field) => Node::Noise {
                 field,

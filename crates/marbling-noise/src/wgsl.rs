@@ -145,16 +145,20 @@ pub struct GaborGpu {
     pub radius2: f32,
     /// π·a².
     pub pi_a2: f32,
-    /// e^(−mean impulses per cell).
-    pub exp_neg_mean: f32,
+    /// e^(−mean impulses per cell / parts).
+    pub exp_neg_part: f32,
     /// 1 / analytical standard deviation.
     pub inv_std: f32,
     /// Radians per unit of the orientation drive.
     pub orientation_amount: f32,
     /// Octaves per unit of the frequency drive.
     pub frequency_amount: f32,
+    /// Parts of the Poisson draw.
+    pub poisson_parts: u32,
+    /// Cells searched each way.
+    pub reach_cells: i32,
     /// Padding.
-    pub _pad: [u32; 3],
+    pub _pad: u32,
     /// The fBm driving the orientation.
     pub orientation_drive: FbmGpu,
     /// The fBm driving the frequency.
@@ -171,8 +175,12 @@ pub struct FiberGridGpu {
     pub reach_cells: i32,
     /// Cells per tile, 0 = none.
     pub period_cells: i32,
-    /// e^(−mean points per cell).
-    pub exp_neg_mean: f32,
+    /// e^(−mean points per cell / parts).
+    pub exp_neg_part: f32,
+    /// Parts of the Poisson draw.
+    pub poisson_parts: u32,
+    /// Padding.
+    pub _pad: [u32; 3],
 }
 
 /// Host mirror of WGSL `FiberParams` (fibers.wgsl). Keep in sync.
@@ -250,11 +258,12 @@ pub enum GpuUnsupported {
 fn drive_fbm(
     d: &Option<DriveSpec>,
     what: &'static str,
+    period: Option<u32>,
 ) -> Result<(FbmGpu, f32, bool), GpuUnsupported> {
     match d {
         None => Ok((FbmGpu::default(), 0.0, false)),
         Some(d) => match &d.noise.source {
-            Source::Fbm(p) => Ok((FbmGpu::from(p), d.amount, true)),
+            Source::Fbm(p) => Ok((FbmGpu::from(&FbmParams { period, ..*p }), d.amount, true)),
             _ => Err(GpuUnsupported::Drive(what)),
         },
     }
@@ -281,11 +290,13 @@ impl GaborGpu {
             cell: g.cell,
             radius2: g.radius2,
             pi_a2: g.pi_a2,
-            exp_neg_mean: g.exp_neg_mean,
+            exp_neg_part: g.exp_neg_part,
             inv_std: g.inv_std,
             orientation_amount: oa,
             frequency_amount: fa,
-            _pad: [0; 3],
+            poisson_parts: g.poisson_parts,
+            reach_cells: g.reach_cells,
+            _pad: 0,
             orientation_drive: od,
             frequency_drive: fd,
         }
@@ -299,7 +310,9 @@ impl From<&Fibers> for FibersGpu {
             cell: g.cell,
             reach_cells: g.reach_cells,
             period_cells: g.period_cells,
-            exp_neg_mean: g.exp_neg_mean,
+            exp_neg_part: g.exp_neg_part,
+            poisson_parts: g.poisson_parts,
+            _pad: [0; 3],
         };
         let imp = p.impurities;
         Self {
@@ -341,8 +354,8 @@ impl NoiseGpu {
                 orientation_field,
                 frequency_field,
             } => {
-                let (od, oa, o_on) = drive_fbm(orientation_field, "orientation_field")?;
-                let (fd, fa, f_on) = drive_fbm(frequency_field, "frequency_field")?;
+                let (od, oa, o_on) = drive_fbm(orientation_field, "orientation_field", period)?;
+                let (fd, fa, f_on) = drive_fbm(frequency_field, "frequency_field", period)?;
                 let g = Gabor::new(GaborParams {
                     kind: *kind,
                     frequency: *frequency,

@@ -128,6 +128,9 @@ fn tileable_variants_wrap() {
         r#"{"type":"curl","frequency":0.03,"tile":true}"#,
         r#"{"type":"gabor","frequency":0.1,"bandwidth":0.07,"orientation":0.4,"tile":true}"#,
         r#"{"type":"gabor","kind":"isotropic","frequency":0.1,"bandwidth":0.07,"tile":true}"#,
+        r#"{"type":"gabor","kind":"random-phase","frequency":0.1,"bandwidth":0.07,"tile":true,
+            "orientation_field":{"noise":{"type":"perlin","frequency":0.02},"amount":1}}"#,
+        r#"{"type":"gabor","frequency":0.1,"bandwidth":0.01,"impulses":200,"tile":true}"#,
         r#"{"type":"paper","length":12,"width":1.5,"density":0.2,"tile":true,"impurities":{"density":0.002}}"#,
         r#"{"type":"canvas","length":9,"width":2,"density":0.2,"tile":true}"#,
     ] {
@@ -145,17 +148,16 @@ fn tileable_variants_wrap() {
             worst = worst.max((a - f.sample(x - n, y - n)).abs());
         }
         assert!(worst < 2e-3, "{text}: {worst}");
-        // The left edge continues the right edge: neighbours across the seam are as
-        // close as neighbours inside the image.
-        let seam: f32 = (0..96)
-            .map(|j| (f.sample(n - 0.5, j as f32 + 0.5) - f.sample(0.5, j as f32 + 0.5)).abs())
-            .sum();
-        let inner: f32 = (0..96)
-            .map(|j| (f.sample(n - 1.5, j as f32 + 0.5) - f.sample(n - 0.5, j as f32 + 0.5)).abs())
-            .sum();
-        assert!(
-            seam < 3.0 * inner + 1e-3 || text.contains("white"),
-            "{text}: seam {seam} inner {inner}"
-        );
+        // The left edge continues the right edge: the step across the seam is like the
+        // steps between neighbouring columns inside the image (averaged over columns).
+        let col = |x: f32| -> f32 {
+            (0..96)
+                .map(|j| (f.sample(x + 1.0, j as f32 + 0.5) - f.sample(x, j as f32 + 0.5)).abs())
+                .sum()
+        };
+        let seam = col(n - 0.5);
+        let inner = (0..95).map(|i| col(i as f32 + 0.5)).sum::<f32>() / 95.0;
+        let within = seam < 3.0 * inner + 1e-3 || text.contains("white");
+        assert!(within, "{text}: seam {seam} inner {inner}");
     }
 }

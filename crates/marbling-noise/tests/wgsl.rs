@@ -74,6 +74,7 @@ fn host_structs_match_wgsl_layout() {
         &[
             ("drives", offset_of!(GaborGpu, drives)),
             ("inv_std", offset_of!(GaborGpu, inv_std)),
+            ("poisson_parts", offset_of!(GaborGpu, poisson_parts)),
             ("frequency_amount", offset_of!(GaborGpu, frequency_amount)),
             ("orientation_drive", offset_of!(GaborGpu, orientation_drive)),
             ("frequency_drive", offset_of!(GaborGpu, frequency_drive)),
@@ -82,7 +83,10 @@ fn host_structs_match_wgsl_layout() {
     check(
         "FiberGrid",
         size_of::<FiberGridGpu>(),
-        &[("exp_neg_mean", offset_of!(FiberGridGpu, exp_neg_mean))],
+        &[
+            ("exp_neg_part", offset_of!(FiberGridGpu, exp_neg_part)),
+            ("poisson_parts", offset_of!(FiberGridGpu, poisson_parts)),
+        ],
     );
     check(
         "FiberParams",
