@@ -14,11 +14,8 @@ fn pcg_hash(v: u32) -> u32 {
 
 // Lattice corner hash from pre-multiplied coordinates.
 fn lattice_hash_premul(xp: u32, yp: u32, seed: u32) -> u32 {
-    var h = xp ^ yp ^ seed;
-    h = h * 0x27D4EB2Du;
-    h = h ^ (h >> 15u);
-    h = h * 0x2C1B3C6Du;
-    return h ^ (h >> 12u);
+    let h = (xp ^ yp ^ seed) * 0x27D4EB2Du;
+    return h ^ (h >> 15u);
 }
 
 fn lattice_hash(ix: i32, iy: i32, seed: u32) -> u32 {

@@ -2,7 +2,7 @@
 //! growing frequency (lacunarity) and shrinking amplitude (persistence), normalised to
 //! zero mean and unit variance. Keep in sync with `fbm` in `shaders/fbm.wgsl`.
 
-use crate::perlin::{PERLIN_VARIANCE, perlin2_periodic, perlin2_with_gradient};
+use crate::perlin::{PERLIN_VARIANCE, perlin2, perlin2_periodic, perlin2_with_gradient};
 use crate::value::{VALUE_VARIANCE, value2_periodic};
 
 /// Most octaves an fBm may have.
@@ -121,17 +121,31 @@ impl Fbm {
         &self.params
     }
 
-    /// Σ aᵢ·noise(fᵢ·p): the un-normalised sum.
+    /// Σ aᵢ·noise(fᵢ·p): the un-normalised sum (the common non-tiled Perlin case has
+    /// its own loop without wrapping).
     #[inline]
     fn sum(&self, x: f32, y: f32) -> f32 {
+        let octaves = &self.octaves[..self.count];
         let mut s = 0.0;
-        for o in &self.octaves[..self.count] {
-            let p = [o.period, o.period];
-            let n = match self.params.basis {
-                Basis::Perlin => perlin2_periodic(x * o.frequency, y * o.frequency, o.seed, p),
-                Basis::Value => value2_periodic(x * o.frequency, y * o.frequency, o.seed, p),
-            };
-            s += o.amplitude * n;
+        match (self.params.basis, self.params.period) {
+            (Basis::Perlin, None) => {
+                for o in octaves {
+                    s += o.amplitude * perlin2(x * o.frequency, y * o.frequency, o.seed);
+                }
+            }
+            (Basis::Perlin, Some(_)) => {
+                for o in octaves {
+                    let p = [o.period, o.period];
+                    s +=
+                        o.amplitude * perlin2_periodic(x * o.frequency, y * o.frequency, o.seed, p);
+                }
+            }
+            (Basis::Value, _) => {
+                for o in octaves {
+                    let p = [o.period, o.period];
+                    s += o.amplitude * value2_periodic(x * o.frequency, y * o.frequency, o.seed, p);
+                }
+            }
         }
         s
     }

@@ -17,16 +17,13 @@ pub const PRIME_X: u32 = 0x9E37_79B1;
 pub const PRIME_Y: u32 = 0x85EB_CA77;
 
 /// Cheap hash of a lattice corner for gradient/value noise: one multiply per axis (the
-/// caller may pre-multiply), a mixing multiply and two xor-shifts. Keep in sync with
-/// `lattice_hash` in `shaders/hash.wgsl`.
+/// caller may pre-multiply), one mixing multiply and an xor-shift; callers use the well
+/// mixed high bits. Keep in sync with `lattice_hash` in `shaders/hash.wgsl`.
 #[inline(always)]
 #[must_use]
 pub fn lattice_hash_premul(xp: u32, yp: u32, seed: u32) -> u32 {
-    let mut h = xp ^ yp ^ seed;
-    h = h.wrapping_mul(0x27D4_EB2D);
-    h ^= h >> 15;
-    h = h.wrapping_mul(0x2C1B_3C6D);
-    h ^ (h >> 12)
+    let h = (xp ^ yp ^ seed).wrapping_mul(0x27D4_EB2D);
+    h ^ (h >> 15)
 }
 
 /// [`lattice_hash_premul`] of integer lattice coordinates.
