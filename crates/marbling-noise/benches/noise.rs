@@ -119,7 +119,7 @@ fn main() {
     match gpu::GpuNoise::new() {
         Ok(dev) => {
             let spec = NoiseSpec::from_json(gabor_json).expect("valid");
-            let size = 1024;
+            let size = 512;
             let u = NoiseGpu::from_spec(&spec, size).expect("gpu form");
             let _ = dev.run(&u, size); // warm-up (pipeline compilation)
             let best = (0..3)
