@@ -161,3 +161,34 @@ fn tileable_variants_wrap() {
         assert!(within, "{text}: seam {seam} inner {inner}");
     }
 }
+
+#[test]
+fn spline_decay_mean_intensity_tracks_value_on_gabor() {
+    // Seed 004: on random-phase Gabor noise the mean of D(n) equals v.
+    let n = sample_grid(
+        &spec(r#"{"type":"gabor","kind":"random-phase","frequency":0.1,"orientation":0.4,"bandwidth":0.06,"seed":12}"#),
+        256,
+    )
+    .expect("noise");
+    let table = marbling_noise::SplineDecayTable::new();
+    for v in [0.1_f32, 0.3, 0.5, 0.7, 0.9] {
+        let d = table.decay(v);
+        let mean = n.iter().map(|&x| f64::from(d.apply(x))).sum::<f64>() / n.len() as f64;
+        println!("v {v}: mean intensity {mean:.3}");
+        assert!((mean - f64::from(v)).abs() < 0.04, "v {v}: mean {mean}");
+    }
+}
+
+#[test]
+fn cross_hatch_is_the_product_of_two_hatchings() {
+    let a = r#"{"type":"gabor","frequency":0.1,"orientation":0.785,"bandwidth":0.04,"seed":1,"transfer":{"type":"threshold","threshold":0.5,"width":0.6,"invert":true}}"#;
+    let b = r#"{"type":"gabor","frequency":0.1,"orientation":-0.785,"bandwidth":0.04,"seed":2,"transfer":{"type":"threshold","threshold":0.5,"width":0.6,"invert":true}}"#;
+    let product = format!(r#"{{"type":"product","inputs":[{a},{b}]}}"#);
+    let r = |t: &str| marbling_noise::Renderer::new(&spec(t), 64).expect("size");
+    let (ra, rb, rp) = (r(a), r(b), r(&product));
+    for k in 0..64 {
+        let (x, y) = (k as f32 + 0.5, (k * 7 % 64) as f32 + 0.5);
+        let expected = ra.intensity(x, y) * rb.intensity(x, y);
+        assert!((rp.intensity(x, y) - expected).abs() < 1e-6);
+    }
+}
