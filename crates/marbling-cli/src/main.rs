@@ -5,6 +5,7 @@ mod bench;
 mod bench_gpu;
 mod input;
 mod link;
+mod noise;
 mod render;
 mod size;
 mod validate;
@@ -30,6 +31,8 @@ enum Command {
     Link(link::LinkArgs),
     /// Measure renderer throughput in op-samples per second on synthetic designs.
     Bench(bench::BenchArgs),
+    /// Evaluate a procedural noise spec (Gabor, Perlin fBm, Worley, paper, …) to a PNG.
+    Noise(noise::NoiseArgs),
 }
 
 fn main() -> ExitCode {
@@ -39,6 +42,7 @@ fn main() -> ExitCode {
         Command::Validate(args) => validate::run(&args),
         Command::Bench(args) => bench::run(&args),
         Command::Link(args) => link::run(&args),
+        Command::Noise(args) => noise::run(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
