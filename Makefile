@@ -8,9 +8,18 @@ CARGO ?= cargo
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 MARBLING := target/release/marbling
 
-.PHONY: run test gallery setup-rust setup-gpu fmt-check clippy unit wasm-check bench bench-gpu
+.PHONY: run test gallery setup-rust setup-gpu setup-web setup-browser fmt-check clippy unit wasm-check bench bench-gpu web browser-test noise-gallery bench-noise
 
-run: gallery
+TRUNK_VERSION := 0.21.14
+# Must equal the wasm-bindgen version in Cargo.lock (see crates/marbling-app/Cargo.toml).
+WASM_BINDGEN_VERSION := 0.2.130
+CARGO_BIN := $(HOME)/.cargo/bin
+export PATH := $(CARGO_BIN):$(PATH)
+
+## Builds the web app and serves it on http://127.0.0.1:8080 (Ctrl+C stops it).
+run: web
+	@echo "serving the playground on http://127.0.0.1:8080"
+	trunk serve --release --offline --address 127.0.0.1 --port 8080
 
 ## Rust toolchain pieces: the wasm32 target, rustfmt and clippy.
 setup-rust:
@@ -25,6 +34,24 @@ setup-gpu:
 	  $(SUDO) apt-get update -qq && $(SUDO) DEBIAN_FRONTEND=noninteractive apt-get install -y -qq mesa-vulkan-drivers libvulkan1 >/dev/null; \
 	fi
 
+## Trunk and wasm-bindgen-cli, compiled from crates.io when missing or of another version.
+setup-web: setup-rust
+	@trunk --version 2>/dev/null | grep -q "$(TRUNK_VERSION)" || cargo install --locked trunk@$(TRUNK_VERSION)
+	@wasm-bindgen --version 2>/dev/null | grep -q "$(WASM_BINDGEN_VERSION)" || cargo install wasm-bindgen-cli --version $(WASM_BINDGEN_VERSION)
+
+## Debian's Chromium and the npm packages of the browser tests.
+setup-browser:
+	@command -v chromium >/dev/null || { $(SUDO) apt-get update -qq && $(SUDO) DEBIAN_FRONTEND=noninteractive apt-get install -y -qq chromium >/dev/null; }
+	@[ -d tests/browser/node_modules/playwright-core ] && [ -d tests/browser/node_modules/pngjs ] || (cd tests/browser && npm ci --no-audit --no-fund)
+
+## The web app in dist/ (release build, wasm-opt off: see index.html).
+web: setup-web
+	trunk build --release --offline
+
+## End-to-end tests in headless Chromium on WebGPU and WebGL2 (SwiftShader).
+browser-test: web setup-browser $(MARBLING)
+	cd tests/browser && npm test
+
 fmt-check: setup-rust
 	$(CARGO) fmt --all -- --check
 
@@ -35,9 +62,9 @@ unit: setup-rust setup-gpu
 	WGPU_BACKEND=vulkan $(CARGO) test --workspace
 
 wasm-check: setup-rust
-	$(CARGO) clippy --target wasm32-unknown-unknown -p marbling-core -p marbling-gpu -- -D warnings
+	$(CARGO) clippy --target wasm32-unknown-unknown -p marbling-core -p marbling-gpu -p marbling-noise -p marbling-app -- -D warnings
 
-test: fmt-check clippy wasm-check unit
+test: fmt-check clippy wasm-check unit browser-test
 
 $(MARBLING): $(shell find crates -name '*.rs' -o -name Cargo.toml -o -name '*.wgsl') Cargo.toml
 	$(CARGO) build --release -p marbling-cli
@@ -60,3 +87,13 @@ bench-gpu: $(MARBLING) setup-gpu
 	  $(MARBLING) bench --backend gpu --mix mixed --ops 1000,10000 --size $$s --aa $$aa || exit 1; \
 	done; done
 	$(MARBLING) bench --backend gpu --pending --mix mixed --ops 1000,10000 --size 1920x1080 --aa rgss --frames 200
+## Renders every example noise spec to docs/noise/NAME.png (256 px).
+noise-gallery: $(MARBLING)
+	@mkdir -p docs/noise
+	@for f in examples/noise/*.json; do \
+	  n=$$(basename $$f .json); $(MARBLING) noise $$f -o docs/noise/$$n.png --size 256 || exit 1; \
+	done
+
+## Noise throughput against fastnoise-lite, Gabor ms/megapixel (see docs/BENCHMARKS.md).
+bench-noise: setup-gpu
+	WGPU_BACKEND=vulkan $(CARGO) bench -p marbling-noise --bench noise

@@ -4,6 +4,8 @@ mod backend;
 mod bench;
 mod bench_gpu;
 mod input;
+mod link;
+mod noise;
 mod render;
 mod size;
 mod validate;
@@ -25,8 +27,12 @@ enum Command {
     Render(render::RenderArgs),
     /// Check a design and summarise its ops, or list every error with its JSON path.
     Validate(validate::ValidateArgs),
+    /// Make a share link (`…#d=…`) for a design, or decode one back to JSON.
+    Link(link::LinkArgs),
     /// Measure renderer throughput in op-samples per second on synthetic designs.
     Bench(bench::BenchArgs),
+    /// Evaluate a procedural noise spec (Gabor, Perlin fBm, Worley, paper, …) to a PNG.
+    Noise(noise::NoiseArgs),
 }
 
 fn main() -> ExitCode {
@@ -35,6 +41,8 @@ fn main() -> ExitCode {
         Command::Render(args) => render::run(&args),
         Command::Validate(args) => validate::run(&args),
         Command::Bench(args) => bench::run(&args),
+        Command::Link(args) => link::run(&args),
+        Command::Noise(args) => noise::run(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

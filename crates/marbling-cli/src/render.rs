@@ -19,7 +19,7 @@ pub struct RenderArgs {
     #[arg(short, long)]
     output: String,
     /// Output pixels per design pixel (default 1).
-    #[arg(long, conflicts_with = "width")]
+    #[arg(long, conflicts_with = "width", allow_negative_numbers = true)]
     scale: Option<f64>,
     /// Output width in pixels (the height follows the design's aspect ratio).
     #[arg(long)]

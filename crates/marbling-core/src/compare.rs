@@ -87,6 +87,17 @@ pub fn check_snapshot(
     max_fraction: f64,
 ) -> Result<(), String> {
     let update = std::env::var_os("UPDATE_SNAPSHOTS").is_some_and(|v| v == "1");
+    check_snapshot_with(path, actual, threshold, max_fraction, update)
+}
+
+/// [`check_snapshot`] with the update decision made by the caller.
+pub fn check_snapshot_with(
+    path: &Path,
+    actual: &RgbaImage,
+    threshold: u8,
+    max_fraction: f64,
+    update: bool,
+) -> Result<(), String> {
     let write = |p: &Path, img: &RgbaImage| -> Result<(), String> {
         if let Some(dir) = p.parent() {
             std::fs::create_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;

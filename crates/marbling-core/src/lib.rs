@@ -13,6 +13,7 @@ mod json;
 mod ops;
 mod render;
 pub mod sampling;
+mod share;
 pub mod synth;
 mod validate;
 mod walk;
@@ -28,5 +29,8 @@ pub use render::{
     render_with_progress,
 };
 pub use sampling::Antialias;
+pub use share::{
+    MAX_LINK_JSON_BYTES, ShareError, decode_share, encode_share_payload, share_fragment,
+};
 pub use validate::{FieldError, ValidationErrors};
 pub use walk::{Batch, Traced, Walker};

@@ -1,0 +1,410 @@
+//! The playground app: state, what changes it, and the frame loop.
+
+use crate::canvas_gpu::{CanvasGpu, CanvasStatus};
+use crate::platform::{self, PickSlot};
+use crate::playback::Playback;
+use crate::tools::{Gesture, ToolKind, ToolSettings};
+use crate::view::ViewState;
+use crate::{History, PALETTES};
+use marbling_core::{Antialias, Design, DesignError, Op, Rgb8, decode_share, share_fragment};
+use std::sync::{Arc, Mutex};
+
+/// A line shown in the status bar; errors also go to `data-error`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Message {
+    /// What happened.
+    pub text: String,
+    /// True for problems (shown in red).
+    pub error: bool,
+}
+
+/// A tool being dragged on the canvas.
+#[derive(Clone, Debug)]
+pub struct ActiveGesture {
+    /// The tool in use.
+    pub tool: ToolKind,
+    /// The pointer's path so far.
+    pub gesture: Gesture,
+    /// Seed of this gesture's random choices (spray droplets).
+    pub seed: u64,
+}
+
+/// The marbling playground.
+pub struct MarblingApp {
+    pub(crate) history: History,
+    /// Bumped whenever the shown design changes (the GPU re-uploads on change).
+    pub(crate) key: u64,
+    /// The design on the canvas (the history, a viewed prefix or a playback frame).
+    pub(crate) shown: Arc<Design>,
+    pub(crate) tool: ToolKind,
+    pub(crate) settings: ToolSettings,
+    pub(crate) palette: usize,
+    pub(crate) ink: Rgb8,
+    pub(crate) antialias: Antialias,
+    /// `None` until the canvas size is known (then the design is fitted).
+    pub(crate) view: Option<ViewState>,
+    pub(crate) active: Option<ActiveGesture>,
+    pub(crate) next_seed: u64,
+    pub(crate) status: Arc<Mutex<CanvasStatus>>,
+    pub(crate) message: Option<Message>,
+    pub(crate) pick: PickSlot,
+    pub(crate) last_fragment: Option<String>,
+    pub(crate) playback: Option<Playback>,
+    /// Playback speed, ops per second.
+    pub(crate) play_speed: f64,
+    pub(crate) thumbnails: Vec<egui::TextureHandle>,
+    /// `webgpu`, `webgl2`, or the native backend's name.
+    pub(crate) backend: String,
+    /// False when no wgpu render state exists (the canvas then says so).
+    pub(crate) gpu: bool,
+    pub(crate) autosave_pending: bool,
+    pub(crate) hooks: Vec<(&'static str, Option<String>)>,
+    pub(crate) new_size: [u32; 2],
+    /// The sheet's top-left corner on the page (physical pixels) and the scale.
+    pub(crate) sheet_on_page: Option<[f64; 3]>,
+    /// Recent frame intervals, seconds (for `data-frame-ms`).
+    pub(crate) frame_times: std::collections::VecDeque<f64>,
+}
+
+/// Default canvas of a new design, design pixels.
+pub const NEW_SIZE: [u32; 2] = [1024, 768];
+
+impl MarblingApp {
+    /// Creates the app: GPU resources, then the design from a share link, else the
+    /// autosave, else the first gallery example.
+    pub fn new(cc: &eframe::CreationContext<'_>) -> Self {
+        let (gpu, backend) = match &cc.wgpu_render_state {
+            Some(rs) => {
+                let gpu = CanvasGpu::new(&rs.device);
+                rs.renderer.write().callback_resources.insert(gpu);
+                (true, backend_name(rs.adapter.get_info().backend))
+            }
+            None => (false, "none".to_owned()),
+        };
+        let fallback =
+            Design::from_json(crate::gallery::EXAMPLES[0].json).unwrap_or_else(|_| blank(NEW_SIZE));
+        let mut app = Self::with_design(fallback, backend, gpu);
+        if let Some(json) = platform::load_autosave(cc.storage) {
+            match Design::from_json(&json) {
+                Ok(d) => app.history.replace(d),
+                Err(e) => app.error(format!(
+                    "autosave could not be restored: {}",
+                    first_line(&e)
+                )),
+            }
+        }
+        app.refresh();
+        app.check_fragment();
+        app
+    }
+
+    /// An app showing `design` (no window needed: used by tests too).
+    pub fn with_design(design: Design, backend: String, gpu: bool) -> Self {
+        let palette = PALETTES[0];
+        Self {
+            history: History::new(design.clone()),
+            key: 0,
+            shown: Arc::new(design),
+            tool: ToolKind::Drop,
+            settings: ToolSettings::default(),
+            palette: 0,
+            ink: palette.inks[0],
+            antialias: Antialias::Rgss,
+            view: None,
+            active: None,
+            next_seed: 1,
+            status: Arc::new(Mutex::new(CanvasStatus::default())),
+            message: None,
+            pick: PickSlot::default(),
+            last_fragment: None,
+            playback: None,
+            play_speed: 8.0,
+            thumbnails: Vec::new(),
+            backend,
+            gpu,
+            autosave_pending: false,
+            hooks: Vec::new(),
+            new_size: NEW_SIZE,
+            sheet_on_page: None,
+            frame_times: std::collections::VecDeque::new(),
+        }
+    }
+
+    /// The shown design changed: new key, new snapshot.
+    pub(crate) fn refresh(&mut self) {
+        self.key += 1;
+        self.shown = Arc::new(match &self.playback {
+            Some(p) => p.frame(self.history.design()),
+            None => self.history.shown(),
+        });
+    }
+
+    /// Appends ops made by a tool, then autosaves.
+    pub(crate) fn commit(&mut self, ops: Vec<Op>) {
+        if ops.is_empty() {
+            return;
+        }
+        self.playback = None;
+        for op in ops {
+            self.history.push(op);
+        }
+        self.refresh();
+        self.autosave_pending = true;
+    }
+
+    /// Replaces the design (New, Open, link, gallery) and fits it on the canvas.
+    pub(crate) fn load(&mut self, design: Design, from: &str) {
+        self.playback = None;
+        self.active = None;
+        self.history.replace(design);
+        self.view = None;
+        self.refresh();
+        self.autosave_pending = true;
+        self.info(format!("opened {from}"));
+    }
+
+    pub(crate) fn undo(&mut self) {
+        if self.history.undo() {
+            self.playback = None;
+            self.refresh();
+            self.autosave_pending = true;
+        }
+    }
+
+    pub(crate) fn redo(&mut self) {
+        if self.history.redo() {
+            self.playback = None;
+            self.refresh();
+            self.autosave_pending = true;
+        }
+    }
+
+    pub(crate) fn error(&mut self, text: impl Into<String>) {
+        self.message = Some(Message {
+            text: text.into(),
+            error: true,
+        });
+    }
+
+    pub(crate) fn info(&mut self, text: impl Into<String>) {
+        self.message = Some(Message {
+            text: text.into(),
+            error: false,
+        });
+    }
+
+    /// Opens a design from document text; on failure the current design stays.
+    pub(crate) fn open_json(&mut self, name: &str, bytes: &[u8]) {
+        let Ok(text) = std::str::from_utf8(bytes) else {
+            self.error(format!("{name}: not a text file"));
+            return;
+        };
+        match Design::from_json(text) {
+            Ok(d) => self.load(d, name),
+            Err(e) => self.error(format!("{name}: {}", first_line(&e))),
+        }
+    }
+
+    /// Loads the design of a `#d=` fragment when the fragment changed; a broken link
+    /// keeps the current design and says what is wrong.
+    pub(crate) fn check_fragment(&mut self) {
+        let fragment = platform::fragment();
+        if fragment == self.last_fragment {
+            return;
+        }
+        self.last_fragment = fragment.clone();
+        let Some(f) = fragment.filter(|f| f.split('&').any(|p| p.starts_with("d="))) else {
+            return;
+        };
+        match decode_share(&f) {
+            Ok(d) => self.load(d, "share link"),
+            Err(e) => self.error(first_line_of(&e.to_string())),
+        }
+    }
+
+    /// The share link of the current design.
+    pub(crate) fn share_link(&self) -> String {
+        format!(
+            "{}#{}",
+            platform::base_url(),
+            share_fragment(self.history.design())
+        )
+    }
+
+    /// Starts a new blank design with the palette's paper colour.
+    pub(crate) fn new_design(&mut self) {
+        let bg = PALETTES[self.palette].background;
+        let mut d = blank(self.new_size);
+        d.background = bg;
+        self.load(d, "a new design");
+    }
+
+    fn handle_shortcuts(&mut self, ctx: &egui::Context) {
+        use egui::{Key, KeyboardShortcut, Modifiers};
+        let redo = KeyboardShortcut::new(Modifiers::COMMAND | Modifiers::SHIFT, Key::Z);
+        let redo_y = KeyboardShortcut::new(Modifiers::COMMAND, Key::Y);
+        let undo = KeyboardShortcut::new(Modifiers::COMMAND, Key::Z);
+        let (r, u) = ctx.input_mut(|i| {
+            (
+                i.consume_shortcut(&redo) || i.consume_shortcut(&redo_y),
+                i.consume_shortcut(&undo),
+            )
+        });
+        if r {
+            self.redo();
+        } else if u {
+            self.undo();
+        }
+        // Number keys 1–7 pick the tools in panel order (when no text field has focus).
+        if !ctx.egui_wants_keyboard_input() {
+            let keys = [
+                Key::Num1,
+                Key::Num2,
+                Key::Num3,
+                Key::Num4,
+                Key::Num5,
+                Key::Num6,
+                Key::Num7,
+            ];
+            for (key, tool) in keys.into_iter().zip(ToolKind::ALL) {
+                if ctx.input(|i| i.key_pressed(key) && i.modifiers.is_none()) {
+                    self.tool = tool;
+                }
+            }
+        }
+    }
+
+    fn poll_picked_file(&mut self) {
+        let picked = self.pick.lock().ok().and_then(|mut s| s.take());
+        match picked {
+            Some(Ok((name, bytes))) => self.open_json(&name, &bytes),
+            Some(Err(e)) => self.error(e),
+            None => {}
+        }
+    }
+
+    fn advance_playback(&mut self, ctx: &egui::Context) {
+        let Some(mut p) = self.playback else { return };
+        let dt = f64::from(ctx.input(|i| i.stable_dt)).min(0.1);
+        let running = p.advance(dt, self.play_speed, self.history.design().ops.len());
+        self.playback = running.then_some(p);
+        self.refresh();
+        if running {
+            ctx.request_repaint();
+        }
+    }
+
+    fn autosave(&mut self, frame: &mut eframe::Frame) {
+        if !std::mem::take(&mut self.autosave_pending) {
+            return;
+        }
+        if let Err(e) = platform::autosave(frame, &self.history.design().to_json_compact()) {
+            self.error(e);
+        }
+    }
+
+    /// Keeps the `<body>` automation hooks current (only changed values are written).
+    fn update_hooks(&mut self) {
+        let ready = {
+            let st = self.status.lock().ok();
+            let drawn = st.as_ref().and_then(|s| {
+                s.drawn
+                    .as_ref()
+                    .map(|r| (r.design_key, r.pending.is_none()))
+            });
+            self.gpu
+                && self.active.is_none()
+                && self.playback.is_none()
+                && drawn == Some((self.key, true))
+        };
+        let error = self
+            .message
+            .as_ref()
+            .filter(|m| m.error)
+            .map(|m| m.text.clone());
+        let view = self
+            .sheet_on_page
+            .map(|[x, y, s]| format!("{x:.3},{y:.3},{s:.9}"));
+        let frame_ms = (!self.frame_times.is_empty()).then(|| {
+            format!(
+                "{:.2}",
+                1000.0 * self.frame_times.iter().sum::<f64>() / self.frame_times.len() as f64
+            )
+        });
+        let wanted: Vec<(&'static str, Option<String>)> = vec![
+            ("data-ready", ready.then(|| "1".to_owned())),
+            ("data-backend", Some(self.backend.clone())),
+            ("data-ops", Some(self.shown.ops.len().to_string())),
+            ("data-error", error),
+            ("data-view", view),
+            ("data-frame-ms", frame_ms),
+        ];
+        for (name, value) in &wanted {
+            if !self.hooks.contains(&(*name, value.clone())) {
+                platform::set_body_attribute(name, value.as_deref());
+            }
+        }
+        self.hooks = wanted;
+    }
+}
+
+impl eframe::App for MarblingApp {
+    fn ui(&mut self, ui: &mut egui::Ui, frame: &mut eframe::Frame) {
+        let ctx = ui.ctx().clone();
+        // Mean interval of the last 60 frames, for the `data-frame-ms` hook.
+        let dt = f64::from(ctx.input(|i| i.unstable_dt));
+        if self.frame_times.len() == 60 {
+            self.frame_times.pop_front();
+        }
+        self.frame_times.push_back(dt);
+        self.poll_picked_file();
+        self.check_fragment();
+        self.handle_shortcuts(&ctx);
+        self.advance_playback(&ctx);
+        egui::Panel::left("marbling_tools")
+            .resizable(true)
+            .default_size(270.0)
+            .show(ui, |ui| {
+                egui::ScrollArea::vertical().show(ui, |ui| self.side_panel(ui, frame));
+            });
+        egui::Panel::bottom("marbling_status").show(ui, |ui| self.status_bar(ui));
+        egui::CentralPanel::default().show(ui, |ui| self.canvas(ui, frame));
+        if let Some(e) = self.status.lock().ok().and_then(|s| s.error.clone())
+            && self.message.as_ref().is_none_or(|m| m.text != e)
+        {
+            self.error(e);
+        }
+        self.autosave(frame);
+        self.update_hooks();
+    }
+}
+
+/// The name automation and users see for a wgpu backend.
+fn backend_name(b: wgpu::Backend) -> String {
+    match b {
+        wgpu::Backend::BrowserWebGpu => "webgpu".to_owned(),
+        wgpu::Backend::Gl if cfg!(target_arch = "wasm32") => "webgl2".to_owned(),
+        other => other.to_str().to_owned(),
+    }
+}
+
+/// A blank design of the given size.
+pub(crate) fn blank(size: [u32; 2]) -> Design {
+    Design::new(size[0], size[1], Rgb8::new(0xf4, 0xec, 0xd8))
+}
+
+/// The first line of an error (the status bar is one line; the count of the rest is noted).
+pub(crate) fn first_line(e: &DesignError) -> String {
+    first_line_of(&e.to_string())
+}
+
+fn first_line_of(s: &str) -> String {
+    let mut lines = s.lines();
+    let first = lines.next().unwrap_or_default().to_owned();
+    let more = lines.count();
+    if more > 0 {
+        format!("{first} (and {more} more)")
+    } else {
+        first
+    }
+}

@@ -1,0 +1,236 @@
+//! The canvas: the exactly rendered design, pan and zoom, the tools' gestures and
+//! their footprints.
+
+use crate::app::{ActiveGesture, MarblingApp};
+use crate::canvas_gpu::{CanvasCallback, CanvasGpu, FrameRequest};
+use crate::overlay;
+use crate::tools::{Gesture, ops_for};
+use crate::view::ViewState;
+use eframe::egui_wgpu;
+use egui::{Color32, PointerButton, Pos2, Rect, Sense, Vec2};
+use marbling_core::{Op, Point};
+use std::sync::Arc;
+
+impl MarblingApp {
+    /// Draws the canvas and handles its input.
+    pub(crate) fn canvas(&mut self, ui: &mut egui::Ui, frame: &mut eframe::Frame) {
+        let (rect, response) = ui.allocate_exact_size(ui.available_size(), Sense::click_and_drag());
+        let painter = ui.painter_at(rect);
+        painter.rect_filled(rect, 0.0, Color32::from_gray(48));
+        let size = [f64::from(rect.width()), f64::from(rect.height())];
+        let ppp = f64::from(ui.ctx().pixels_per_point());
+        let view = *self
+            .view
+            .get_or_insert_with(|| ViewState::fit(&self.shown, size).snapped(ppp));
+        let pointer = response.hover_pos();
+        let local = |p: Pos2| [f64::from(p.x - rect.min.x), f64::from(p.y - rect.min.y)];
+
+        self.navigate(ui, &response, rect);
+        let view = self.view.unwrap_or(view);
+        self.drive_tool(ui, &response, rect, &view);
+
+        // The design's rectangle on screen, clipped to the canvas.
+        let tl = view.to_screen(Point::ZERO);
+        let br = view.to_screen(Point::new(
+            f64::from(self.shown.width),
+            f64::from(self.shown.height),
+        ));
+        let sheet = Rect::from_min_max(
+            rect.min + Vec2::new(tl[0] as f32, tl[1] as f32),
+            rect.min + Vec2::new(br[0] as f32, br[1] as f32),
+        );
+        if self.gpu {
+            self.paint_design(ui, frame, rect, sheet, &view);
+        } else {
+            painter.text(
+                rect.center(),
+                egui::Align2::CENTER_CENTER,
+                "No GPU renderer available",
+                egui::FontId::proportional(18.0),
+                Color32::WHITE,
+            );
+        }
+        painter.rect_stroke(
+            sheet,
+            0.0,
+            egui::Stroke::new(1.0, Color32::from_gray(20)),
+            egui::StrokeKind::Outside,
+        );
+        let design_pointer = pointer.map(|p| view.to_design(local(p)));
+        // For automation: the sheet's top-left in CSS/physical pixels of the page, and
+        // physical pixels per design pixel.
+        self.sheet_on_page = Some([
+            f64::from(rect.min.x) * ppp + tl[0] * ppp,
+            f64::from(rect.min.y) * ppp + tl[1] * ppp,
+            view.zoom * ppp,
+        ]);
+        overlay::draw(&painter, rect, &view, self, design_pointer);
+    }
+
+    /// Pan (middle drag, space + drag, two fingers) and zoom (wheel, pinch).
+    fn navigate(&mut self, ui: &egui::Ui, response: &egui::Response, rect: Rect) {
+        let Some(view) = &mut self.view else { return };
+        let space = ui.input(|i| i.key_down(egui::Key::Space));
+        if response.dragged_by(PointerButton::Middle)
+            || (space && response.dragged_by(PointerButton::Primary))
+        {
+            let d = response.drag_delta();
+            view.pan([f64::from(d.x), f64::from(d.y)]);
+        }
+        if let Some(touch) = ui.input(|i| i.multi_touch()) {
+            let d = touch.translation_delta;
+            view.pan([f64::from(d.x), f64::from(d.y)]);
+        }
+        if let Some(p) = response.hover_pos() {
+            let (scroll, zoom) = ui.input(|i| (i.smooth_scroll_delta.y, i.zoom_delta()));
+            let factor = f64::from(zoom) * (f64::from(scroll) * 0.002).exp();
+            if (factor - 1.0).abs() > 1e-6 {
+                view.zoom_about(
+                    factor,
+                    [f64::from(p.x - rect.min.x), f64::from(p.y - rect.min.y)],
+                );
+            }
+        }
+    }
+
+    /// Press starts a gesture, drags extend it, release commits its ops.
+    fn drive_tool(
+        &mut self,
+        ui: &egui::Ui,
+        response: &egui::Response,
+        rect: Rect,
+        view: &ViewState,
+    ) {
+        let (pressed, down, released, pos, dt, space, touches) = ui.input(|i| {
+            (
+                i.pointer.primary_pressed(),
+                i.pointer.primary_down(),
+                i.pointer.primary_released(),
+                i.pointer.interact_pos(),
+                f64::from(i.stable_dt).min(0.1),
+                i.key_down(egui::Key::Space),
+                i.multi_touch().is_some(),
+            )
+        });
+        let to_design =
+            |p: Pos2| view.to_design([f64::from(p.x - rect.min.x), f64::from(p.y - rect.min.y)]);
+        if touches || space {
+            self.active = None;
+            return;
+        }
+        if pressed
+            && response.hovered()
+            && let Some(p) = pos
+        {
+            self.playback = None;
+            self.active = Some(ActiveGesture {
+                tool: self.tool,
+                gesture: Gesture::new(to_design(p)),
+                seed: self.next_seed,
+            });
+            self.next_seed += 1;
+        }
+        if let Some(active) = &mut self.active {
+            if down {
+                if let Some(p) = pos.map(to_design)
+                    && active.gesture.end() != p
+                {
+                    active.gesture.path.push(p);
+                }
+                active.gesture.held_seconds += dt;
+                ui.ctx().request_repaint();
+            }
+            if released || !down {
+                let done = self.active.take();
+                if let Some(a) = done {
+                    let ops = ops_for(a.tool, &self.settings, &a.gesture, self.ink, a.seed);
+                    self.commit(ops);
+                }
+            }
+        }
+    }
+
+    /// The ops the current gesture would add if released now.
+    pub(crate) fn pending_ops(&self) -> Vec<Op> {
+        match &self.active {
+            Some(a) => ops_for(a.tool, &self.settings, &a.gesture, self.ink, a.seed),
+            None => Vec::new(),
+        }
+    }
+
+    /// Asks the GPU for the frame (exact, or live preview while dragging) and shows it.
+    fn paint_design(
+        &mut self,
+        ui: &egui::Ui,
+        frame: &mut eframe::Frame,
+        rect: Rect,
+        sheet: Rect,
+        view: &ViewState,
+    ) {
+        let Some(rs) = frame.wgpu_render_state() else {
+            return;
+        };
+        let ppp = f64::from(ui.ctx().pixels_per_point());
+        let size = [
+            ((f64::from(rect.width()) * ppp).round() as u32).max(1),
+            ((f64::from(rect.height()) * ppp).round() as u32).max(1),
+        ];
+        let texture = {
+            let mut renderer = rs.renderer.write();
+            let Some(mut gpu) = renderer.callback_resources.remove::<CanvasGpu>() else {
+                return;
+            };
+            let id = gpu.texture_for(&rs.device, &mut renderer, size);
+            renderer.callback_resources.insert(gpu);
+            id
+        };
+        let pending = self.pending_ops();
+        let (design, design_key, single) = match pending.as_slice() {
+            [] => (self.shown.clone(), self.key, None),
+            [op] if !matches!(op, Op::Spray(_)) => (self.shown.clone(), self.key, Some(*op)),
+            many => {
+                // Several ops at once (spray, a rake of separate tines): exact render of
+                // the design with them appended.
+                let mut d = (*self.shown).clone();
+                d.ops.extend_from_slice(many);
+                (
+                    Arc::new(d),
+                    self.key
+                        .wrapping_mul(1_000_003)
+                        .wrapping_add(many.len() as u64 + (1 << 40)),
+                    None,
+                )
+            }
+        };
+        let request = FrameRequest {
+            design_key,
+            size,
+            scale: view.zoom * ppp,
+            origin: [view.origin.x, view.origin.y],
+            antialias: self.antialias,
+            pending: single,
+        };
+        let callback = CanvasCallback {
+            design,
+            request,
+            status: self.status.clone(),
+        };
+        ui.painter()
+            .add(egui_wgpu::Callback::new_paint_callback(rect, callback));
+        // Show only the sheet's part of the texture: uv = position within the canvas.
+        let visible = sheet.intersect(rect);
+        if visible.is_positive() {
+            let uv = Rect::from_min_max(
+                Pos2::new(
+                    (visible.min.x - rect.min.x) / rect.width(),
+                    (visible.min.y - rect.min.y) / rect.height(),
+                ),
+                Pos2::new(
+                    (visible.max.x - rect.min.x) / rect.width(),
+                    (visible.max.y - rect.min.y) / rect.height(),
+                ),
+            );
+            ui.painter().image(texture, visible, uv, Color32::WHITE);
+        }
+    }
+}

@@ -1,0 +1,221 @@
+//! The canvas's GPU side: the exact render (or, while a tool is dragged, the live
+//! preview) is drawn into an offscreen texture only when the design or the view changes;
+//! egui then shows that texture like any image, so hovering never re-walks the ops.
+
+use eframe::egui_wgpu;
+use marbling_core::{Antialias, Design, Op};
+use marbling_gpu::{
+    ExactRenderer, PreparedDesign, PreviewCache, PreviewRenderer, RenderTarget, View,
+};
+use std::sync::{Arc, Mutex};
+
+/// The canvas texture's format (what egui-wgpu expects of native textures); the renderer
+/// sRGB-encodes into it itself, exactly as the CPU reference does.
+pub const CANVAS_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8Unorm;
+
+/// What the next canvas frame must show.
+#[derive(Clone, Debug, PartialEq)]
+pub struct FrameRequest {
+    /// Changes whenever the committed (shown) design changes.
+    pub design_key: u64,
+    /// Texture size in physical pixels.
+    pub size: [u32; 2],
+    /// Physical pixels per design pixel.
+    pub scale: f64,
+    /// Design point at the texture's top-left corner.
+    pub origin: [f64; 2],
+    /// Antialiasing of exact frames.
+    pub antialias: Antialias,
+    /// The op being dragged, drawn with the live preview; `None` for the exact render.
+    pub pending: Option<Op>,
+}
+
+/// What the GPU side reports back to the UI (shared with the paint callback).
+#[derive(Debug, Default)]
+pub struct CanvasStatus {
+    /// The request whose frame is in the texture.
+    pub drawn: Option<FrameRequest>,
+    /// The last GPU-side error (e.g. more ops than the device's texture can hold).
+    pub error: Option<String>,
+}
+
+/// GPU resources kept in egui-wgpu's callback resources between frames.
+pub struct CanvasGpu {
+    exact: ExactRenderer,
+    preview: PreviewRenderer,
+    target: Option<RenderTarget>,
+    texture_id: Option<egui::TextureId>,
+    prepared: Option<(u64, PreparedDesign)>,
+    cache: Option<(u64, PreviewCache)>,
+}
+
+impl CanvasGpu {
+    /// Builds the pipelines for `device`.
+    pub fn new(device: &wgpu::Device) -> Self {
+        Self {
+            exact: ExactRenderer::new(device, CANVAS_FORMAT),
+            preview: PreviewRenderer::new(device, CANVAS_FORMAT),
+            target: None,
+            texture_id: None,
+            prepared: None,
+            cache: None,
+        }
+    }
+
+    /// The egui texture showing the canvas, (re)created at `size` physical pixels.
+    pub fn texture_for(
+        &mut self,
+        device: &wgpu::Device,
+        renderer: &mut egui_wgpu::Renderer,
+        size: [u32; 2],
+    ) -> egui::TextureId {
+        let fits = self
+            .target
+            .as_ref()
+            .is_some_and(|t| [t.width, t.height] == size);
+        match (fits, self.texture_id) {
+            (true, Some(id)) => id,
+            (_, old) => {
+                let target = RenderTarget::new(device, size[0], size[1], CANVAS_FORMAT);
+                let id = match old {
+                    Some(id) => {
+                        renderer.update_egui_texture_from_wgpu_texture(
+                            device,
+                            &target.view,
+                            wgpu::FilterMode::Nearest,
+                            id,
+                        );
+                        id
+                    }
+                    None => renderer.register_native_texture(
+                        device,
+                        &target.view,
+                        wgpu::FilterMode::Nearest,
+                    ),
+                };
+                self.texture_id = Some(id);
+                self.target = Some(target);
+                id
+            }
+        }
+    }
+
+    /// Draws `req` into the canvas texture, recording into `encoder`.
+    fn draw(
+        &mut self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        encoder: &mut wgpu::CommandEncoder,
+        design: &Design,
+        req: &FrameRequest,
+    ) -> Result<(), String> {
+        let Some(target) = &self.target else {
+            return Ok(());
+        };
+        if [target.width, target.height] != req.size {
+            return Ok(());
+        }
+        if self
+            .prepared
+            .as_ref()
+            .is_none_or(|(k, _)| *k != req.design_key)
+        {
+            self.prepared = None;
+            let prepared = self
+                .exact
+                .prepare(device, queue, design)
+                .map_err(|e| e.to_string())?;
+            self.prepared = Some((req.design_key, prepared));
+        }
+        match &req.pending {
+            None => {
+                let Some((_, prepared)) = &mut self.prepared else {
+                    return Ok(());
+                };
+                let offset = [req.origin[0] * req.scale, req.origin[1] * req.scale];
+                prepared.set_view(
+                    queue,
+                    &View {
+                        scale: req.scale,
+                        offset,
+                        antialias: req.antialias,
+                    },
+                );
+                let mut pass = target.begin_pass(encoder);
+                self.exact.draw(&mut pass, prepared);
+            }
+            Some(op) => {
+                let stale = self
+                    .cache
+                    .as_ref()
+                    .is_none_or(|(k, c)| *k != req.design_key || !c.covers(req.scale));
+                if stale {
+                    self.cache = None;
+                    let cache = self
+                        .preview
+                        .build_cache(device, queue, design, req.scale, req.antialias)
+                        .map_err(|e| e.to_string())?;
+                    self.cache = Some((req.design_key, cache));
+                }
+                let Some((_, cache)) = &mut self.cache else {
+                    return Ok(());
+                };
+                cache.set_frame(queue, Some(op), req.origin, req.scale, req.antialias);
+                let mut pass = target.begin_pass(encoder);
+                self.preview.draw(&mut pass, cache);
+            }
+        }
+        Ok(())
+    }
+}
+
+/// The per-frame paint callback: renders into the canvas texture when the request
+/// differs from what is drawn there.
+pub struct CanvasCallback {
+    /// The committed design shown (without the pending op).
+    pub design: Arc<Design>,
+    /// What to draw.
+    pub request: FrameRequest,
+    /// Where the outcome is reported.
+    pub status: Arc<Mutex<CanvasStatus>>,
+}
+
+impl egui_wgpu::CallbackTrait for CanvasCallback {
+    fn prepare(
+        &self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        _screen: &egui_wgpu::ScreenDescriptor,
+        encoder: &mut wgpu::CommandEncoder,
+        resources: &mut egui_wgpu::CallbackResources,
+    ) -> Vec<wgpu::CommandBuffer> {
+        let Ok(mut status) = self.status.lock() else {
+            return Vec::new();
+        };
+        if status.drawn.as_ref() == Some(&self.request) {
+            return Vec::new();
+        }
+        let Some(gpu) = resources.get_mut::<CanvasGpu>() else {
+            return Vec::new();
+        };
+        match gpu.draw(device, queue, encoder, &self.design, &self.request) {
+            Ok(()) => {
+                status.drawn = Some(self.request.clone());
+                status.error = None;
+            }
+            Err(e) => {
+                status.drawn = Some(self.request.clone());
+                status.error = Some(e);
+            }
+        }
+        Vec::new()
+    }
+
+    fn paint(
+        &self,
+        _info: egui::PaintCallbackInfo,
+        _pass: &mut wgpu::RenderPass<'static>,
+        _resources: &egui_wgpu::CallbackResources,
+    ) {
+    }
+}

@@ -1,0 +1,22 @@
+//! The marbling playground: an eframe app (native and wasm32, WebGPU or WebGL2) whose
+//! canvas is drawn exactly by the WGSL renderer, with the editing model it drives: the
+//! history of operations with undo/redo, the tools that turn pointer gestures into
+//! operations, palettes, share links, autosave and the example gallery.
+
+mod app;
+mod canvas;
+pub mod canvas_gpu;
+pub mod gallery;
+pub mod history;
+mod overlay;
+pub mod palettes;
+mod panel;
+pub mod platform;
+pub mod playback;
+pub mod tools;
+pub mod view;
+
+pub use app::{MarblingApp, Message};
+pub use history::History;
+pub use palettes::{PALETTES, Palette};
+pub use tools::{Gesture, ToolKind, ToolSettings, ops_for};

@@ -1,0 +1,143 @@
+//! Tool footprints drawn over the canvas: where a click or drag will act, before and
+//! while it happens.
+
+use crate::app::MarblingApp;
+use crate::tools::ToolKind;
+use crate::view::ViewState;
+use egui::{Color32, Painter, Pos2, Rect, Shape, Stroke};
+use marbling_core::{Point, Vec2};
+
+const LIGHT: Color32 = Color32::from_rgba_premultiplied(255, 255, 255, 220);
+const DARK: Color32 = Color32::from_rgba_premultiplied(0, 0, 0, 160);
+
+fn screen(rect: Rect, view: &ViewState, p: Point) -> Pos2 {
+    let s = view.to_screen(p);
+    rect.min + egui::vec2(s[0] as f32, s[1] as f32)
+}
+
+/// A line visible on light and dark inks alike.
+fn line(painter: &Painter, a: Pos2, b: Pos2) {
+    painter.line_segment([a, b], Stroke::new(3.0, DARK));
+    painter.line_segment([a, b], Stroke::new(1.2, LIGHT));
+}
+
+fn circle(painter: &Painter, c: Pos2, r: f32) {
+    painter.circle_stroke(c, r, Stroke::new(3.0, DARK));
+    painter.circle_stroke(c, r, Stroke::new(1.2, LIGHT));
+}
+
+fn polyline(painter: &Painter, pts: Vec<Pos2>) {
+    painter.add(Shape::line(pts.clone(), Stroke::new(3.0, DARK)));
+    painter.add(Shape::line(pts, Stroke::new(1.2, LIGHT)));
+}
+
+/// Draws the current tool's footprint: the active gesture's, or at the pointer.
+pub fn draw(
+    painter: &Painter,
+    rect: Rect,
+    view: &ViewState,
+    app: &MarblingApp,
+    pointer: Option<Point>,
+) {
+    let s = &app.settings;
+    let (tool, a, b, held) = match &app.active {
+        Some(g) => (
+            g.tool,
+            g.gesture.start,
+            g.gesture.end(),
+            g.gesture.held_seconds,
+        ),
+        None => match pointer {
+            Some(p) => (app.tool, p, p, 0.0),
+            None => return,
+        },
+    };
+    let z = view.zoom as f32;
+    let at = |p: Point| screen(rect, view, p);
+    let dragging = app.active.is_some();
+    let drag = b - a;
+    // Direction of motion: the drag, or (hovering) to the right.
+    let m = if drag.hypot() >= 1.0 {
+        drag.normalize()
+    } else {
+        Vec2::new(1.0, 0.0)
+    };
+    let n = Vec2::new(-m.y, m.x);
+    let reach = f64::from(rect.width().hypot(rect.height())) / view.zoom;
+    match tool {
+        ToolKind::Drop => {
+            let r =
+                (s.drop_radius + s.drop_growth * held).min(s.drop_max_radius.max(s.drop_radius));
+            circle(painter, at(a), r as f32 * z);
+        }
+        ToolKind::Spray => circle(painter, at(b), s.spray_spread as f32 * z),
+        ToolKind::Tine => {
+            line(painter, at(a - m * reach), at(a + m * reach));
+            if dragging {
+                arrow(painter, at(a), at(b));
+            }
+        }
+        ToolKind::Rake => {
+            let offsets: Vec<f64> = if s.rake_tines == 0 {
+                let k = ((reach / s.rake_spacing).ceil() as i64).min(300);
+                (-k..=k).map(|i| i as f64 * s.rake_spacing).collect()
+            } else {
+                let half = f64::from(s.rake_tines - 1) / 2.0;
+                (0..s.rake_tines)
+                    .map(|i| (f64::from(i) - half) * s.rake_spacing)
+                    .collect()
+            };
+            let len = if dragging { reach } else { 20.0 / view.zoom };
+            for o in offsets {
+                let base = a + n * o;
+                line(painter, at(base - m * len), at(base + m * len));
+            }
+            if dragging {
+                arrow(painter, at(a), at(b));
+            }
+        }
+        ToolKind::Wavy => {
+            let steps = 400;
+            let pts = (0..=steps)
+                .map(|i| {
+                    let t = (f64::from(i) / f64::from(steps) * 2.0 - 1.0) * reach;
+                    let phase = std::f64::consts::TAU * t / s.wavy_wavelength + s.wavy_phase;
+                    at(a + n * t + m * (s.wavy_amplitude * phase.sin()))
+                })
+                .collect();
+            polyline(painter, pts);
+        }
+        ToolKind::Circular | ToolKind::Vortex => {
+            let r = if dragging {
+                app.active.as_ref().map_or(0.0, |g| {
+                    g.gesture
+                        .path
+                        .iter()
+                        .map(|p| (*p - a).hypot())
+                        .fold(0.0, f64::max)
+                })
+            } else {
+                80.0
+            };
+            circle(painter, at(a), (r as f32 * z).max(4.0));
+            if tool == ToolKind::Vortex {
+                circle(painter, at(a), (r as f32 * z * 0.5).max(2.0));
+            }
+            if dragging {
+                line(painter, at(a), at(b));
+            }
+        }
+    }
+}
+
+fn arrow(painter: &Painter, from: Pos2, to: Pos2) {
+    let d = to - from;
+    if d.length() < 2.0 {
+        return;
+    }
+    line(painter, from, to);
+    let dir = d.normalized();
+    let side = egui::vec2(-dir.y, dir.x);
+    line(painter, to, to - dir * 10.0 + side * 5.0);
+    line(painter, to, to - dir * 10.0 - side * 5.0);
+}

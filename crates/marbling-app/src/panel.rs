@@ -1,0 +1,371 @@
+//! The side panel (files, tools and their parameters, inks, history, gallery) and
+//! the status bar.
+
+use crate::PALETTES;
+use crate::app::MarblingApp;
+use crate::gallery::EXAMPLES;
+use crate::platform;
+use crate::playback::Playback;
+use crate::tools::ToolKind;
+use egui::{Color32, RichText, Slider};
+use marbling_core::{Antialias, Rgb8};
+
+fn color32(c: Rgb8) -> Color32 {
+    Color32::from_rgb(c.r, c.g, c.b)
+}
+
+impl MarblingApp {
+    pub(crate) fn side_panel(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
+        ui.heading("Marbling");
+        self.file_section(ui);
+        ui.separator();
+        self.tool_section(ui);
+        ui.separator();
+        self.ink_section(ui);
+        ui.separator();
+        self.history_section(ui);
+        ui.separator();
+        self.gallery_section(ui);
+    }
+
+    fn file_section(&mut self, ui: &mut egui::Ui) {
+        ui.horizontal_wrapped(|ui| {
+            if ui
+                .button("New")
+                .on_hover_text("A blank sheet of the size below")
+                .clicked()
+            {
+                self.new_design();
+            }
+            if ui
+                .button("Open…")
+                .on_hover_text("Open a design JSON file")
+                .clicked()
+            {
+                platform::pick_file(self.pick.clone(), ui.ctx().clone());
+            }
+            if ui.button("Save JSON").clicked() {
+                let json = self.history.design().to_json_pretty();
+                match platform::save_file("design.json", "application/json", json.as_bytes()) {
+                    Ok(()) => self.info("design saved as JSON"),
+                    Err(e) => self.error(e),
+                }
+            }
+            if ui
+                .button("Copy link")
+                .on_hover_text("A link that opens this design")
+                .clicked()
+            {
+                let link = self.share_link();
+                if let Some((_, fragment)) = link.split_once('#') {
+                    platform::set_fragment(fragment);
+                    self.last_fragment = Some(fragment.to_owned());
+                }
+                ui.ctx().copy_text(link.clone());
+                self.info(format!("link copied ({} characters)", link.len()));
+            }
+        });
+        ui.horizontal(|ui| {
+            ui.label("New sheet");
+            ui.add(
+                egui::DragValue::new(&mut self.new_size[0])
+                    .range(1..=marbling_core::MAX_SIDE)
+                    .suffix(" px"),
+            );
+            ui.label("×");
+            ui.add(
+                egui::DragValue::new(&mut self.new_size[1])
+                    .range(1..=marbling_core::MAX_SIDE)
+                    .suffix(" px"),
+            );
+        });
+    }
+
+    fn tool_section(&mut self, ui: &mut egui::Ui) {
+        ui.label(RichText::new("Tool").strong());
+        ui.horizontal_wrapped(|ui| {
+            for (i, t) in ToolKind::ALL.into_iter().enumerate() {
+                ui.selectable_value(&mut self.tool, t, t.label())
+                    .on_hover_text(format!("key {}", i + 1));
+            }
+        });
+        let s = &mut self.settings;
+        match self.tool {
+            ToolKind::Drop => {
+                ui.label("Click to drop; hold to grow.");
+                ui.add(
+                    Slider::new(&mut s.drop_radius, 1.0..=300.0)
+                        .text("radius")
+                        .logarithmic(true),
+                );
+                ui.add(Slider::new(&mut s.drop_growth, 0.0..=400.0).text("growth /s"));
+                ui.add(
+                    Slider::new(&mut s.drop_max_radius, 1.0..=2000.0)
+                        .text("max radius")
+                        .logarithmic(true),
+                );
+            }
+            ToolKind::Spray => {
+                ui.label("Drag to spray droplets.");
+                ui.add(
+                    Slider::new(&mut s.spray_density, 0.2..=20.0)
+                        .text("density /10 px")
+                        .logarithmic(true),
+                );
+                ui.add(
+                    Slider::new(&mut s.spray_min_radius, 0.2..=40.0)
+                        .text("min size")
+                        .logarithmic(true),
+                );
+                ui.add(
+                    Slider::new(&mut s.spray_max_radius, 0.2..=40.0)
+                        .text("max size")
+                        .logarithmic(true),
+                );
+                ui.add(
+                    Slider::new(&mut s.spray_spread, 1.0..=300.0)
+                        .text("spread")
+                        .logarithmic(true),
+                );
+            }
+            ToolKind::Tine => {
+                ui.label("Drag: the tine runs through the press point along the drag; longer drags pull harder.");
+                ui.add(
+                    Slider::new(&mut s.tine_lambda, 0.5..=200.0)
+                        .text("sharpness λ")
+                        .logarithmic(true),
+                );
+            }
+            ToolKind::Rake => {
+                ui.label("Drag: parallel tines along the drag.");
+                ui.add(Slider::new(&mut s.rake_tines, 0..=64).text("tines (0 = whole sheet)"));
+                ui.add(
+                    Slider::new(&mut s.rake_spacing, 2.0..=400.0)
+                        .text("spacing")
+                        .logarithmic(true),
+                );
+                ui.add(
+                    Slider::new(&mut s.rake_lambda, 0.5..=200.0)
+                        .text("sharpness λ")
+                        .logarithmic(true),
+                );
+            }
+            ToolKind::Wavy => {
+                ui.label("Drag sets the direction of the wave.");
+                ui.add(Slider::new(&mut s.wavy_amplitude, -200.0..=200.0).text("amplitude"));
+                ui.add(
+                    Slider::new(&mut s.wavy_wavelength, 4.0..=2000.0)
+                        .text("wavelength")
+                        .logarithmic(true),
+                );
+                ui.add(Slider::new(&mut s.wavy_phase, 0.0..=std::f64::consts::TAU).text("phase"));
+            }
+            ToolKind::Circular => {
+                ui.label("Press at the centre, drag around it: the radius is your reach, the turn your strength.");
+                ui.add(
+                    Slider::new(&mut s.circular_lambda, 0.5..=200.0)
+                        .text("sharpness λ")
+                        .logarithmic(true),
+                );
+            }
+            ToolKind::Vortex => {
+                ui.label("Press at the centre, drag around it to swirl.");
+                ui.add(
+                    Slider::new(&mut s.vortex_lambda, 0.5..=400.0)
+                        .text("sharpness λ")
+                        .logarithmic(true),
+                );
+            }
+        }
+        egui::ComboBox::from_label("antialiasing")
+            .selected_text(self.antialias.name())
+            .show_ui(ui, |ui| {
+                for a in Antialias::ALL {
+                    ui.selectable_value(&mut self.antialias, a, a.name());
+                }
+            });
+    }
+
+    fn ink_section(&mut self, ui: &mut egui::Ui) {
+        ui.label(RichText::new("Ink").strong());
+        let before = self.palette;
+        egui::ComboBox::from_label("palette")
+            .selected_text(PALETTES[self.palette].name)
+            .show_ui(ui, |ui| {
+                for (i, p) in PALETTES.iter().enumerate() {
+                    ui.selectable_value(&mut self.palette, i, p.name);
+                }
+            });
+        if self.palette != before {
+            self.ink = PALETTES[self.palette].inks[0];
+        }
+        ui.horizontal_wrapped(|ui| {
+            for &c in PALETTES[self.palette].inks {
+                let selected = c == self.ink;
+                let (rect, resp) =
+                    ui.allocate_exact_size(egui::vec2(24.0, 24.0), egui::Sense::click());
+                ui.painter().rect_filled(rect, 4.0, color32(c));
+                if selected {
+                    ui.painter().rect_stroke(
+                        rect,
+                        4.0,
+                        egui::Stroke::new(2.0, Color32::WHITE),
+                        egui::StrokeKind::Outside,
+                    );
+                }
+                if resp.on_hover_text(c.to_string()).clicked() {
+                    self.ink = c;
+                }
+            }
+        });
+        ui.horizontal(|ui| {
+            let mut rgb = [self.ink.r, self.ink.g, self.ink.b];
+            if egui::color_picker::color_edit_button_srgb(ui, &mut rgb).changed() {
+                self.ink = Rgb8::new(rgb[0], rgb[1], rgb[2]);
+            }
+            ui.label("ink");
+            let bg = self.history.design().background;
+            let mut rgb = [bg.r, bg.g, bg.b];
+            if egui::color_picker::color_edit_button_srgb(ui, &mut rgb).changed() {
+                self.history
+                    .set_background(Rgb8::new(rgb[0], rgb[1], rgb[2]));
+                self.refresh();
+                self.autosave_pending = true;
+            }
+            ui.label("paper");
+        });
+    }
+
+    fn history_section(&mut self, ui: &mut egui::Ui) {
+        ui.label(RichText::new("History").strong());
+        ui.horizontal(|ui| {
+            if ui
+                .add_enabled(self.history.can_undo(), egui::Button::new("Undo"))
+                .on_hover_text("Ctrl/Cmd+Z")
+                .clicked()
+            {
+                self.undo();
+            }
+            if ui
+                .add_enabled(self.history.can_redo(), egui::Button::new("Redo"))
+                .on_hover_text("Ctrl/Cmd+Shift+Z")
+                .clicked()
+            {
+                self.redo();
+            }
+            let playing = self.playback.is_some();
+            if ui
+                .add_enabled(
+                    self.history.can_undo(),
+                    egui::Button::new(if playing { "Stop" } else { "Play" }),
+                )
+                .clicked()
+            {
+                self.playback = if playing {
+                    None
+                } else {
+                    Some(Playback::start())
+                };
+                self.history.view(None);
+                self.refresh();
+            }
+        });
+        ui.add(
+            Slider::new(&mut self.play_speed, 0.5..=200.0)
+                .text("ops/s")
+                .logarithmic(true),
+        );
+        let n = self.history.design().ops.len();
+        let shown = self.history.shown_len();
+        let mut clicked = None;
+        egui::ScrollArea::vertical()
+            .max_height(180.0)
+            .id_salt("history")
+            .show_rows(ui, 18.0, n + 1, |ui, rows| {
+                for i in rows {
+                    let (label, upto) = if i == 0 {
+                        ("blank sheet".to_owned(), 0)
+                    } else {
+                        (
+                            format!("{i}. {}", self.history.design().ops[i - 1].type_name()),
+                            i,
+                        )
+                    };
+                    if ui.selectable_label(upto == shown, label).clicked() {
+                        clicked = Some(upto);
+                    }
+                }
+            });
+        if let Some(k) = clicked {
+            self.playback = None;
+            self.history.view(Some(k));
+            self.refresh();
+        }
+    }
+
+    fn gallery_section(&mut self, ui: &mut egui::Ui) {
+        ui.label(RichText::new("Gallery").strong());
+        if self.thumbnails.is_empty() {
+            for e in &EXAMPLES {
+                let Ok(img) = marbling_core::RgbaImage::from_png(e.thumbnail_png) else {
+                    continue;
+                };
+                let color = egui::ColorImage::from_rgba_unmultiplied(
+                    [img.width as usize, img.height as usize],
+                    &img.pixels,
+                );
+                self.thumbnails.push(ui.ctx().load_texture(
+                    e.name,
+                    color,
+                    egui::TextureOptions::LINEAR,
+                ));
+            }
+        }
+        let mut open = None;
+        ui.horizontal_wrapped(|ui| {
+            for (e, tex) in EXAMPLES.iter().zip(&self.thumbnails) {
+                ui.vertical(|ui| {
+                    let img = egui::Image::new(tex).fit_to_exact_size(egui::vec2(112.0, 70.0));
+                    if ui
+                        .add(egui::Button::image(img))
+                        .on_hover_text(e.name)
+                        .clicked()
+                    {
+                        open = Some(e);
+                    }
+                    ui.label(e.name);
+                });
+            }
+        });
+        if let Some(e) = open {
+            self.open_json(e.name, e.json.as_bytes());
+        }
+    }
+
+    pub(crate) fn status_bar(&mut self, ui: &mut egui::Ui) {
+        ui.horizontal(|ui| {
+            let d = &self.shown;
+            ui.label(format!(
+                "{}×{} · {} ops · {}",
+                d.width,
+                d.height,
+                d.ops.len(),
+                self.backend
+            ));
+            if let Some(v) = &self.view {
+                ui.label(format!("zoom {:.0} %", v.zoom * 100.0));
+                if ui.small_button("fit").clicked() {
+                    self.view = None;
+                }
+            }
+            if let Some(m) = &self.message {
+                let color = if m.error {
+                    Color32::from_rgb(255, 110, 110)
+                } else {
+                    ui.visuals().text_color()
+                };
+                ui.label(RichText::new(&m.text).color(color));
+            }
+        });
+    }
+}

@@ -1,0 +1,183 @@
+//! What differs between the browser and a desktop window: the address bar (share
+//! links), storage for autosave, downloads and file dialogs, and the automation hooks on
+//! `<body>`.
+
+/// A file the user picked: its name and bytes, or why it could not be read.
+pub type PickedFile = Result<(String, Vec<u8>), String>;
+
+/// Where an asynchronous file pick delivers its result.
+pub type PickSlot = std::sync::Arc<std::sync::Mutex<Option<PickedFile>>>;
+
+/// Storage key of the autosaved design.
+pub const AUTOSAVE_KEY: &str = "marbling.autosave.v1";
+
+#[cfg(target_arch = "wasm32")]
+mod imp {
+    use super::{PickSlot, PickedFile};
+    use wasm_bindgen::JsCast;
+
+    fn window() -> Option<web_sys::Window> {
+        web_sys::window()
+    }
+
+    /// The page's URL fragment without `#` (e.g. `d=…`).
+    pub fn fragment() -> Option<String> {
+        let hash = window()?.location().hash().ok()?;
+        let f = hash.strip_prefix('#').unwrap_or(&hash).to_owned();
+        (!f.is_empty()).then_some(f)
+    }
+
+    /// The address that share links start with (the page without its fragment).
+    pub fn base_url() -> String {
+        window()
+            .and_then(|w| {
+                let l = w.location();
+                Some(format!("{}{}", l.origin().ok()?, l.pathname().ok()?))
+            })
+            .unwrap_or_default()
+    }
+
+    /// Shows `fragment` in the address bar without reloading.
+    pub fn set_fragment(fragment: &str) {
+        if let Some(w) = window() {
+            let _ = w.location().set_hash(fragment);
+        }
+    }
+
+    /// The autosaved design, if any.
+    pub fn load_autosave(_storage: Option<&dyn eframe::Storage>) -> Option<String> {
+        window()?
+            .local_storage()
+            .ok()??
+            .get_item(super::AUTOSAVE_KEY)
+            .ok()?
+    }
+
+    /// Saves the design now (browser local storage, so a reload restores it).
+    pub fn autosave(_frame: &mut eframe::Frame, json: &str) -> Result<(), String> {
+        let storage = window()
+            .and_then(|w| w.local_storage().ok().flatten())
+            .ok_or("browser storage is not available")?;
+        storage
+            .set_item(super::AUTOSAVE_KEY, json)
+            .map_err(|_| "browser storage is full: the design was not autosaved".to_owned())
+    }
+
+    /// Offers `bytes` as a download named `name`.
+    pub fn save_file(name: &str, mime: &str, bytes: &[u8]) -> Result<(), String> {
+        let fail = |what: &str| format!("cannot download {name}: {what}");
+        let array = js_sys::Uint8Array::from(bytes);
+        let parts = js_sys::Array::of1(&array);
+        let props = web_sys::BlobPropertyBag::new();
+        props.set_type(mime);
+        let blob = web_sys::Blob::new_with_u8_array_sequence_and_options(&parts, &props)
+            .map_err(|_| fail("blob"))?;
+        let url =
+            web_sys::Url::create_object_url_with_blob(&blob).map_err(|_| fail("object URL"))?;
+        let document = window()
+            .and_then(|w| w.document())
+            .ok_or_else(|| fail("no document"))?;
+        let a: web_sys::HtmlAnchorElement = document
+            .create_element("a")
+            .map_err(|_| fail("anchor"))?
+            .dyn_into()
+            .map_err(|_| fail("anchor"))?;
+        a.set_href(&url);
+        a.set_download(name);
+        a.click();
+        let _ = web_sys::Url::revoke_object_url(&url);
+        Ok(())
+    }
+
+    /// Asks the user for a file; the result arrives in `slot` later.
+    pub fn pick_file(slot: PickSlot, ctx: egui::Context) {
+        wasm_bindgen_futures::spawn_local(async move {
+            let picked = rfd::AsyncFileDialog::new()
+                .add_filter("design", &["json"])
+                .pick_file()
+                .await;
+            if let Some(file) = picked {
+                let result: PickedFile = Ok((file.file_name(), file.read().await));
+                if let Ok(mut s) = slot.lock() {
+                    *s = Some(result);
+                }
+                ctx.request_repaint();
+            }
+        });
+    }
+
+    /// Sets (or with `None` removes) a `data-…` attribute on `<body>`.
+    pub fn set_body_attribute(name: &str, value: Option<&str>) {
+        let Some(body) = window().and_then(|w| w.document()).and_then(|d| d.body()) else {
+            return;
+        };
+        let _ = match value {
+            Some(v) => body.set_attribute(name, v),
+            None => body.remove_attribute(name),
+        };
+    }
+}
+
+#[cfg(not(target_arch = "wasm32"))]
+mod imp {
+    use super::PickSlot;
+
+    /// A share link given on the command line (`marbling-app 'http://…#d=…'`).
+    pub fn fragment() -> Option<String> {
+        std::env::args()
+            .nth(1)
+            .and_then(|a| a.split_once('#').map(|(_, f)| f.to_owned()))
+    }
+
+    /// The address that share links start with: the web app served by `make run`.
+    pub fn base_url() -> String {
+        "http://127.0.0.1:8080/".to_owned()
+    }
+
+    /// Desktop windows have no address bar.
+    pub fn set_fragment(_fragment: &str) {}
+
+    /// The autosaved design, if any.
+    pub fn load_autosave(storage: Option<&dyn eframe::Storage>) -> Option<String> {
+        storage?.get_string(super::AUTOSAVE_KEY)
+    }
+
+    /// Saves the design now (eframe's app storage, flushed to disk).
+    pub fn autosave(frame: &mut eframe::Frame, json: &str) -> Result<(), String> {
+        let storage = frame
+            .storage_mut()
+            .ok_or("no app storage: the design was not autosaved")?;
+        storage.set_string(super::AUTOSAVE_KEY, json.to_owned());
+        storage.flush();
+        Ok(())
+    }
+
+    /// Asks where to save `bytes` and writes them there.
+    pub fn save_file(name: &str, _mime: &str, bytes: &[u8]) -> Result<(), String> {
+        let Some(path) = rfd::FileDialog::new().set_file_name(name).save_file() else {
+            return Ok(());
+        };
+        std::fs::write(&path, bytes).map_err(|e| format!("cannot write '{}': {e}", path.display()))
+    }
+
+    /// Asks the user for a file; the result arrives in `slot` at once.
+    pub fn pick_file(slot: PickSlot, _ctx: egui::Context) {
+        let Some(path) = rfd::FileDialog::new()
+            .add_filter("design", &["json"])
+            .pick_file()
+        else {
+            return;
+        };
+        let result = std::fs::read(&path)
+            .map(|b| (path.display().to_string(), b))
+            .map_err(|e| format!("cannot read '{}': {e}", path.display()));
+        if let Ok(mut s) = slot.lock() {
+            *s = Some(result);
+        }
+    }
+
+    /// Desktop windows have no `<body>`.
+    pub fn set_body_attribute(_name: &str, _value: Option<&str>) {}
+}
+
+pub use imp::*;

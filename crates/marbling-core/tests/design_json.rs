@@ -1,0 +1,329 @@
+//! Design documents: the exact v1 shape, round trips, and one test per validation rule,
+//! each checking the message names the JSON path.
+
+use marbling_core::synth::{Mix, random_design};
+use marbling_core::{Design, DesignError, Drop, Op, Point, Rgb8, Tine, Vec2};
+
+const DESIGN_MD_EXAMPLE: &str = r##"{ "version": 1, "width": 800, "height": 600, "background": "#f3ead7",
+  "ops": [
+    {"type":"drop",     "center":[400,300], "radius":60, "color":"#1d3557"},
+    {"type":"spray",    "center":[120,80],  "radius":3,  "color":"#e63946"},
+    {"type":"tine",     "origin":[0,300], "direction":[1,0], "alpha":80, "lambda":8},
+    {"type":"rake",     "origin":[0,0],   "direction":[0,1], "spacing":40, "alpha":60, "lambda":6},
+    {"type":"wavy",     "angle":0.0, "amplitude":12, "wavelength":120, "phase":0.0},
+    {"type":"circular", "center":[400,300], "radius":150, "alpha":60, "lambda":12},
+    {"type":"vortex",   "center":[400,300], "alpha":90, "lambda":20}
+  ] }"##;
+
+/// Replaces `from` (which must occur) in the DESIGN.md example.
+fn variant(from: &str, to: &str) -> String {
+    assert!(DESIGN_MD_EXAMPLE.contains(from), "{from} not in example");
+    DESIGN_MD_EXAMPLE.replacen(from, to, 1)
+}
+
+/// The messages of an invalid document.
+fn errors(text: &str) -> Vec<String> {
+    match Design::from_json(text) {
+        Err(DesignError::Invalid(e)) => e.0.iter().map(ToString::to_string).collect(),
+        other => panic!("expected validation errors, got {other:?}"),
+    }
+}
+
+fn assert_error(text: &str, expected: &str) {
+    let errs = errors(text);
+    assert!(
+        errs.iter().any(|e| e == expected),
+        "wanted {expected:?} in {errs:#?}"
+    );
+}
+
+#[test]
+fn design_md_example_parses_with_every_op_type() {
+    let d = Design::from_json(DESIGN_MD_EXAMPLE).expect("valid");
+    assert_eq!(
+        (d.width, d.height, d.background),
+        (800, 600, Rgb8::new(0xf3, 0xea, 0xd7))
+    );
+    let types: Vec<_> = d.ops.iter().map(Op::type_name).collect();
+    assert_eq!(types, marbling_core::OP_TYPES);
+    assert_eq!(
+        d.ops[0],
+        Op::Drop(Drop {
+            center: Point::new(400.0, 300.0),
+            radius: 60.0,
+            color: Rgb8::new(0x1d, 0x35, 0x57)
+        })
+    );
+    assert_eq!(
+        d.ops[2],
+        Op::Tine(Tine {
+            origin: Point::new(0.0, 300.0),
+            direction: Vec2::new(1.0, 0.0),
+            alpha: 80.0,
+            lambda: 8.0
+        })
+    );
+}
+
+#[test]
+fn written_documents_have_the_v1_shape() {
+    let d = Design::from_json(DESIGN_MD_EXAMPLE).expect("valid");
+    let v: serde_json::Value = serde_json::from_str(&d.to_json_pretty()).expect("json");
+    let original: serde_json::Value = serde_json::from_str(DESIGN_MD_EXAMPLE).expect("json");
+    // Numerically equal field by field (the writer prints integral numbers as integers).
+    assert_eq!(v["version"], 1);
+    assert_eq!(v["background"], "#f3ead7");
+    for (a, b) in v["ops"]
+        .as_array()
+        .expect("ops")
+        .iter()
+        .zip(original["ops"].as_array().expect("ops"))
+    {
+        let (a, b) = (a.as_object().expect("op"), b.as_object().expect("op"));
+        assert_eq!(a.keys().collect::<Vec<_>>().len(), b.len());
+        for (k, bv) in b {
+            let av = &a[k];
+            match (av.as_f64(), bv.as_f64()) {
+                (Some(x), Some(y)) => assert_eq!(x, y, "{k}"),
+                _ => assert_eq!(av.to_string(), bv.to_string(), "{k}"),
+            }
+        }
+    }
+    assert_eq!(d.to_json_compact(), d.to_value().to_string());
+}
+
+#[test]
+fn parse_write_parse_round_trips_random_designs() {
+    for seed in 0..50 {
+        let d = random_design(seed, 640, 480, 200, Mix::Mixed);
+        for text in [d.to_json_pretty(), d.to_json_compact()] {
+            let back = Design::from_json(&text).expect("own output parses");
+            let first = back.ops.iter().zip(&d.ops).position(|(a, b)| a != b);
+            assert_eq!(
+                first,
+                None,
+                "seed {seed}: {:?}",
+                first.map(|i| (back.ops[i], d.ops[i]))
+            );
+            assert_eq!(back, d, "seed {seed}");
+        }
+    }
+}
+
+#[test]
+fn empty_design_round_trips() {
+    let d = Design::new(1, 16384, Rgb8::new(0, 0, 0));
+    assert_eq!(Design::from_json(&d.to_json_pretty()).expect("valid"), d);
+}
+
+#[test]
+fn syntax_errors_give_line_and_column() {
+    let err =
+        Design::from_json("{\n  \"version\": 1,\n  \"width\": 80 80\n}").expect_err("bad json");
+    match err {
+        DesignError::Syntax {
+            line,
+            column,
+            ref message,
+        } => {
+            assert_eq!((line, column), (3, 15), "{message}");
+            assert!(err.to_string().starts_with("line 3, column 15: "), "{err}");
+        }
+        other => panic!("{other:?}"),
+    }
+}
+
+#[test]
+fn huge_numbers_are_refused_by_the_parser() {
+    let err =
+        Design::from_json(&variant("\"radius\":60", "\"radius\":1e999")).expect_err("overflow");
+    assert!(matches!(err, DesignError::Syntax { .. }), "{err:?}");
+}
+
+#[test]
+fn radius_must_be_positive() {
+    assert_error(
+        &variant("\"radius\":60", "\"radius\":-3"),
+        "ops[0].radius: must be > 0, got -3",
+    );
+    assert_error(
+        &variant("\"radius\":3,", "\"radius\":0,"),
+        "ops[1].radius: must be > 0, got 0",
+    );
+    assert_error(
+        &variant("\"radius\":150", "\"radius\":-1.5"),
+        "ops[5].radius: must be > 0, got -1.5",
+    );
+}
+
+#[test]
+fn lambda_must_be_positive() {
+    assert_error(
+        &variant("\"lambda\":8", "\"lambda\":0"),
+        "ops[2].lambda: must be > 0, got 0",
+    );
+    assert_error(
+        &variant("\"lambda\":20", "\"lambda\":-20"),
+        "ops[6].lambda: must be > 0, got -20",
+    );
+}
+
+#[test]
+fn spacing_must_be_positive() {
+    assert_error(
+        &variant("\"spacing\":40", "\"spacing\":0"),
+        "ops[3].spacing: must be > 0, got 0",
+    );
+}
+
+#[test]
+fn wavelength_must_be_positive() {
+    assert_error(
+        &variant("\"wavelength\":120", "\"wavelength\":-120"),
+        "ops[4].wavelength: must be > 0, got -120",
+    );
+}
+
+#[test]
+fn direction_must_be_non_zero() {
+    assert_error(
+        &variant("\"direction\":[1,0]", "\"direction\":[0,0]"),
+        "ops[2].direction: must be non-zero, got [0, 0]",
+    );
+}
+
+#[test]
+fn numbers_must_be_finite() {
+    // JSON cannot spell NaN or infinity; designs built in code can, and validate() says where.
+    let mut d = Design::from_json(DESIGN_MD_EXAMPLE).expect("valid");
+    if let Op::Drop(drop) = &mut d.ops[0] {
+        drop.center.y = f64::NAN;
+        drop.radius = f64::INFINITY;
+    }
+    let errs: Vec<String> = d
+        .validate()
+        .expect_err("invalid")
+        .0
+        .iter()
+        .map(ToString::to_string)
+        .collect();
+    assert_eq!(
+        errs,
+        [
+            "ops[0].center[1]: must be a finite number, got NaN",
+            "ops[0].radius: must be a finite number, got inf"
+        ]
+    );
+}
+
+#[test]
+fn width_and_height_are_bounded_integers() {
+    assert_error(
+        &variant("\"width\": 800", "\"width\": 0"),
+        "width: must be in 1..=16384, got 0",
+    );
+    assert_error(
+        &variant("\"height\": 600", "\"height\": 16385"),
+        "height: must be in 1..=16384, got 16385",
+    );
+    assert_error(
+        &variant("\"width\": 800", "\"width\": 800.5"),
+        "width: must be an integer in 1..=16384, got 800.5",
+    );
+    assert_error(
+        &variant("\"width\": 800", "\"width\": -2"),
+        "width: must be an integer in 1..=16384, got -2",
+    );
+}
+
+#[test]
+fn op_count_is_bounded() {
+    let op = r##"{"type":"spray","center":[1,1],"radius":1,"color":"#000000"}"##;
+    let ops = vec![op; 100_001].join(",");
+    let text =
+        format!(r##"{{"version":1,"width":10,"height":10,"background":"#ffffff","ops":[{ops}]}}"##);
+    assert_eq!(
+        errors(&text),
+        ["ops: at most 100000 ops are allowed, got 100001"]
+    );
+}
+
+#[test]
+fn colours_must_be_hex() {
+    assert_error(
+        &variant("\"color\":\"#1d3557\"", "\"color\":\"navy\""),
+        "ops[0].color: must be a colour \"#rrggbb\", got \"navy\"",
+    );
+    assert_error(
+        &variant("\"background\": \"#f3ead7\"", "\"background\": \"#f3ead\""),
+        "background: must be a colour \"#rrggbb\", got \"#f3ead\"",
+    );
+    assert_error(
+        &variant("\"color\":\"#e63946\"", "\"color\":16777215"),
+        "ops[1].color: must be a colour \"#rrggbb\", got 16777215",
+    );
+}
+
+#[test]
+fn unknown_fields_are_rejected() {
+    assert_error(
+        &variant("\"radius\":60,", "\"radius\":60, \"colour\":\"#000000\","),
+        "ops[0].colour: unknown field; expected one of type, center, radius, color",
+    );
+    assert_error(
+        &variant("\"version\": 1,", "\"version\": 1, \"title\": \"x\","),
+        "title: unknown field; expected one of version, width, height, background, ops",
+    );
+}
+
+#[test]
+fn unknown_op_types_are_rejected() {
+    assert_error(
+        &variant("\"type\":\"vortex\"", "\"type\":\"whirl\""),
+        "ops[6].type: unknown op type \"whirl\"; expected one of drop, spray, tine, rake, wavy, circular, vortex",
+    );
+}
+
+#[test]
+fn unsupported_versions_name_the_supported_ones() {
+    assert_eq!(
+        errors(&variant("\"version\": 1", "\"version\": 7")),
+        ["version: unsupported version 7; this build reads version 1"]
+    );
+}
+
+#[test]
+fn missing_fields_and_wrong_types_are_named() {
+    assert_error(&variant("\"radius\":60, ", ""), "ops[0].radius: missing");
+    assert_error(
+        &variant("\"alpha\":80", "\"alpha\":\"80\""),
+        "ops[2].alpha: must be a number, got a string",
+    );
+    assert_error(
+        &variant("\"center\":[400,300]", "\"center\":[400]"),
+        "ops[0].center: must be an array [x, y] of two numbers, got [400]",
+    );
+    assert_error(
+        &variant("\"origin\":[0,300]", "\"origin\":[0,null]"),
+        "ops[2].origin[1]: must be a number, got null",
+    );
+    assert_eq!(
+        errors("[1, 2]"),
+        [": must be an object, got an array".to_owned()]
+    );
+}
+
+#[test]
+fn every_error_is_reported_at_once() {
+    let text =
+        variant("\"radius\":60", "\"radius\":-3").replacen("\"lambda\":8", "\"lambda\":0", 1);
+    let errs = errors(&text.replacen("\"spacing\":40", "\"spacing\":-1", 1));
+    assert_eq!(
+        errs,
+        [
+            "ops[0].radius: must be > 0, got -3",
+            "ops[2].lambda: must be > 0, got 0",
+            "ops[3].spacing: must be > 0, got -1"
+        ]
+    );
+}

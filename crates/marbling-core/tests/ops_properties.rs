@@ -1,0 +1,258 @@
+//! Every op is a homeomorphism: inverse ∘ forward = identity (1e-9 relative), and it
+//! preserves area: the forward map's Jacobian determinant is 1 (within 1e-6).
+
+use marbling_core::{Back, Circular, Drop, Op, Point, Rake, Rgb8, Spray, Tine, Vec2, Vortex, Wavy};
+use proptest::prelude::*;
+
+const INK: Rgb8 = Rgb8::new(10, 20, 30);
+
+fn coord() -> impl Strategy<Value = f64> {
+    -500.0..1500.0f64
+}
+
+fn point() -> impl Strategy<Value = Point> {
+    (coord(), coord()).prop_map(|(x, y)| Point::new(x, y))
+}
+
+fn direction() -> impl Strategy<Value = Vec2> {
+    (0.0..std::f64::consts::TAU, 0.1..10.0f64).prop_map(|(a, len)| Vec2::from_angle(a) * len)
+}
+
+fn op() -> impl Strategy<Value = Op> {
+    let alpha = -200.0..200.0f64;
+    let lambda = 0.5..100.0f64;
+    prop_oneof![
+        (point(), 1.0..200.0f64).prop_map(|(center, radius)| Op::Drop(Drop {
+            center,
+            radius,
+            color: INK
+        })),
+        (point(), 0.5..20.0f64).prop_map(|(center, radius)| Op::Spray(Spray {
+            center,
+            radius,
+            color: INK
+        })),
+        (point(), direction(), alpha.clone(), lambda.clone()).prop_map(
+            |(origin, direction, alpha, lambda)| Op::Tine(Tine {
+                origin,
+                direction,
+                alpha,
+                lambda
+            })
+        ),
+        (
+            point(),
+            direction(),
+            2.0..200.0f64,
+            alpha.clone(),
+            lambda.clone()
+        )
+            .prop_map(
+                |(origin, direction, spacing, alpha, lambda)| Op::Rake(Rake {
+                    origin,
+                    direction,
+                    spacing,
+                    alpha,
+                    lambda
+                })
+            ),
+        (
+            0.0..std::f64::consts::TAU,
+            -60.0..60.0f64,
+            5.0..500.0f64,
+            -10.0..10.0f64
+        )
+            .prop_map(|(angle, amplitude, wavelength, phase)| Op::Wavy(Wavy {
+                angle,
+                amplitude,
+                wavelength,
+                phase
+            })),
+        (point(), 1.0..400.0f64, alpha.clone(), lambda.clone()).prop_map(
+            |(center, radius, alpha, lambda)| Op::Circular(Circular {
+                center,
+                radius,
+                alpha,
+                lambda
+            })
+        ),
+        (point(), alpha, lambda).prop_map(|(center, alpha, lambda)| Op::Vortex(Vortex {
+            center,
+            alpha,
+            lambda
+        })),
+    ]
+}
+
+/// Points where an op is hard to invert: near its centre (`eps` × its size away), on its
+/// tine lines. Closer than about √ε·r to a drop centre, f64 cannot tell the forward image
+/// from the drop's circle itself (|P' − C|² = r² + ρ²), so that is where "near" stops.
+fn tricky_point(op: &Op, t: f64, eps: f64) -> Point {
+    match op {
+        Op::Drop(Drop { center, radius, .. }) | Op::Spray(Spray { center, radius, .. }) => {
+            *center + Vec2::from_angle(t * 7.0) * (eps * radius)
+        }
+        Op::Circular(Circular { center, lambda, .. })
+        | Op::Vortex(Vortex { center, lambda, .. }) => {
+            *center + Vec2::from_angle(t * 7.0) * (eps * lambda)
+        }
+        Op::Tine(Tine {
+            origin, direction, ..
+        }) => *origin + direction.normalize() * (t * 300.0),
+        Op::Rake(r) => {
+            let m = r.direction.normalize();
+            r.origin + m * (t * 300.0) + Vec2::new(-m.y, m.x) * (r.spacing * (t * 10.0).round())
+        }
+        Op::Wavy(_) => Point::new(t * 100.0, eps),
+    }
+}
+
+fn round_trip(op: &Op, p: Point) -> Result<(), TestCaseError> {
+    let q = op.forward(p);
+    let back = match op.inverse(q) {
+        Back::Moved(b) => b,
+        // A spray covers but does not move: the forward image is the point itself.
+        Back::Ink(_) if matches!(op, Op::Spray(_)) => return Ok(()),
+        Back::Ink(_) => {
+            return Err(TestCaseError::fail(format!(
+                "{op:?}: forward({p:?}) = {q:?} lands in ink"
+            )));
+        }
+    };
+    let err = (back - p).hypot() / p.to_vec2().hypot().max(1.0);
+    prop_assert!(
+        err <= 1e-9,
+        "{op:?}: {p:?} -> {q:?} -> {back:?}, relative error {err:e}"
+    );
+    Ok(())
+}
+
+/// Forward-map Jacobian determinant by central differences.
+fn jacobian(op: &Op, p: Point, h: f64) -> f64 {
+    let fx = (op.forward(p + Vec2::new(h, 0.0)) - op.forward(p - Vec2::new(h, 0.0))) / (2.0 * h);
+    let fy = (op.forward(p + Vec2::new(0.0, h)) - op.forward(p - Vec2::new(0.0, h))) / (2.0 * h);
+    fx.x * fy.y - fx.y * fy.x
+}
+
+/// True when `p` is within `margin` of a place where the map is not smooth (centres,
+/// tine lines, rake midlines, the circular comb's strongest circle).
+fn near_singular(op: &Op, p: Point, margin: f64) -> bool {
+    let line_dist = |origin: Point, dir: Vec2| {
+        let m = dir.normalize();
+        ((p - origin).dot(Vec2::new(-m.y, m.x))).abs()
+    };
+    match op {
+        Op::Drop(d) => (p - d.center).hypot() < margin.max(1e-3 * d.radius),
+        Op::Spray(_) | Op::Wavy(_) => false,
+        Op::Tine(t) => line_dist(t.origin, t.direction) < margin,
+        Op::Rake(r) => {
+            let d = line_dist(r.origin, r.direction) % (r.spacing / 2.0);
+            d < margin || r.spacing / 2.0 - d < margin
+        }
+        Op::Circular(c) => {
+            let rho = (p - c.center).hypot();
+            rho < 1.0 || (rho - c.radius).abs() < margin
+        }
+        Op::Vortex(v) => (p - v.center).hypot() < 1.0,
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(4000))]
+
+    #[test]
+    fn inverse_undoes_forward(op in op(), p in point()) {
+        round_trip(&op, p)?;
+    }
+
+    #[test]
+    fn inverse_undoes_forward_near_centres_and_tine_lines(op in op(), t in -1.0..1.0f64, e in -5.0..1.0f64) {
+        round_trip(&op, tricky_point(&op, t, 10f64.powf(e)))?;
+    }
+
+    #[test]
+    fn forward_undoes_inverse_outside_ink(op in op(), p in point()) {
+        if let Back::Moved(q) = op.inverse(p) {
+            let again = op.forward(q);
+            let err = (again - p).hypot() / p.to_vec2().hypot().max(1.0);
+            prop_assert!(err <= 1e-9, "{op:?}: {p:?} -> {q:?} -> {again:?}");
+        }
+    }
+
+    #[test]
+    fn forward_preserves_area(op in op(), p in point()) {
+        let h = 1e-5;
+        prop_assume!(!near_singular(&op, p, 0.05));
+        let det = jacobian(&op, p, h);
+        prop_assert!((det - 1.0).abs() <= 1e-6, "{op:?} at {p:?}: det J = {det}");
+    }
+}
+
+#[test]
+fn jacobian_check_detects_a_non_area_preserving_map() {
+    // A drop's forward map with the square root left out stretches area: the same
+    // finite-difference check must see a determinant far from 1.
+    let c = Point::new(0.0, 0.0);
+    let r2: f64 = 50.0 * 50.0;
+    let f = |p: Point| c + (p - c) * (1.0 + r2 / (p - c).hypot2());
+    let (p, h) = (Point::new(80.0, 30.0), 1e-3);
+    let fx = (f(p + Vec2::new(h, 0.0)) - f(p - Vec2::new(h, 0.0))) / (2.0 * h);
+    let fy = (f(p + Vec2::new(0.0, h)) - f(p - Vec2::new(0.0, h))) / (2.0 * h);
+    let det = fx.x * fy.y - fx.y * fy.x;
+    assert!((det - 1.0).abs() > 0.01, "det {det}");
+}
+
+#[test]
+fn formulas_match_design_md_at_known_points() {
+    // drop: P' = C + (P − C)·√(1 + r²/ρ²); ρ = 3, r = 4 → factor 5/3.
+    let d = Drop {
+        center: Point::new(1.0, 1.0),
+        radius: 4.0,
+        color: INK,
+    };
+    assert_eq!(d.forward(Point::new(4.0, 1.0)), Point::new(6.0, 1.0));
+    // tine: shift αλ/(d + λ) along M; d = 2, α = 10, λ = 2 → 5.
+    let t = Tine {
+        origin: Point::ZERO,
+        direction: Vec2::new(0.0, 3.0),
+        alpha: 10.0,
+        lambda: 2.0,
+    };
+    assert_eq!(t.forward(Point::new(2.0, 7.0)), Point::new(2.0, 12.0));
+    // rake: spacing 10, d = 13 → d' = 3; shift 10·2/(3 + 2) = 4.
+    let r = Rake {
+        origin: Point::ZERO,
+        direction: Vec2::new(1.0, 0.0),
+        spacing: 10.0,
+        alpha: 10.0,
+        lambda: 2.0,
+    };
+    let q = r.forward(Point::new(0.0, 13.0));
+    assert!((q - Point::new(4.0, 13.0)).hypot() < 1e-12, "{q:?}");
+    // wavy: t = 0 → m = (1, 0), n = (0, −1), v = −y; y = −25, wavelength 100 → sin(π/2) = 1.
+    let w = Wavy {
+        angle: 0.0,
+        amplitude: 7.0,
+        wavelength: 100.0,
+        phase: 0.0,
+    };
+    let q = w.forward(Point::new(3.0, -25.0));
+    assert!((q - Point::new(10.0, -25.0)).hypot() < 1e-12, "{q:?}");
+    // circular: ρ = r → d = 0, l = α, θ = α/ρ; α = π·10/2 on ρ = 10 turns a quarter (y down: +x → +y).
+    let c = Circular {
+        center: Point::ZERO,
+        radius: 10.0,
+        alpha: std::f64::consts::PI * 5.0,
+        lambda: 3.0,
+    };
+    let q = c.forward(Point::new(10.0, 0.0));
+    assert!((q - Point::new(0.0, 10.0)).hypot() < 1e-12, "{q:?}");
+    // vortex: d = ρ; ρ = 1, λ = 1, α = π → θ = π·1/2/1 = π/2.
+    let v = Vortex {
+        center: Point::ZERO,
+        alpha: std::f64::consts::PI,
+        lambda: 1.0,
+    };
+    let q = v.forward(Point::new(1.0, 0.0));
+    assert!((q - Point::new(0.0, 1.0)).hypot() < 1e-12, "{q:?}");
+}

@@ -1,0 +1,92 @@
+// gabor.wgsl — sparse Gabor noise (Lagae et al. 2009): anisotropic (0), isotropic (1) and
+// random-phase (2) kernels, impulses per cell from the cell stream, orientation and
+// frequency optionally driven by an fBm (keep in sync with
+// crates/marbling-noise/src/gabor.rs). Needs hash.wgsl, perlin.wgsl, value.wgsl, fbm.wgsl.
+
+const GABOR_TAU: f32 = 6.2831855;
+
+// Keep in sync with `GaborGpu` in crates/marbling-noise/src/wgsl.rs (128 bytes).
+struct GaborParams {
+    kind: u32,
+    seed: u32,
+    period_cells: i32,        // 0 = not tileable
+    drives: u32,              // bit 0: orientation driven, bit 1: frequency driven
+    frequency: f32,           // F0, cycles per pixel
+    orientation: f32,         // omega0, radians, x right / y down
+    cell: f32,                // impulse cell side, pixels
+    radius2: f32,             // truncation radius squared, pixels^2
+    pi_a2: f32,               // pi * a^2
+    exp_neg_part: f32,        // e^-(mean impulses per cell / poisson_parts)
+    inv_std: f32,             // 1 / analytical standard deviation
+    orientation_amount: f32,  // radians per unit of the driving fBm
+    frequency_amount: f32,    // octaves per unit of the driving fBm
+    poisson_parts: u32,       // the Poisson draw is split into this many parts
+    reach_cells: i32,         // cells searched each way, ceil(R / cell)
+    _pad2: u32,
+    orientation_drive: FbmParams,
+    frequency_drive: FbmParams,
+}
+
+// The un-normalised sum at p (output pixels).
+fn gabor_raw(p: vec2<f32>, g: GaborParams) -> f32 {
+    let u = p.x / g.cell;
+    let v = p.y / g.cell;
+    let ix = floor_i32(u);
+    let iy = floor_i32(v);
+    let fx = (u - f32(ix)) * g.cell;
+    let fy = (v - f32(iy)) * g.cell;
+    let base = vec2<f32>(cos(g.orientation), sin(g.orientation));
+    var sum = 0.0;
+    let reach = g.reach_cells;
+    for (var dj = -reach; dj <= reach; dj = dj + 1) {
+        for (var di = -reach; di <= reach; di = di + 1) {
+            let ex = max(max(f32(di) * g.cell - fx, fx - f32(di + 1) * g.cell), 0.0);
+            let ey = max(max(f32(dj) * g.cell - fy, fy - f32(dj + 1) * g.cell), 0.0);
+            if ex * ex + ey * ey >= g.radius2 {
+                continue;
+            }
+            let cx = ix + di;
+            let cy = iy + dj;
+            var rng = cell_hash(wrap_cell(cx, g.period_cells), wrap_cell(cy, g.period_cells), g.seed);
+            let count = rng_poisson_parts(&rng, g.exp_neg_part, g.poisson_parts);
+            for (var k = 0u; k < count; k = k + 1u) {
+                let ox = rng_next_f32(&rng);
+                let oy = rng_next_f32(&rng);
+                let w = rng_next_f32(&rng) * 2.0 - 1.0;
+                let extra = rng_next_f32(&rng);
+                let dx = fx - (f32(di) + ox) * g.cell;
+                let dy = fy - (f32(dj) + oy) * g.cell;
+                let r2 = dx * dx + dy * dy;
+                if r2 >= g.radius2 {
+                    continue;
+                }
+                let ip = vec2<f32>((f32(cx) + ox) * g.cell, (f32(cy) + oy) * g.cell);
+                var dir = base;
+                var phase = 0.0;
+                if g.kind == 1u {
+                    let a = GABOR_TAU * extra;
+                    dir = vec2<f32>(cos(a), sin(a));
+                } else {
+                    if g.kind == 2u {
+                        phase = GABOR_TAU * extra;
+                    }
+                    if (g.drives & 1u) != 0u {
+                        let a = g.orientation + g.orientation_amount * fbm(ip, g.orientation_drive);
+                        dir = vec2<f32>(cos(a), sin(a));
+                    }
+                }
+                var f = g.frequency;
+                if (g.drives & 2u) != 0u {
+                    f = g.frequency * exp2(g.frequency_amount * fbm(ip, g.frequency_drive));
+                }
+                sum = sum + w * exp(-g.pi_a2 * r2) * cos(GABOR_TAU * f * (dx * dir.x + dy * dir.y) + phase);
+            }
+        }
+    }
+    return sum;
+}
+
+// Gabor noise at p, zero mean and unit variance.
+fn gabor(p: vec2<f32>, g: GaborParams) -> f32 {
+    return gabor_raw(p, g) * g.inv_std;
+}

@@ -1,0 +1,50 @@
+// noise.wgsl — one entry point for every noise: `sample_noise(p, u)` at p in output pixels,
+// zero mean and unit variance (keep in sync with `NoiseGpu` in
+// crates/marbling-noise/src/wgsl.rs and with render.rs). Needs every other noise file.
+
+const NOISE_GABOR: u32 = 0u;
+const NOISE_FBM: u32 = 1u;
+const NOISE_WORLEY: u32 = 2u;
+const NOISE_WHITE: u32 = 3u;
+const NOISE_CURL: u32 = 4u;
+const NOISE_FIBERS: u32 = 5u;
+
+// Keep in sync with `NoiseGpu` in crates/marbling-noise/src/wgsl.rs (304 bytes).
+struct NoiseUniform {
+    noise_type: u32,
+    seed: u32,            // worley, white
+    feature: u32,         // worley feature, curl component
+    metric: u32,          // worley metric
+    period: vec2<i32>,    // worley cells / white pixels per tile, 0 = none
+    frequency: f32,       // worley cells per pixel
+    _pad: u32,
+    fbm: FbmParams,       // perlin/value fBm, curl potential
+    gabor: GaborParams,
+    fibers: FiberParams,
+}
+
+fn sample_noise(p: vec2<f32>, u: NoiseUniform) -> f32 {
+    switch u.noise_type {
+        case 0u: {
+            return gabor(p, u.gabor);
+        }
+        case 1u: {
+            return fbm(p, u.fbm);
+        }
+        case 2u: {
+            return worley_normalised(p * u.frequency, u.seed, u.feature, u.metric, u.period);
+        }
+        case 3u: {
+            return white2(p, u.seed, u.period);
+        }
+        case 4u: {
+            return curl_component(p, u.fbm, u.feature);
+        }
+        case 5u: {
+            return fibers(p, u.fibers);
+        }
+        default: {
+            return 0.0;
+        }
+    }
+}

@@ -1,0 +1,57 @@
+//! Procedural noises for the marbling playground, each in two forms with the same
+//! names: a CPU reference (this crate, f32, deterministic) and WGSL (`shaders/*.wgsl`,
+//! see [`wgsl`]), sharing one u32 hash so both give the same pattern for a seed.
+//!
+//! Noises: sparse Gabor (anisotropic, isotropic, random phase; orientation and frequency
+//! optionally driven by another field), Perlin fBm, value noise, Worley (F1, F2, F2 − F1
+//! × Euclidean, Manhattan, Chebyshev), white noise, curl noise, paper and canvas fibers;
+//! tileable variants; transfer functions (thresholds, seed 004's spline decay, HSV value
+//! blend) and colour ramps; JSON specs with path-named errors.
+//!
+//! Conventions: positions in output pixels, x right, y down; frequencies in cycles per
+//! output pixel; angles in radians from +x towards +y. Every noise is normalised to zero
+//! mean and unit variance (analytically where a formula exists, else by constants
+//! measured once and checked by tests).
+
+mod curl;
+mod fbm;
+mod fibers;
+mod field;
+mod gabor;
+pub mod hash;
+mod perlin;
+mod ramp;
+mod render;
+mod spec;
+mod transfer;
+mod value;
+pub mod wgsl;
+mod white;
+mod worley;
+
+pub use curl::{Curl, CurlComponent};
+pub use fbm::{Basis, Fbm, FbmParams, MAX_OCTAVES, OCTAVE_SEED_STEP};
+pub use fibers::{
+    FiberLayout, FiberParams, Fibers, IMPURITY_SEED, Impurities, MAX_FIBERS_PER_CELL,
+};
+pub use field::Field;
+pub use gabor::{Drive, GABOR_TRUNCATION, Gabor, GaborKind, GaborParams};
+pub use hash::CellRng;
+pub use perlin::{
+    GRADIENTS, PERLIN_DERIVATIVE_VARIANCE, PERLIN_VARIANCE, fade, perlin2, perlin2_periodic,
+    perlin2_with_gradient,
+};
+pub use ramp::{ColorRamp, PALETTES, Rgb, parse_hex};
+pub use render::{
+    MAX_SIZE, NoiseImage, RenderError, Renderer, noise_field, noise_to_grey, sample_grid,
+};
+pub use spec::{
+    Blend, BlendBase, DecayValue, DriveSpec, FieldError, MAX_IMPULSES, NOISE_TYPES, NoiseSpec,
+    Source, SpecError, Transfer,
+};
+pub use transfer::{
+    SplineDecay, SplineDecayTable, Threshold, hsv_to_rgb, hsv_value_blend, rgb_to_hsv, smoothstep,
+};
+pub use value::{VALUE_VARIANCE, value2, value2_periodic};
+pub use white::{WHITE_HALF_RANGE, white2};
+pub use worley::{Metric, WORLEY_MOMENTS, WorleyFeature, worley_normalised, worley2};

@@ -1,0 +1,343 @@
+//! Evaluating a [`NoiseSpec`] over an N×N image: pixel (i, j) samples the point
+//! (i + 0.5, j + 0.5) in output pixels; noise n (zero mean, unit variance) becomes the
+//! intensity 0.5 + n/6 clamped to [0, 1], or the spec's transfer of n; a palette or blend
+//! turns intensity into colour.
+
+use crate::curl::{Curl, CurlComponent};
+use crate::fbm::Fbm;
+use crate::fibers::Fibers;
+use crate::field::Field;
+use crate::gabor::{Drive, Gabor, GaborParams};
+use crate::spec::{BlendBase, DecayValue, NoiseSpec, Source, Transfer};
+use crate::transfer::{SplineDecayTable, hsv_value_blend};
+use crate::white::white2;
+use crate::worley::{Metric, WorleyFeature, worley_normalised};
+use std::sync::Arc;
+
+/// Largest output side accepted by [`Renderer::new`].
+pub const MAX_SIZE: u32 = 8192;
+
+/// Why a spec could not be rendered.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+pub enum RenderError {
+    /// The requested size is 0 or above [`MAX_SIZE`].
+    #[error("size must be in 1..={MAX_SIZE}, got {0}")]
+    Size(u32),
+}
+
+/// The default noise-to-intensity map: 0.5 + n/6 clamped (±3σ spans black to white).
+#[inline]
+#[must_use]
+pub fn noise_to_grey(n: f32) -> f32 {
+    (0.5 + n / 6.0).clamp(0.0, 1.0)
+}
+
+struct Worley {
+    frequency: f32,
+    seed: u32,
+    feature: WorleyFeature,
+    metric: Metric,
+    period: i32,
+}
+
+impl Field for Worley {
+    fn sample(&self, x: f32, y: f32) -> f32 {
+        worley_normalised(
+            x * self.frequency,
+            y * self.frequency,
+            self.seed,
+            self.feature,
+            self.metric,
+            [self.period, self.period],
+        )
+    }
+}
+
+struct White {
+    seed: u32,
+    period: i32,
+}
+
+impl Field for White {
+    fn sample(&self, x: f32, y: f32) -> f32 {
+        white2(x, y, self.seed, [self.period, self.period])
+    }
+}
+
+impl Field for Fbm {
+    fn sample(&self, x: f32, y: f32) -> f32 {
+        self.eval(x, y)
+    }
+}
+
+struct CurlField {
+    curl: Curl,
+    component: CurlComponent,
+}
+
+impl Field for CurlField {
+    fn sample(&self, x: f32, y: f32) -> f32 {
+        self.curl.component(x, y, self.component)
+    }
+}
+
+/// The unit-variance field of a non-product spec at output size `size` (the size sets the
+/// tile period when the spec tiles). Products have no single noise field: `None`.
+#[must_use]
+pub fn noise_field(spec: &NoiseSpec, size: u32) -> Option<Arc<dyn Field>> {
+    let period = spec.tile.then_some(size);
+    let field: Arc<dyn Field> = match &spec.source {
+        Source::Gabor {
+            kind,
+            frequency,
+            orientation,
+            bandwidth,
+            impulses,
+            seed,
+            orientation_field,
+            frequency_field,
+        } => {
+            let drive = |d: &Option<crate::spec::DriveSpec>| -> Option<Drive> {
+                let d = d.as_ref()?;
+                // A tiling Gabor tiles its driving fields too.
+                let noise = NoiseSpec {
+                    tile: spec.tile,
+                    ..(*d.noise).clone()
+                };
+                Some(Drive {
+                    field: noise_field(&noise, size)?,
+                    amount: d.amount,
+                })
+            };
+            Arc::new(Gabor::new(GaborParams {
+                kind: *kind,
+                frequency: *frequency,
+                orientation: *orientation,
+                bandwidth: *bandwidth,
+                impulses: *impulses,
+                seed: *seed,
+                period,
+                orientation_drive: drive(orientation_field),
+                frequency_drive: drive(frequency_field),
+            }))
+        }
+        Source::Fbm(p) => Arc::new(Fbm::new(crate::FbmParams { period, ..*p })),
+        Source::Worley {
+            frequency,
+            feature,
+            metric,
+            seed,
+        } => {
+            let (frequency, cells) = lattice_for_period(*frequency, period);
+            Arc::new(Worley {
+                frequency,
+                seed: *seed,
+                feature: *feature,
+                metric: *metric,
+                period: cells,
+            })
+        }
+        Source::White { seed } => Arc::new(White {
+            seed: *seed,
+            period: period.map_or(0, |p| p as i32),
+        }),
+        Source::Curl {
+            potential,
+            component,
+        } => Arc::new(CurlField {
+            curl: Curl::new(Fbm::new(crate::FbmParams {
+                period,
+                ..*potential
+            })),
+            component: *component,
+        }),
+        Source::Fibers(p) => Arc::new(Fibers::new(crate::FiberParams { period, ..*p })),
+        Source::Product(_) => return None,
+    };
+    Some(field)
+}
+
+/// A frequency rounded so a whole number of cells fits the period, and that number (0
+/// when not tiling).
+pub(crate) fn lattice_for_period(frequency: f32, period: Option<u32>) -> (f32, i32) {
+    match period {
+        Some(p) if p > 0 => {
+            let cells = (frequency * p as f32 + 0.5).floor().max(1.0);
+            (cells / p as f32, cells as i32)
+        }
+        _ => (frequency, 0),
+    }
+}
+
+enum Node {
+    Noise {
+        field: Arc<dyn Field>,
+        transfer: Option<Transfer>,
+    },
+    Product(Vec<Node>),
+}
+
+/// A spec prepared for one output size: evaluates intensity and colour per point.
+pub struct Renderer {
+    root: Node,
+    size: u32,
+    decay: Option<SplineDecayTable>,
+    spec: NoiseSpec,
+}
+
+/// An 8-bit image produced by [`Renderer::render`].
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct NoiseImage {
+    /// Side, pixels.
+    pub size: u32,
+    /// Whether the spec has no palette or blend (then r = g = b).
+    pub greyscale: bool,
+    /// Row-major sRGB pixels.
+    pub pixels: Vec<[u8; 3]>,
+}
+
+impl NoiseImage {
+    /// The grey level of each pixel (the red channel), row-major.
+    #[must_use]
+    pub fn grey(&self) -> Vec<u8> {
+        self.pixels.iter().map(|p| p[0]).collect()
+    }
+}
+
+fn build(spec: &NoiseSpec, size: u32) -> Node {
+    match &spec.source {
+        // Inputs of a tiling product tile too.
+        Source::Product(inputs) => Node::Product(
+            inputs
+                .iter()
+                .map(|s| {
+                    let s = NoiseSpec {
+                        tile: s.tile || spec.tile,
+                        ..s.clone()
+                    };
+                    build(&s, size)
+                })
+                .collect(),
+        ),
+        _ => match noise_field(spec, size) {
+            Some(field) => Node::Noise {
+                field,
+                transfer: spec.transfer,
+            },
+            None => Node::Product(Vec::new()),
+        },
+    }
+}
+
+fn uses_decay(spec: &NoiseSpec) -> bool {
+    matches!(spec.transfer, Some(Transfer::SplineDecay(_)))
+        || matches!(&spec.source, Source::Product(v) if v.iter().any(uses_decay))
+}
+
+impl Renderer {
+    /// Prepares `spec` for an output of `size`×`size` pixels.
+    pub fn new(spec: &NoiseSpec, size: u32) -> Result<Self, RenderError> {
+        if size == 0 || size > MAX_SIZE {
+            return Err(RenderError::Size(size));
+        }
+        Ok(Self {
+            root: build(spec, size),
+            size,
+            decay: uses_decay(spec).then(SplineDecayTable::new),
+            spec: spec.clone(),
+        })
+    }
+
+    fn node_intensity(&self, node: &Node, x: f32, y: f32) -> f32 {
+        match node {
+            Node::Noise { field, transfer } => {
+                let n = field.sample(x, y);
+                match transfer {
+                    None => noise_to_grey(n),
+                    Some(Transfer::Threshold(t)) => t.apply(n),
+                    Some(Transfer::SplineDecay(v)) => {
+                        let v = match v {
+                            DecayValue::Constant(v) => *v,
+                            DecayValue::RampX => x / self.size as f32,
+                        };
+                        self.decay.as_ref().map_or(0.0, |t| t.decay(v).apply(n))
+                    }
+                }
+            }
+            Node::Product(nodes) => nodes.iter().map(|n| self.node_intensity(n, x, y)).product(),
+        }
+    }
+
+    /// Intensity in [0, 1] at (x, y), output pixels.
+    #[must_use]
+    pub fn intensity(&self, x: f32, y: f32) -> f32 {
+        self.node_intensity(&self.root, x, y)
+    }
+
+    /// The sRGB colour (components in [0, 1]) at (x, y).
+    #[must_use]
+    pub fn color(&self, x: f32, y: f32) -> [f32; 3] {
+        let t = self.intensity(x, y);
+        if let Some(b) = &self.spec.blend {
+            let base = match &b.base {
+                BlendBase::Color(c) => *c,
+                BlendBase::Ramp(r) => r.sample(x / self.size as f32),
+            };
+            hsv_value_blend(base, t, b.beta)
+        } else if let Some(p) = &self.spec.palette {
+            p.sample(t)
+        } else {
+            [t, t, t]
+        }
+    }
+
+    /// Pixels of rows `rows` (row-major), 8-bit sRGB.
+    #[must_use]
+    pub fn render_rows(&self, rows: std::ops::Range<u32>) -> Vec<[u8; 3]> {
+        let mut out = Vec::with_capacity(rows.len() * self.size as usize);
+        for j in rows {
+            for i in 0..self.size {
+                let c = self.color(i as f32 + 0.5, j as f32 + 0.5);
+                out.push(c.map(|v| (v.clamp(0.0, 1.0) * 255.0).round() as u8));
+            }
+        }
+        out
+    }
+
+    /// The whole image (single thread; split [`Renderer::render_rows`] across threads
+    /// for speed).
+    #[must_use]
+    pub fn render(&self) -> NoiseImage {
+        NoiseImage {
+            size: self.size,
+            greyscale: !self.spec.is_colored(),
+            pixels: self.render_rows(0..self.size),
+        }
+    }
+
+    /// Side of the output, pixels.
+    #[must_use]
+    pub fn size(&self) -> u32 {
+        self.size
+    }
+
+    /// Whether the output is greyscale.
+    #[must_use]
+    pub fn greyscale(&self) -> bool {
+        !self.spec.is_colored()
+    }
+}
+
+/// Samples the unit-variance noise of `spec` (no transfer) over `size`×`size` pixel
+/// centres, row-major; `None` for products.
+#[must_use]
+pub fn sample_grid(spec: &NoiseSpec, size: u32) -> Option<Vec<f32>> {
+    let f = noise_field(spec, size)?;
+    let mut out = Vec::with_capacity((size * size) as usize);
+    for j in 0..size {
+        for i in 0..size {
+            out.push(f.sample(i as f32 + 0.5, j as f32 + 0.5));
+        }
+    }
+    Some(out)
+}

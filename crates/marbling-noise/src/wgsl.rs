@@ -1,0 +1,416 @@
+//! The WGSL twins of the CPU noises (`shaders/*.wgsl`, same function names and the same
+//! u32 hash), the helper that assembles a module from its dependencies (WGSL has no
+//! includes), and the host-side uniform that `sample_noise` in `noise.wgsl` reads.
+
+use crate::fbm::{Basis, FbmParams};
+use crate::fibers::{FiberLayout, FiberParams, Fibers};
+use crate::gabor::{Gabor, GaborParams};
+use crate::render::lattice_for_period;
+use crate::spec::{DriveSpec, NoiseSpec, Source};
+use bytemuck::{Pod, Zeroable};
+
+/// `hash.wgsl`: pcg_hash, lattice_hash, cell_hash, unit_f32, the cell stream, Poisson.
+pub const HASH: &str = include_str!("../shaders/hash.wgsl");
+/// `perlin.wgsl`: fade, perlin2, perlin2_periodic, perlin2_with_gradient.
+pub const PERLIN: &str = include_str!("../shaders/perlin.wgsl");
+/// `value.wgsl`: value2, value2_periodic.
+pub const VALUE: &str = include_str!("../shaders/value.wgsl");
+/// `fbm.wgsl`: FbmParams, fbm, fbm_with_gradient.
+pub const FBM: &str = include_str!("../shaders/fbm.wgsl");
+/// `worley.wgsl`: worley2, worley_normalised.
+pub const WORLEY: &str = include_str!("../shaders/worley.wgsl");
+/// `white.wgsl`: white2.
+pub const WHITE: &str = include_str!("../shaders/white.wgsl");
+/// `curl.wgsl`: curl_velocity, curl_component.
+pub const CURL: &str = include_str!("../shaders/curl.wgsl");
+/// `gabor.wgsl`: GaborParams, gabor, gabor_raw.
+pub const GABOR: &str = include_str!("../shaders/gabor.wgsl");
+/// `fibers.wgsl`: FiberParams, fibers, fibers_height, fibers_specks.
+pub const FIBERS: &str = include_str!("../shaders/fibers.wgsl");
+/// `transfer.wgsl`: noise_to_grey, threshold_transfer, spline_decay, hsv_value_blend.
+pub const TRANSFER: &str = include_str!("../shaders/transfer.wgsl");
+/// `noise.wgsl`: NoiseUniform and the dispatcher sample_noise.
+pub const NOISE: &str = include_str!("../shaders/noise.wgsl");
+
+/// Every shader file by name, in dependency order.
+pub const FILES: &[(&str, &str)] = &[
+    ("hash", HASH),
+    ("perlin", PERLIN),
+    ("value", VALUE),
+    ("fbm", FBM),
+    ("worley", WORLEY),
+    ("white", WHITE),
+    ("curl", CURL),
+    ("gabor", GABOR),
+    ("fibers", FIBERS),
+    ("transfer", TRANSFER),
+    ("noise", NOISE),
+];
+
+/// The files a module needs, itself last.
+#[must_use]
+pub fn dependencies(name: &str) -> Option<&'static [&'static str]> {
+    Some(match name {
+        "hash" => &["hash"],
+        "perlin" => &["hash", "perlin"],
+        "value" => &["hash", "perlin", "value"],
+        "fbm" => &["hash", "perlin", "value", "fbm"],
+        "worley" => &["hash", "worley"],
+        "white" => &["hash", "white"],
+        "curl" => &["hash", "perlin", "value", "fbm", "curl"],
+        "gabor" => &["hash", "perlin", "value", "fbm", "gabor"],
+        "fibers" => &["hash", "fibers"],
+        "transfer" => &["transfer"],
+        "noise" => &[
+            "hash", "perlin", "value", "fbm", "worley", "white", "curl", "gabor", "fibers",
+            "transfer", "noise",
+        ],
+        _ => return None,
+    })
+}
+
+/// The source of module `name` with its dependencies prepended, ready for
+/// `create_shader_module` (append an entry point).
+#[must_use]
+pub fn module(name: &str) -> Option<String> {
+    let deps = dependencies(name)?;
+    let mut out = String::new();
+    for d in deps {
+        let (_, src) = FILES.iter().find(|(n, _)| n == d)?;
+        out.push_str(src);
+        out.push('\n');
+    }
+    Some(out)
+}
+
+/// Host mirror of WGSL `FbmParams` (fbm.wgsl). Keep in sync.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Pod, Zeroable)]
+pub struct FbmGpu {
+    /// First-octave frequency, cycles per pixel.
+    pub frequency: f32,
+    /// Frequency ratio per octave.
+    pub lacunarity: f32,
+    /// Amplitude ratio per octave.
+    pub persistence: f32,
+    /// Octave count.
+    pub octaves: u32,
+    /// Seed.
+    pub seed: u32,
+    /// 0 Perlin, 1 value.
+    pub basis: u32,
+    /// Tile period in pixels, 0 = none.
+    pub period: u32,
+    /// Padding.
+    pub _pad: u32,
+}
+
+impl From<&FbmParams> for FbmGpu {
+    fn from(p: &FbmParams) -> Self {
+        Self {
+            frequency: p.frequency,
+            lacunarity: p.lacunarity,
+            persistence: p.persistence,
+            octaves: p.octaves,
+            seed: p.seed,
+            basis: match p.basis {
+                Basis::Perlin => 0,
+                Basis::Value => 1,
+            },
+            period: p.period.unwrap_or(0),
+            _pad: 0,
+        }
+    }
+}
+
+/// Host mirror of WGSL `GaborParams` (gabor.wgsl). Keep in sync.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Pod, Zeroable)]
+pub struct GaborGpu {
+    /// 0 anisotropic, 1 isotropic, 2 random phase.
+    pub kind: u32,
+    /// Seed.
+    pub seed: u32,
+    /// Cells per tile, 0 = none.
+    pub period_cells: i32,
+    /// Bit 0 orientation driven, bit 1 frequency driven.
+    pub drives: u32,
+    /// F₀, cycles per pixel.
+    pub frequency: f32,
+    /// ω₀, radians.
+    pub orientation: f32,
+    /// Impulse cell side, pixels.
+    pub cell: f32,
+    /// Truncation radius², pixels².
+    pub radius2: f32,
+    /// π·a².
+    pub pi_a2: f32,
+    /// e^(−mean impulses per cell / parts).
+    pub exp_neg_part: f32,
+    /// 1 / analytical standard deviation.
+    pub inv_std: f32,
+    /// Radians per unit of the orientation drive.
+    pub orientation_amount: f32,
+    /// Octaves per unit of the frequency drive.
+    pub frequency_amount: f32,
+    /// Parts of the Poisson draw.
+    pub poisson_parts: u32,
+    /// Cells searched each way.
+    pub reach_cells: i32,
+    /// Padding.
+    pub _pad: u32,
+    /// The fBm driving the orientation.
+    pub orientation_drive: FbmGpu,
+    /// The fBm driving the frequency.
+    pub frequency_drive: FbmGpu,
+}
+
+/// Host mirror of WGSL `FiberGrid` (fibers.wgsl). Keep in sync.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Pod, Zeroable)]
+pub struct FiberGridGpu {
+    /// Cell side, pixels.
+    pub cell: f32,
+    /// Cells searched on each side.
+    pub reach_cells: i32,
+    /// Cells per tile, 0 = none.
+    pub period_cells: i32,
+    /// e^(−mean points per cell / parts).
+    pub exp_neg_part: f32,
+    /// Parts of the Poisson draw.
+    pub poisson_parts: u32,
+    /// Padding.
+    pub _pad: [u32; 3],
+}
+
+/// Host mirror of WGSL `FiberParams` (fibers.wgsl). Keep in sync.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Pod, Zeroable)]
+pub struct FibersGpu {
+    /// 0 paper, 1 canvas.
+    pub fiber_layout: u32,
+    /// Seed.
+    pub seed: u32,
+    /// Whether specks are drawn.
+    pub has_impurities: u32,
+    /// Padding.
+    pub _pad0: u32,
+    /// Fiber length, pixels.
+    pub length: f32,
+    /// Fiber width, pixels.
+    pub width: f32,
+    /// Probability of a horizontal canvas thread.
+    pub horizontal_probability: f32,
+    /// Mean height.
+    pub mean: f32,
+    /// 1 / height standard deviation.
+    pub inv_std: f32,
+    /// Speck radius, pixels.
+    pub speck_radius: f32,
+    /// Speck depth, standard deviations.
+    pub speck_strength: f32,
+    /// Padding.
+    pub _pad1: f32,
+    /// Fiber grid.
+    pub fibers: FiberGridGpu,
+    /// Speck grid.
+    pub specks: FiberGridGpu,
+}
+
+/// Host mirror of WGSL `NoiseUniform` (noise.wgsl), the uniform read by `sample_noise`.
+/// Keep in sync.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Pod, Zeroable)]
+pub struct NoiseGpu {
+    /// 0 Gabor, 1 fBm, 2 Worley, 3 white, 4 curl, 5 fibers.
+    pub noise_type: u32,
+    /// Seed (Worley, white).
+    pub seed: u32,
+    /// Worley feature or curl component.
+    pub feature: u32,
+    /// Worley metric.
+    pub metric: u32,
+    /// Worley cells / white pixels per tile, 0 = none.
+    pub period: [i32; 2],
+    /// Worley cells per pixel.
+    pub frequency: f32,
+    /// Padding.
+    pub _pad: u32,
+    /// fBm or curl potential.
+    pub fbm: FbmGpu,
+    /// Gabor parameters.
+    pub gabor: GaborGpu,
+    /// Fiber parameters.
+    pub fibers: FibersGpu,
+}
+
+/// Why a spec has no GPU form.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+pub enum GpuUnsupported {
+    /// Products combine intensities; evaluate their inputs separately.
+    #[error("a product has no single noise uniform; evaluate its inputs")]
+    Product,
+    /// The WGSL Gabor drives orientation/frequency with fBm only.
+    #[error("{0}: the WGSL Gabor accepts only a perlin or value fBm as driving field")]
+    Drive(&'static str),
+}
+
+fn drive_fbm(
+    d: &Option<DriveSpec>,
+    what: &'static str,
+    period: Option<u32>,
+) -> Result<(FbmGpu, f32, bool), GpuUnsupported> {
+    match d {
+        None => Ok((FbmGpu::default(), 0.0, false)),
+        Some(d) => match &d.noise.source {
+            Source::Fbm(p) => Ok((FbmGpu::from(&FbmParams { period, ..*p }), d.amount, true)),
+            _ => Err(GpuUnsupported::Drive(what)),
+        },
+    }
+}
+
+impl GaborGpu {
+    /// The uniform of a CPU Gabor (its drives must be given as fBm separately).
+    #[must_use]
+    pub fn new(
+        g: &Gabor,
+        orientation: Option<(FbmGpu, f32)>,
+        frequency: Option<(FbmGpu, f32)>,
+    ) -> Self {
+        let p = g.params();
+        let (od, oa) = orientation.unwrap_or_default();
+        let (fd, fa) = frequency.unwrap_or_default();
+        Self {
+            kind: p.kind.index(),
+            seed: p.seed,
+            period_cells: g.period_cells,
+            drives: u32::from(orientation.is_some()) | (u32::from(frequency.is_some()) << 1),
+            frequency: p.frequency,
+            orientation: p.orientation,
+            cell: g.cell,
+            radius2: g.radius2,
+            pi_a2: g.pi_a2,
+            exp_neg_part: g.exp_neg_part,
+            inv_std: g.inv_std,
+            orientation_amount: oa,
+            frequency_amount: fa,
+            poisson_parts: g.poisson_parts,
+            reach_cells: g.reach_cells,
+            _pad: 0,
+            orientation_drive: od,
+            frequency_drive: fd,
+        }
+    }
+}
+
+impl From<&Fibers> for FibersGpu {
+    fn from(f: &Fibers) -> Self {
+        let p = f.params();
+        let grid = |g: &crate::fibers::Grid| FiberGridGpu {
+            cell: g.cell,
+            reach_cells: g.reach_cells,
+            period_cells: g.period_cells,
+            exp_neg_part: g.exp_neg_part,
+            poisson_parts: g.poisson_parts,
+            _pad: [0; 3],
+        };
+        let imp = p.impurities;
+        Self {
+            fiber_layout: match p.layout {
+                FiberLayout::Paper => 0,
+                FiberLayout::Canvas { .. } => 1,
+            },
+            seed: p.seed,
+            has_impurities: u32::from(imp.is_some()),
+            _pad0: 0,
+            length: p.length,
+            width: p.width,
+            horizontal_probability: f.horizontal_probability,
+            mean: f.mean,
+            inv_std: f.inv_std,
+            speck_radius: imp.map_or(0.0, |i| i.radius),
+            speck_strength: imp.map_or(0.0, |i| i.strength),
+            _pad1: 0.0,
+            fibers: grid(&f.fibers),
+            specks: f.specks.as_ref().map(grid).unwrap_or_default(),
+        }
+    }
+}
+
+impl NoiseGpu {
+    /// The uniform for the noise of `spec` at output size `size` (transfer, palette and
+    /// blend are applied separately).
+    pub fn from_spec(spec: &NoiseSpec, size: u32) -> Result<Self, GpuUnsupported> {
+        let period = spec.tile.then_some(size);
+        let mut u = Self::default();
+        match &spec.source {
+            Source::Gabor {
+                kind,
+                frequency,
+                orientation,
+                bandwidth,
+                impulses,
+                seed,
+                orientation_field,
+                frequency_field,
+            } => {
+                let (od, oa, o_on) = drive_fbm(orientation_field, "orientation_field", period)?;
+                let (fd, fa, f_on) = drive_fbm(frequency_field, "frequency_field", period)?;
+                let g = Gabor::new(GaborParams {
+                    kind: *kind,
+                    frequency: *frequency,
+                    orientation: *orientation,
+                    bandwidth: *bandwidth,
+                    impulses: *impulses,
+                    seed: *seed,
+                    period,
+                    orientation_drive: None,
+                    frequency_drive: None,
+                });
+                u.noise_type = 0;
+                u.gabor = GaborGpu::new(&g, o_on.then_some((od, oa)), f_on.then_some((fd, fa)));
+            }
+            Source::Fbm(p) => {
+                u.noise_type = 1;
+                u.fbm = FbmGpu::from(&FbmParams { period, ..*p });
+            }
+            Source::Worley {
+                frequency,
+                feature,
+                metric,
+                seed,
+            } => {
+                let (f, cells) = lattice_for_period(*frequency, period);
+                u.noise_type = 2;
+                u.seed = *seed;
+                u.feature = feature.index();
+                u.metric = metric.index();
+                u.period = [cells, cells];
+                u.frequency = f;
+            }
+            Source::White { seed } => {
+                let p = period.map_or(0, |p| p as i32);
+                u.noise_type = 3;
+                u.seed = *seed;
+                u.period = [p, p];
+            }
+            Source::Curl {
+                potential,
+                component,
+            } => {
+                u.noise_type = 4;
+                u.fbm = FbmGpu::from(&FbmParams {
+                    period,
+                    ..*potential
+                });
+                u.feature = *component as u32;
+            }
+            Source::Fibers(p) => {
+                u.noise_type = 5;
+                u.fibers = FibersGpu::from(&Fibers::new(FiberParams { period, ..*p }));
+            }
+            Source::Product(_) => return Err(GpuUnsupported::Product),
+        }
+        Ok(u)
+    }
+}
