@@ -25,6 +25,13 @@
 //! targets the shader encodes sRGB itself (as the CPU does); into `…UnormSrgb` targets it
 //! writes linear light and lets the hardware encode.
 //!
+//! # Precision
+//! Positions are f32 (design pixels), so renders agree with the f64 reference except
+//! where the design itself is ill-conditioned: heavily combed designs stretch ink
+//! exponentially, and beyond a few hundred strong combs a relative change of 1e-7 in
+//! the parameters (what rounding them to f32 does) already moves visible ink. The tests
+//! state both budgets (tests/gpu_vs_cpu.rs); docs/BENCHMARKS.md has the numbers.
+//!
 //! # Pieces
 //! - [`GpuContext`]: a device (headless on any adapter, including Mesa lavapipe, or
 //!   the app's own).
