@@ -20,7 +20,9 @@
 //!    from the canvas.
 //! 4. **Simplification** ([`simplify`]). Runs of vertices in one half-plane outside the
 //!    canvas collapse to their end points; then Ramer–Douglas–Peucker removes every
-//!    vertex that lies within T/2 output pixels of the segment replacing it.
+//!    vertex that lies within T/4 output pixels of the segment replacing it, unless the
+//!    shortcut would sweep over another part of the same outline (so filaments thinner
+//!    than T/4 keep both sides instead of folding into crossing zig-zags).
 //! 5. **Painter's order.** The background rectangle first, then one filled region per
 //!    drop or spray in op order (later inks over earlier), filled with the nonzero rule.
 //!    A later drop is drawn over the hole it pushes into older ink, so older outlines
@@ -35,9 +37,9 @@
 //!   Segments still too long after `max_depth` bisections (near a later drop's centre,
 //!   where the forward map stretches without bound) are counted in
 //!   [`TraceStats::capped`] instead of refined further.
-//! * Simplification moves the outline by at most T/2 (the Hausdorff distance between the
+//! * Simplification moves the outline by at most T/4 (the Hausdorff distance between the
 //!   refined and the simplified polyline inside the canvas), so the exported outline is
-//!   within 3T/4 of the true one, and any canvas point further than 3T/4 from the true
+//!   within T/2 of the true one, and any canvas point further than T/2 from the true
 //!   outline gets the right ink. SVG coordinates are rounded to a grid of at most T/50,
 //!   adding at most 0.015·T.
 //! * **Off-canvas parts.** Outside the canvas enlarged by a margin of 2 output pixels,
@@ -46,13 +48,17 @@
 //!   changes the filled area only inside that (convex) half-plane. An outline with every
 //!   vertex in one such half-plane is invisible and dropped ([`TraceStats::culled`]).
 //! * Vertex counts: after simplification an arc of curvature radius R output pixels
-//!   keeps about one vertex per 2·√(R·T) of length (a whole circle ≈ π·√(R/T)
+//!   keeps about one vertex per √(2·R·T) of length (a whole circle ≈ π·√(2R/T)
 //!   vertices), independent of how finely refinement sampled it; off the canvas a run
 //!   costs two vertices whatever its length. Halving T multiplies on-canvas counts by
-//!   about √2 after simplification and by about 2 before it.
+//!   about √2 after simplification and by about 2 before it. The exception is ink
+//!   stretched into filaments thinner than T/4 (many strong combs): both sides of a
+//!   filament are kept at spacing ≤ T, so counts follow the filaments' total length,
+//!   which grows with every comb stroke; [`TraceOptions::max_vertices`] bounds it.
 
 mod canvas;
 mod error;
+mod guard;
 mod ngon;
 mod options;
 mod outline;
@@ -67,6 +73,6 @@ pub use error::VectorError;
 pub use ngon::initial_sides;
 pub use options::TraceOptions;
 pub use outline::{Outline, TraceStats, VectorDesign};
-pub use preview::{preview, render_vector};
+pub use preview::{Blend, preview, render_vector};
 pub use svg::{design_to_svg, to_svg};
 pub use trace::{check_traceable, trace, trace_with_progress};

@@ -7,7 +7,7 @@ use crate::VectorError;
 pub struct TraceOptions {
     /// Tolerance T, output pixels (> 0): refined segments span at most T, mapped arc
     /// midpoints lie within T/4 of their chord, simplification moves the outline by at
-    /// most T/2. Default 1.
+    /// most T/4. Default 1.
     pub tolerance: f64,
     /// Output pixels per design pixel (> 0). Default 1 (SVG user units = design pixels).
     pub scale: f64,

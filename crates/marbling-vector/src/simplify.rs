@@ -2,6 +2,7 @@
 //! then Ramer–Douglas–Peucker within a distance ε.
 
 use crate::Canvas;
+use crate::guard::Guard;
 use crate::refine::distance_to_segment;
 use kurbo::Point;
 
@@ -54,6 +55,11 @@ pub fn collapse_off_canvas(points: &[Point], canvas: &Canvas) -> Vec<Point> {
 /// every removed vertex, and so every point of the original polyline, lies within
 /// `epsilon` of the segment that replaced it. Returns fewer than 3 vertices only when
 /// the whole outline lies within `epsilon` of one segment.
+///
+/// Topology guard: a chain is replaced by its chord only if no other vertex of the
+/// outline lies inside the loop they form and no other edge crosses the chord, so thin
+/// filaments (narrower than `epsilon`) keep both their sides instead of collapsing into
+/// crossing zig-zags whose reversed loops the nonzero rule would fill.
 pub fn rdp_closed(points: &[Point], epsilon: f64) -> Vec<Point> {
     let n = points.len();
     if n <= 3 {
@@ -68,6 +74,7 @@ pub fn rdp_closed(points: &[Point], epsilon: f64) -> Vec<Point> {
             di.total_cmp(&dj)
         })
         .unwrap_or(n / 2);
+    let guard = Guard::new(points, 2.0 * epsilon);
     let mut keep = vec![false; n];
     keep[0] = true;
     keep[far] = true;
@@ -85,10 +92,17 @@ pub fn rdp_closed(points: &[Point], epsilon: f64) -> Vec<Point> {
                 worst = (d, k);
             }
         }
-        if worst.0 > epsilon {
-            keep[worst.1] = true;
-            stack.push((a, worst.1));
-            stack.push((worst.1, b));
+        let split = if worst.0 > epsilon {
+            Some(worst.1)
+        } else if !guard.chord_is_clear(a, b) {
+            Some(if worst.1 > a { worst.1 } else { (a + b) / 2 })
+        } else {
+            None
+        };
+        if let Some(k) = split {
+            keep[k] = true;
+            stack.push((a, k));
+            stack.push((k, b));
         }
     }
     points

@@ -10,7 +10,11 @@ use std::fmt::Write;
 /// at most T/50 output pixels (2 decimals at T = 1, scale 1; 3 at T = 0.25).
 pub fn decimals(tolerance: f64, scale: f64) -> u32 {
     let d = (50.0 * scale / tolerance).log10().ceil();
-    if d.is_finite() { d.clamp(0.0, 9.0) as u32 } else { 9 }
+    if d.is_finite() {
+        d.clamp(0.0, 9.0) as u32
+    } else {
+        9
+    }
 }
 
 /// The SVG document of `vector`: `viewBox="0 0 W H"` in design pixels, `width`/`height`

@@ -3,8 +3,7 @@
 use crate::refine::Refiner;
 use crate::simplify::simplify_outline;
 use crate::{
-    Canvas, MARGIN_PX, Outline, TraceOptions, TraceStats, VectorDesign, VectorError,
-    initial_sides,
+    Canvas, MARGIN_PX, Outline, TraceOptions, TraceStats, VectorDesign, VectorError, initial_sides,
 };
 use marbling_core::{Design, Op, Point, Rgb8};
 use rayon::prelude::*;
@@ -113,7 +112,7 @@ fn trace_region(
         });
     }
     let points = if opts.simplify {
-        simplify_outline(&refined.points, canvas, spacing / 2.0)
+        simplify_outline(&refined.points, canvas, spacing / 4.0)
     } else {
         refined.points.clone()
     };
