@@ -177,7 +177,10 @@ fn sampled(
             for (p, idx) in index.chunks_exact(n).enumerate() {
                 let o = p * 4;
                 let first = idx[0];
-                if idx.iter().all(|&i| srgb[i as usize] == srgb[first as usize]) {
+                if idx
+                    .iter()
+                    .all(|&i| srgb[i as usize] == srgb[first as usize])
+                {
                     let c = srgb[first as usize];
                     out[o..o + 3].copy_from_slice(&[c.r, c.g, c.b]);
                     continue;

@@ -64,17 +64,18 @@ impl Refiner<'_> {
         self.ops.iter().fold(p, |p, op| op.forward(p))
     }
 
-    /// Whether the mapped segment `a`–`b` with mapped arc midpoint `m` must be split.
-    fn too_coarse(&self, a: Point, m: Point, b: Point) -> bool {
+    /// Whether the mapped segment `a`–`b` must be split, given the mapped points `q`
+    /// at a quarter, half and three quarters of its original arc.
+    fn too_coarse(&self, a: Point, q: [Point; 3], b: Point) -> bool {
         let (mut spacing, mut deviation) = (self.spacing, self.deviation);
         if let Some(canvas) = &self.canvas {
-            let depth = canvas.common_depth(&[a, m, b]);
+            let depth = canvas.common_depth(&[a, q[0], q[1], q[2], b]);
             if depth > 0.0 {
                 spacing = spacing.max(depth);
                 deviation = deviation.max(depth / 2.0);
             }
         }
-        (b - a).hypot() > spacing || distance_to_segment(m, a, b) > deviation
+        (b - a).hypot() > spacing || q.iter().any(|&p| distance_to_segment(p, a, b) > deviation)
     }
 
     /// Starts from the regular `sides`-gon at angles 2πi/sides and refines it.
@@ -96,27 +97,38 @@ impl Refiner<'_> {
             check_finite(pb)?;
             out.points.push(pa);
             out.angles.push(ta);
-            self.subdivide(ta, pa, tb, pb, 0, &mut out)?;
+            let tm = 0.5 * (ta + tb);
+            let pm = self.map_checked(tm, &mut out)?;
+            self.subdivide(ta, pa, tb, pb, pm, 0, &mut out)?;
             (ta, pa) = (tb, pb);
         }
         Ok(out)
     }
 
-    /// Appends the refined vertices strictly between `a` and `b`.
+    fn map_checked(&self, theta: f64, out: &mut Refined) -> Result<Point, VectorError> {
+        let p = self.map(theta);
+        out.mapped += 1;
+        check_finite(p)?;
+        Ok(p)
+    }
+
+    /// Appends the refined vertices strictly between `a` and `b`, given the mapped
+    /// midpoint `pm` of their original arc.
+    #[allow(clippy::too_many_arguments)]
     fn subdivide(
         &self,
         ta: f64,
         pa: Point,
         tb: f64,
         pb: Point,
+        pm: Point,
         depth: u32,
         out: &mut Refined,
     ) -> Result<(), VectorError> {
         let tm = 0.5 * (ta + tb);
-        let pm = self.map(tm);
-        out.mapped += 1;
-        check_finite(pm)?;
-        if !self.too_coarse(pa, pm, pb) {
+        let q1 = self.map_checked(0.5 * (ta + tm), out)?;
+        let q3 = self.map_checked(0.5 * (tm + tb), out)?;
+        if !self.too_coarse(pa, [q1, pm, q3], pb) {
             return Ok(());
         }
         if out.points.len() >= self.max_vertices {
@@ -130,10 +142,10 @@ impl Refiner<'_> {
             out.capped += 1;
             return Ok(());
         }
-        self.subdivide(ta, pa, tm, pm, depth + 1, out)?;
+        self.subdivide(ta, pa, tm, pm, q1, depth + 1, out)?;
         out.points.push(pm);
         out.angles.push(tm);
-        self.subdivide(tm, pm, tb, pb, depth + 1, out)
+        self.subdivide(tm, pm, tb, pb, q3, depth + 1, out)
     }
 }
 
