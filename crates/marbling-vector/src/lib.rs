@@ -33,13 +33,15 @@
 //! * Every refined segment spans at most T, and the true outline at its parameter
 //!   quarter, half and three-quarter points lies within T/4 of it. Between those samples
 //!   the bound is not proved (no sampling-based flattener of an arbitrary map can); tests
-//!   measure 32 forward points per segment and find at most 0.31·T, and assert T/2.
+//!   measure 32 forward points per segment: typically within T/4, worst 0.66·T where an
+//!   outline passes very close to a later drop's centre (the forward map stretches that
+//!   tiny arc around the whole drop); they assert T.
 //!   Segments still too long after `max_depth` bisections (near a later drop's centre,
 //!   where the forward map stretches without bound) are counted in
 //!   [`TraceStats::capped`] instead of refined further.
 //! * Simplification moves the outline by at most T/4 (the Hausdorff distance between the
 //!   refined and the simplified polyline inside the canvas, exact), so the exported
-//!   outline is within T/2 of the true one at every sample (3T/4 with the measured
+//!   outline is within T/2 of the true one at every sample (about 0.9·T with the measured
 //!   worst case between samples), and any canvas point further than that from the true
 //!   outline gets the right ink. SVG coordinates are rounded to a grid of at most T/50,
 //!   adding at most 0.015·T.
