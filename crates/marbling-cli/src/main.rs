@@ -1,8 +1,10 @@
-//! `marbling`: validate, render and benchmark marbling design documents.
+//! `marbling`: validate, render, export and benchmark marbling design documents.
 
 mod bench;
+mod bench_svg;
 mod input;
 mod render;
+mod svg;
 mod validate;
 
 use clap::{Parser, Subcommand};
@@ -24,6 +26,10 @@ enum Command {
     Validate(validate::ValidateArgs),
     /// Measure renderer throughput in op-samples per second on synthetic designs.
     Bench(bench::BenchArgs),
+    /// Export a design as SVG: each ink region's outline traced forward through later ops.
+    Svg(svg::SvgArgs),
+    /// Measure vector export time, vertex count and SVG size on synthetic designs.
+    BenchSvg(bench_svg::BenchSvgArgs),
 }
 
 fn main() -> ExitCode {
@@ -32,6 +38,8 @@ fn main() -> ExitCode {
         Command::Render(args) => render::run(&args),
         Command::Validate(args) => validate::run(&args),
         Command::Bench(args) => bench::run(&args),
+        Command::Svg(args) => svg::run(&args),
+        Command::BenchSvg(args) => bench_svg::run(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
