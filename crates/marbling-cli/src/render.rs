@@ -31,7 +31,7 @@ pub struct RenderArgs {
     #[arg(long, value_enum, default_value_t = Backend::Cpu)]
     backend: Backend,
     /// Tracing tolerance of --backend vector, output pixels.
-    #[arg(long, default_value_t = 1.0)]
+    #[arg(long, default_value_t = 1.0, allow_negative_numbers = true)]
     tolerance: f64,
 }
 

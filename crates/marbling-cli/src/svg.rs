@@ -19,7 +19,7 @@ pub struct SvgArgs {
     output: String,
     /// Tolerance T in output pixels: outline segments span at most T and stay within
     /// T/2 of the true outline (see marbling_vector's docs).
-    #[arg(long, default_value_t = 1.0)]
+    #[arg(long, default_value_t = 1.0, allow_negative_numbers = true)]
     tolerance: f64,
     /// Output pixels per design pixel: the SVG's width/height attributes and the unit of
     /// the tolerance (default 1).
