@@ -8,7 +8,7 @@ CARGO ?= cargo
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 MARBLING := target/release/marbling
 
-.PHONY: run test gallery setup-rust setup-gpu fmt-check clippy unit wasm-check bench
+.PHONY: run test gallery setup-rust setup-gpu fmt-check clippy unit wasm-check bench bench-svg
 
 run: gallery
 
@@ -35,7 +35,7 @@ unit: setup-rust setup-gpu
 	WGPU_BACKEND=vulkan $(CARGO) test --workspace
 
 wasm-check: setup-rust
-	$(CARGO) clippy --target wasm32-unknown-unknown -p marbling-core -- -D warnings
+	$(CARGO) clippy --target wasm32-unknown-unknown -p marbling-core -p marbling-vector -- -D warnings
 
 test: fmt-check clippy wasm-check unit
 
@@ -52,3 +52,7 @@ gallery: $(MARBLING)
 ## Throughput of the CPU reference renderer (see docs/BENCHMARKS.md).
 bench: $(MARBLING)
 	$(MARBLING) bench --ops 10,100,1000,10000 --aa none
+
+## Vector export: time, vertices and SVG size (see docs/BENCHMARKS.md).
+bench-svg: $(MARBLING)
+	$(MARBLING) bench-svg --ops 50,200,1000 --tolerance 1,0.25 --raw

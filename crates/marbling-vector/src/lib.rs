@@ -61,6 +61,7 @@
 
 mod canvas;
 mod error;
+pub mod forward;
 mod guard;
 mod ngon;
 mod options;

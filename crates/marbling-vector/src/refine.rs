@@ -3,8 +3,8 @@
 
 use crate::VectorError;
 use crate::canvas::Canvas;
+use crate::forward::{ForwardStep, forward_through};
 use kurbo::{Point, Vec2};
-use marbling_core::Op;
 use std::f64::consts::TAU;
 
 /// Traces the circle of `center` and `radius` forward through `ops` (oldest first).
@@ -13,8 +13,8 @@ use std::f64::consts::TAU;
 /// `deviation` the furthest the mapped arc midpoint may lie from it.
 #[derive(Clone, Copy, Debug)]
 pub struct Refiner<'a> {
-    /// The ops after the one that laid the ink, oldest first.
-    pub ops: &'a [Op],
+    /// The ops after the one that laid the ink, oldest first, compiled.
+    pub ops: &'a [ForwardStep],
     /// Centre of the original circle, design pixels.
     pub center: Point,
     /// Radius of the original circle, design pixels.
@@ -61,7 +61,7 @@ impl Refiner<'_> {
     pub fn map(&self, theta: f64) -> Point {
         let (s, c) = theta.sin_cos();
         let p = self.center + Vec2::new(c, s) * self.radius;
-        self.ops.iter().fold(p, |p, op| op.forward(p))
+        forward_through(self.ops, p)
     }
 
     /// Whether the mapped segment `a`–`b` must be split, given the mapped points `q`

@@ -1,5 +1,6 @@
 //! Forward tracing of a whole design: every drop and spray, in parallel over regions.
 
+use crate::forward::{ForwardStep, compile};
 use crate::refine::Refiner;
 use crate::simplify::simplify_outline;
 use crate::{
@@ -53,13 +54,14 @@ pub fn trace_with_progress(
             _ => None,
         })
         .collect();
+    let steps = compile(&design.ops);
     let used = AtomicUsize::new(0);
     let done = AtomicUsize::new(0);
     let traced: Vec<(Option<Outline>, TraceStats)> = ink
         .par_iter()
         .with_max_len(1)
         .map(|&ink_op| {
-            let r = trace_region(design, ink_op, opts, &canvas, &used);
+            let r = trace_region(&steps, ink_op, opts, &canvas, &used);
             progress(done.fetch_add(1, Ordering::Relaxed) + 1, ink.len());
             r
         })
@@ -86,7 +88,7 @@ type Ink = (usize, Point, f64, Rgb8);
 
 /// Traces one drop or spray of `design`; `None` when it is invisible.
 fn trace_region(
-    design: &Design,
+    steps: &[ForwardStep],
     (k, center, radius, color): Ink,
     opts: &TraceOptions,
     canvas: &Canvas,
@@ -94,7 +96,7 @@ fn trace_region(
 ) -> Result<(Option<Outline>, TraceStats), VectorError> {
     let spacing = opts.spacing();
     let refiner = Refiner {
-        ops: &design.ops[k + 1..],
+        ops: &steps[k + 1..],
         center,
         radius,
         spacing,

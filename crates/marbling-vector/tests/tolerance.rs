@@ -4,6 +4,7 @@
 use marbling_core::compare::check_snapshot;
 use marbling_core::synth::{Mix, random_design};
 use marbling_core::{Design, Op};
+use marbling_vector::forward::{ForwardStep, compile};
 use marbling_vector::refine::{Refiner, distance_to_segment};
 use marbling_vector::simplify::rdp_closed;
 use marbling_vector::{Blend, TraceOptions, initial_sides, preview, trace};
@@ -11,7 +12,7 @@ use std::path::PathBuf;
 
 /// Refiners for every ink op of `design` at tolerance `t` (scale 1, no off-canvas
 /// relaxation, so the bounds apply everywhere).
-fn refiners(design: &Design, t: f64) -> Vec<Refiner<'_>> {
+fn refiners<'a>(design: &Design, steps: &'a [ForwardStep], t: f64) -> Vec<Refiner<'a>> {
     design
         .ops
         .iter()
@@ -23,7 +24,7 @@ fn refiners(design: &Design, t: f64) -> Vec<Refiner<'_>> {
                 _ => return None,
             };
             Some(Refiner {
-                ops: &design.ops[k + 1..],
+                ops: &steps[k + 1..],
                 center,
                 radius,
                 spacing: t,
@@ -47,9 +48,10 @@ fn refined_segments_stay_within_tolerance_of_dense_forward_points() {
         (13, Mix::CombHeavy, 60),
     ] {
         let design = random_design(seed, 200, 150, ops, mix);
+        let steps = compile(&design.ops);
         for t in [1.0, 0.25] {
             let (mut worst_dev, mut worst_chord, mut segments) = (0.0f64, 0.0f64, 0);
-            for r in refiners(&design, t) {
+            for r in refiners(&design, &steps, t) {
                 let sides = initial_sides(r.radius, t);
                 let out = r.refine(sides).expect("refines");
                 assert_eq!(out.capped, 0);
@@ -88,8 +90,9 @@ fn simplification_moves_outlines_by_at_most_a_quarter_tolerance() {
     let design = random_design(21, 200, 150, 100, Mix::Mixed);
     let t = 1.0;
     let eps = t / 4.0;
+    let steps = compile(&design.ops);
     let (mut before, mut after, mut worst) = (0, 0, 0.0f64);
-    for r in refiners(&design, t) {
+    for r in refiners(&design, &steps, t) {
         let dense = r
             .refine(initial_sides(r.radius, t))
             .expect("refines")
