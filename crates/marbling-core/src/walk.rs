@@ -319,7 +319,7 @@ impl Walker {
                     ys.truncate(j);
                     ids.truncate(j);
                 }
-                Step::Comb { spacing, .. } if spacing == 0.0 => {
+                Step::Comb { spacing: 0.0, .. } => {
                     apply(xs, ys, |x, y| comb_back(x, y, s))
                 }
                 Step::Comb { .. } => apply(xs, ys, |x, y| comb_back(x, y, s)),
