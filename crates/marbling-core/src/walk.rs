@@ -319,9 +319,7 @@ impl Walker {
                     ys.truncate(j);
                     ids.truncate(j);
                 }
-                Step::Comb { spacing: 0.0, .. } => {
-                    apply(xs, ys, |x, y| comb_back(x, y, s))
-                }
+                Step::Comb { spacing: 0.0, .. } => apply(xs, ys, |x, y| comb_back(x, y, s)),
                 Step::Comb { .. } => apply(xs, ys, |x, y| comb_back(x, y, s)),
                 Step::Wave { .. } => apply(xs, ys, |x, y| wave_back(x, y, s)),
                 Step::Swirl { .. } => apply(xs, ys, |x, y| swirl_back(x, y, s)),

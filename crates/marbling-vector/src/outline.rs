@@ -11,7 +11,7 @@ pub struct Outline {
     /// Ink colour.
     pub color: Rgb8,
     /// Vertices of the closed polygon (the last joins the first), design pixels,
-    /// counter-clockwise on screen like the original circle (y down).
+    /// in order of increasing angle on the original circle (clockwise on screen, y down).
     pub points: Vec<Point>,
 }
 
