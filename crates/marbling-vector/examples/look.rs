@@ -1,6 +1,7 @@
 //! Writes the CPU reference render, the vector preview, their diff strip and the SVG of
 //! one synthetic design, for looking at: `cargo run --example look -- SEED OPS MIX [T] [OUT_DIR]`
-//! (MIX: mixed, drop, comb).
+//! (MIX: mixed, drop, comb). Environment: `NO_SIMPLIFY=1` keeps every refined vertex,
+//! `REF_AA=grid4` compares against the 16-sample CPU render instead of RGSS.
 
 use marbling_core::compare::{compare, diff_strip};
 use marbling_core::synth::{Mix, random_design};
