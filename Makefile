@@ -8,7 +8,7 @@ CARGO ?= cargo
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 MARBLING := target/release/marbling
 
-.PHONY: run test gallery setup-rust setup-gpu setup-web setup-browser fmt-check clippy unit wasm-check bench bench-gpu web browser-test noise-gallery bench-noise
+.PHONY: run test gallery setup-rust setup-gpu setup-web setup-browser fmt-check clippy unit wasm-check bench bench-gpu web browser-test noise-gallery bench-noise bench-svg
 
 TRUNK_VERSION := 0.21.14
 # Must equal the wasm-bindgen version in Cargo.lock (see crates/marbling-app/Cargo.toml).
@@ -62,7 +62,7 @@ unit: setup-rust setup-gpu
 	WGPU_BACKEND=vulkan $(CARGO) test --workspace
 
 wasm-check: setup-rust
-	$(CARGO) clippy --target wasm32-unknown-unknown -p marbling-core -p marbling-gpu -p marbling-noise -p marbling-app -- -D warnings
+	$(CARGO) clippy --target wasm32-unknown-unknown -p marbling-core -p marbling-gpu -p marbling-noise -p marbling-vector -p marbling-app -- -D warnings
 
 test: fmt-check clippy wasm-check unit browser-test
 
@@ -87,6 +87,7 @@ bench-gpu: $(MARBLING) setup-gpu
 	  $(MARBLING) bench --backend gpu --mix mixed --ops 1000,10000 --size $$s --aa $$aa || exit 1; \
 	done; done
 	$(MARBLING) bench --backend gpu --pending --mix mixed --ops 1000,10000 --size 1920x1080 --aa rgss --frames 200
+
 ## Renders every example noise spec to docs/noise/NAME.png (256 px).
 noise-gallery: $(MARBLING)
 	@mkdir -p docs/noise
@@ -97,3 +98,8 @@ noise-gallery: $(MARBLING)
 ## Noise throughput against fastnoise-lite, Gabor ms/megapixel (see docs/BENCHMARKS.md).
 bench-noise: setup-gpu
 	WGPU_BACKEND=vulkan $(CARGO) bench -p marbling-noise --bench noise
+
+## Vector export: time, vertices and SVG size (see docs/BENCHMARKS.md).
+bench-svg: $(MARBLING)
+	$(MARBLING) bench-svg --ops 50,200 --tolerance 1,0.25 --raw
+	$(MARBLING) bench-svg --ops 100,300,500 --tolerance 1 --mix drop-heavy

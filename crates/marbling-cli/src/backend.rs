@@ -1,4 +1,5 @@
-//! `--backend`: which renderer draws the exact image (the CPU reference or the GPU).
+//! `--backend`: which renderer draws the image (the exact CPU reference, the GPU, or the
+//! forward-traced vector outlines).
 
 use crate::render::LazyProgress;
 use anyhow::{Context, Result};
@@ -13,6 +14,9 @@ pub enum Backend {
     Cpu,
     /// The WGSL renderer through wgpu, on any adapter (f32; tiles beyond the texture limit).
     Gpu,
+    /// Ink outlines traced forward through later ops, rasterised with tiny-skia at the
+    /// same sample positions.
+    Vector,
 }
 
 impl Backend {
@@ -21,6 +25,7 @@ impl Backend {
         match self {
             Backend::Cpu => "cpu",
             Backend::Gpu => "gpu",
+            Backend::Vector => "vector",
         }
     }
 }
@@ -31,14 +36,31 @@ pub fn gpu_renderer() -> Result<GpuRenderer> {
     Ok(GpuRenderer::new(ctx))
 }
 
-/// Renders `design` exactly with `backend`, reporting progress (bands or tiles).
+/// Traces `design`'s outlines within `tolerance` output pixels and rasterises them.
+pub fn render_vector(design: &Design, opts: &RenderOptions, tolerance: f64) -> Result<RgbaImage> {
+    let trace_opts = marbling_vector::TraceOptions {
+        tolerance,
+        scale: opts.scale,
+        ..marbling_vector::TraceOptions::default()
+    };
+    let progress = LazyProgress::new();
+    let traced =
+        marbling_vector::trace_with_progress(design, &trace_opts, &|d, t| progress.update(d, t));
+    progress.finish();
+    let blend = marbling_vector::Blend::Linear(opts.antialias);
+    Ok(marbling_vector::preview(&traced?, opts.scale, blend)?)
+}
+
+/// Renders `design` with `backend` (vector at `tolerance`), reporting progress.
 pub fn render_image(
     backend: Backend,
     design: &Design,
     opts: &RenderOptions,
+    tolerance: f64,
     progress: &LazyProgress,
 ) -> Result<RgbaImage> {
     Ok(match backend {
+        Backend::Vector => render_vector(design, opts, tolerance)?,
         Backend::Cpu => render_with_progress(design, opts, &|d, t| progress.update(d, t))?,
         Backend::Gpu => {
             let gpu = gpu_renderer()?;

@@ -76,6 +76,7 @@ pub fn run(args: &BenchArgs) -> Result<()> {
         (Backend::Gpu, false) => return crate::bench_gpu::exact(args),
         (Backend::Cpu, true) => bail!("--pending measures GPU preview frames: add --backend gpu"),
         (Backend::Cpu, false) => {}
+        (Backend::Vector, _) => bail!("vector export is measured by `marbling bench-svg`"),
     }
     let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
     println!(

@@ -1,13 +1,15 @@
-//! `marbling`: validate, render and benchmark marbling design documents.
+//! `marbling`: validate, render, export and benchmark marbling design documents.
 
 mod backend;
 mod bench;
 mod bench_gpu;
+mod bench_svg;
 mod input;
 mod link;
 mod noise;
 mod render;
 mod size;
+mod svg;
 mod validate;
 
 use clap::{Parser, Subcommand};
@@ -33,6 +35,10 @@ enum Command {
     Bench(bench::BenchArgs),
     /// Evaluate a procedural noise spec (Gabor, Perlin fBm, Worley, paper, …) to a PNG.
     Noise(noise::NoiseArgs),
+    /// Export a design as SVG: each ink region's outline traced forward through later ops.
+    Svg(svg::SvgArgs),
+    /// Measure vector export time, vertex count and SVG size on synthetic designs.
+    BenchSvg(bench_svg::BenchSvgArgs),
 }
 
 fn main() -> ExitCode {
@@ -43,6 +49,8 @@ fn main() -> ExitCode {
         Command::Bench(args) => bench::run(&args),
         Command::Link(args) => link::run(&args),
         Command::Noise(args) => noise::run(&args),
+        Command::Svg(args) => svg::run(&args),
+        Command::BenchSvg(args) => bench_svg::run(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -1,6 +1,6 @@
 //! `marbling render`: an exact PNG of a design at any scale.
 
-use crate::backend::{Backend, render_image};
+use crate::backend::{Backend, render_image, render_vector};
 use crate::input::read_design;
 use anyhow::{Context, Result, bail};
 use clap::Args;
@@ -27,9 +27,13 @@ pub struct RenderArgs {
     /// Antialiasing: none, rgss, grid4, quincunx, rooks8, adaptive.
     #[arg(long, default_value = "rgss")]
     aa: Antialias,
-    /// Renderer: the exact f64 CPU reference, or the WGSL renderer on the GPU (f32).
+    /// Renderer: cpu (the exact f64 reference), gpu (the WGSL renderer, f32) or vector
+    /// (outlines traced forward, rasterised with tiny-skia at the same sample positions).
     #[arg(long, value_enum, default_value_t = Backend::Cpu)]
     backend: Backend,
+    /// Tracing tolerance of --backend vector, output pixels.
+    #[arg(long, default_value_t = 1.0, allow_negative_numbers = true)]
+    tolerance: f64,
 }
 
 /// A progress bar on stderr that appears only once a render has taken about a second.
@@ -87,6 +91,13 @@ pub fn run(args: &RenderArgs) -> Result<()> {
         scale,
         antialias: args.aa,
     };
+    let start = Instant::now();
+    // The vector backend traces before the output is opened, so a design it refuses
+    // leaves no file behind.
+    let traced = match args.backend {
+        Backend::Vector => Some(render_vector(&design, &opts, args.tolerance)?),
+        Backend::Cpu | Backend::Gpu => None,
+    };
     // Open the output before the (possibly long) render so a bad path fails at once.
     let mut out: Box<dyn Write> = if args.output == "-" {
         Box::new(std::io::stdout().lock())
@@ -96,21 +107,30 @@ pub fn run(args: &RenderArgs) -> Result<()> {
                 .with_context(|| format!("cannot write '{}'", args.output))?,
         )
     };
-    let start = Instant::now();
-    let progress = LazyProgress::new();
-    let image = render_image(args.backend, &design, &opts, &progress)?;
-    progress.finish();
+    let image = match traced {
+        Some(image) => image,
+        None => {
+            let progress = LazyProgress::new();
+            let image = render_image(args.backend, &design, &opts, args.tolerance, &progress)?;
+            progress.finish();
+            image
+        }
+    };
     let elapsed = start.elapsed();
     let png = image.to_png()?;
     out.write_all(&png)
         .and_then(|()| out.flush())
         .with_context(|| format!("cannot write '{}'", args.output))?;
     let summary = format!(
-        "{}: {w}×{h} px, {} ops, aa {}, backend {}, rendered in {:.3} s",
+        "{}: {w}×{h} px, {} ops, aa {}, backend {}{}, rendered in {:.3} s",
         args.output,
         design.ops.len(),
         args.aa,
         args.backend.name(),
+        match args.backend {
+            Backend::Vector => format!(" (T {} px)", args.tolerance),
+            _ => String::new(),
+        },
         elapsed.as_secs_f64()
     );
     if args.output == "-" {
