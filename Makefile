@@ -49,8 +49,9 @@ web: setup-web
 	trunk build --release --offline
 
 ## End-to-end tests in headless Chromium on WebGPU and WebGL2 (SwiftShader).
-browser-test: web setup-browser $(MARBLING)
-	cd tests/browser && npm test
+browser-test: web setup-browser
+	$(CARGO) build -p marbling-cli
+	cd tests/browser && MARBLING_BIN=$(CURDIR)/target/debug/marbling npm test
 
 fmt-check: setup-rust
 	$(CARGO) fmt --all -- --check

@@ -14,7 +14,7 @@ import { PNG } from 'pngjs';
 
 const ROOT = path.resolve(import.meta.dirname, '../..');
 const DIST = path.join(ROOT, 'dist');
-const MARBLING = path.join(ROOT, 'target/release/marbling');
+const MARBLING = process.env.MARBLING_BIN || path.join(ROOT, 'target/release/marbling');
 const SHOTS = path.join(ROOT, 'docs/screenshots');
 const CHROMIUM = process.env.CHROMIUM || '/usr/bin/chromium';
 const READY_MS = 240_000;
