@@ -86,6 +86,9 @@ async function sheet(page) {
 
 /** A screenshot of the page region of `w × h` design pixels at the sheet's corner. */
 async function shootSheet(page, w, h) {
+  // Park the pointer on the panel so no tool footprint is drawn over the sheet.
+  await page.mouse.move(2, 2);
+  await page.waitForTimeout(300);
   const s = await sheet(page);
   const clip = { x: Math.round(s.x), y: Math.round(s.y), width: Math.floor(w * s.scale), height: Math.floor(h * s.scale) };
   return { img: decode(await page.screenshot({ clip })), ...s };

@@ -363,7 +363,8 @@ impl eframe::App for MarblingApp {
         self.advance_playback(&ctx);
         egui::Panel::left("marbling_tools")
             .resizable(true)
-            .default_size(270.0)
+            .default_size(300.0)
+            .size_range(240.0..=360.0)
             .show(ui, |ui| {
                 egui::ScrollArea::vertical().show(ui, |ui| self.side_panel(ui, frame));
             });

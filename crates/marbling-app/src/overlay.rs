@@ -79,7 +79,12 @@ pub fn draw(
         }
         ToolKind::Rake => {
             let offsets: Vec<f64> = if s.rake_tines == 0 {
-                let k = ((reach / s.rake_spacing).ceil() as i64).min(300);
+                // Whole-sheet rake: while dragging, every tine in view; hovering, a few.
+                let k = if dragging {
+                    ((reach / s.rake_spacing).ceil() as i64).min(300)
+                } else {
+                    4
+                };
                 (-k..=k).map(|i| i as f64 * s.rake_spacing).collect()
             } else {
                 let half = f64::from(s.rake_tines - 1) / 2.0;

@@ -322,21 +322,28 @@ impl MarblingApp {
             }
         }
         let mut open = None;
-        ui.horizontal_wrapped(|ui| {
-            for (e, tex) in EXAMPLES.iter().zip(&self.thumbnails) {
-                ui.vertical(|ui| {
-                    let img = egui::Image::new(tex).fit_to_exact_size(egui::vec2(112.0, 70.0));
-                    if ui
-                        .add(egui::Button::image(img))
-                        .on_hover_text(e.name)
-                        .clicked()
-                    {
-                        open = Some(e);
-                    }
-                    ui.label(e.name);
-                });
-            }
-        });
+        for row in EXAMPLES
+            .iter()
+            .zip(&self.thumbnails)
+            .collect::<Vec<_>>()
+            .chunks(3)
+        {
+            ui.horizontal(|ui| {
+                for (e, tex) in row {
+                    ui.vertical(|ui| {
+                        let img = egui::Image::new(*tex).fit_to_exact_size(egui::vec2(80.0, 50.0));
+                        if ui
+                            .add(egui::Button::image(img))
+                            .on_hover_text(e.name)
+                            .clicked()
+                        {
+                            open = Some(*e);
+                        }
+                        ui.label(e.name);
+                    });
+                }
+            });
+        }
         if let Some(e) = open {
             self.open_json(e.name, e.json.as_bytes());
         }
