@@ -2,33 +2,15 @@
 //! (or per-problem) message with a non-zero exit, never a panic.
 
 use marbling_core::RgbaImage;
-use std::io::Write;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output, Stdio};
+use std::process::Output;
+
+mod common;
+use common::marbling;
 
 const GOOD: &str = r##"{"version":1,"width":120,"height":80,"background":"#f3ead7","ops":[
   {"type":"drop","center":[60,40],"radius":20,"color":"#1d3557"},
   {"type":"tine","origin":[0,40],"direction":[1,0],"alpha":20,"lambda":5}]}"##;
-
-fn marbling(args: &[&str], stdin: Option<&str>) -> Output {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_marbling"))
-        .args(args)
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("spawn marbling");
-    if let Some(text) = stdin {
-        // The command may exit (e.g. on a bad option) before reading its input.
-        let _ = child
-            .stdin
-            .take()
-            .expect("stdin")
-            .write_all(text.as_bytes());
-    }
-    drop(child.stdin.take());
-    child.wait_with_output().expect("wait")
-}
 
 /// A fresh scratch directory for one test.
 fn scratch(name: &str) -> PathBuf {
