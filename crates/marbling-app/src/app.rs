@@ -1,6 +1,7 @@
 //! The playground app: state, what changes it, and the frame loop.
 
 use crate::canvas_gpu::{CanvasGpu, CanvasStatus};
+use crate::export::{ExportSize, ExportStep, PngExport, export_file_name};
 use crate::platform::{self, PickSlot};
 use crate::playback::Playback;
 use crate::tools::{Gesture, ToolKind, ToolSettings};
@@ -64,6 +65,12 @@ pub struct MarblingApp {
     pub(crate) sheet_on_page: Option<[f64; 3]>,
     /// Recent frame intervals, seconds (for `data-frame-ms`).
     pub(crate) frame_times: std::collections::VecDeque<f64>,
+    /// The size Export PNG renders at.
+    pub(crate) export_size: ExportSize,
+    /// A PNG export in progress and the file name it will get.
+    pub(crate) export: Option<(PngExport, String)>,
+    /// Where this frame drew the panel's main controls (for `data-controls`).
+    pub(crate) controls: Vec<(&'static str, egui::Rect)>,
 }
 
 /// Default canvas of a new design, design pixels.
@@ -127,6 +134,9 @@ impl MarblingApp {
             new_size: NEW_SIZE,
             sheet_on_page: None,
             frame_times: std::collections::VecDeque::new(),
+            export_size: ExportSize::Screen,
+            export: None,
+            controls: Vec::new(),
         }
     }
 
@@ -239,6 +249,71 @@ impl MarblingApp {
         self.load(d, "a new design");
     }
 
+    /// Starts Export PNG of the current design at the chosen size.
+    pub(crate) fn start_png_export(&mut self, frame: &eframe::Frame) {
+        let Some(rs) = frame.wgpu_render_state() else {
+            self.error("Export PNG needs the GPU renderer, which is not available");
+            return;
+        };
+        let design = self.history.design();
+        let scale = self.export_size.scale(design);
+        match PngExport::start(&rs.device, &rs.queue, design, scale, self.antialias) {
+            Ok(export) => {
+                let name = export_file_name(design, export.size(), "png");
+                let (w, h) = export.size();
+                self.info(format!("exporting {w}×{h} PNG…"));
+                self.export = Some((export, name));
+            }
+            Err(e) => self.error(format!("Export PNG: {e}")),
+        }
+    }
+
+    /// Moves a running PNG export on by one tile; hands the file over when complete.
+    fn advance_export(&mut self, frame: &eframe::Frame, ctx: &egui::Context) {
+        let Some((mut export, name)) = self.export.take() else {
+            return;
+        };
+        let Some(rs) = frame.wgpu_render_state() else {
+            self.error("Export PNG: the GPU renderer went away");
+            return;
+        };
+        match export.step(&rs.device, &rs.queue) {
+            Ok(ExportStep::Working { .. }) => {
+                self.export = Some((export, name));
+                ctx.request_repaint();
+            }
+            Ok(ExportStep::Finished(image)) => match image.to_png() {
+                Ok(bytes) => match platform::save_file(&name, "image/png", &bytes) {
+                    Ok(()) => self.info(format!("exported {name}")),
+                    Err(e) => self.error(e),
+                },
+                Err(e) => self.error(format!("Export PNG: {e}")),
+            },
+            Err(e) => self.error(format!("Export PNG: {e}")),
+        }
+    }
+
+    /// Export SVG: the design's ink outlines traced forward (T = 1 design pixel).
+    pub(crate) fn export_svg(&mut self) {
+        let design = self.history.design();
+        let opts = marbling_vector::TraceOptions::default();
+        match marbling_vector::design_to_svg(design, &opts) {
+            Ok(svg) => {
+                let name = export_file_name(design, (design.width, design.height), "svg");
+                match platform::save_file(&name, "image/svg+xml", svg.as_bytes()) {
+                    Ok(()) => self.info(format!("exported {name} ({} bytes)", svg.len())),
+                    Err(e) => self.error(e),
+                }
+            }
+            Err(e) => self.error(format!("Export SVG: {e}")),
+        }
+    }
+
+    /// Remembers where a named control was drawn (for the `data-controls` hook).
+    pub(crate) fn control(&mut self, name: &'static str, response: &egui::Response) {
+        self.controls.push((name, response.rect));
+    }
+
     fn handle_shortcuts(&mut self, ctx: &egui::Context) {
         use egui::{Key, KeyboardShortcut, Modifiers};
         let redo = KeyboardShortcut::new(Modifiers::COMMAND | Modifiers::SHIFT, Key::Z);
@@ -331,6 +406,24 @@ impl MarblingApp {
                 1000.0 * self.frame_times.iter().sum::<f64>() / self.frame_times.len() as f64
             )
         });
+        let controls = self
+            .controls
+            .iter()
+            .map(|(n, r)| {
+                format!(
+                    "{n}={:.0},{:.0},{:.0},{:.0}",
+                    r.min.x,
+                    r.min.y,
+                    r.width(),
+                    r.height()
+                )
+            })
+            .collect::<Vec<_>>()
+            .join(";");
+        let exporting = self
+            .export
+            .as_ref()
+            .map(|(e, _)| format!("{}x{}", e.size().0, e.size().1));
         let wanted: Vec<(&'static str, Option<String>)> = vec![
             ("data-ready", ready.then(|| "1".to_owned())),
             ("data-backend", Some(self.backend.clone())),
@@ -338,6 +431,8 @@ impl MarblingApp {
             ("data-error", error),
             ("data-view", view),
             ("data-frame-ms", frame_ms),
+            ("data-controls", Some(controls)),
+            ("data-exporting", exporting),
         ];
         for (name, value) in &wanted {
             if !self.hooks.contains(&(*name, value.clone())) {
@@ -361,6 +456,8 @@ impl eframe::App for MarblingApp {
         self.check_fragment();
         self.handle_shortcuts(&ctx);
         self.advance_playback(&ctx);
+        self.advance_export(frame, &ctx);
+        self.controls.clear();
         egui::Panel::left("marbling_tools")
             .resizable(true)
             .default_size(300.0)

@@ -6,6 +6,7 @@
 mod app;
 mod canvas;
 pub mod canvas_gpu;
+pub mod export;
 pub mod gallery;
 pub mod history;
 mod overlay;

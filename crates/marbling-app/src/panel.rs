@@ -3,6 +3,7 @@
 
 use crate::PALETTES;
 use crate::app::MarblingApp;
+use crate::export::ExportSize;
 use crate::gallery::EXAMPLES;
 use crate::platform;
 use crate::playback::Playback;
@@ -19,6 +20,8 @@ impl MarblingApp {
         ui.heading("Marbling");
         self.file_section(ui);
         ui.separator();
+        self.export_section(ui, _frame);
+        ui.separator();
         self.tool_section(ui);
         ui.separator();
         self.ink_section(ui);
@@ -30,32 +33,32 @@ impl MarblingApp {
 
     fn file_section(&mut self, ui: &mut egui::Ui) {
         ui.horizontal_wrapped(|ui| {
-            if ui
+            let new = ui
                 .button("New")
-                .on_hover_text("A blank sheet of the size below")
-                .clicked()
-            {
+                .on_hover_text("A blank sheet of the size below");
+            self.control("new", &new);
+            if new.clicked() {
                 self.new_design();
             }
-            if ui
-                .button("Open…")
-                .on_hover_text("Open a design JSON file")
-                .clicked()
-            {
+            let open = ui.button("Open…").on_hover_text("Open a design JSON file");
+            self.control("open", &open);
+            if open.clicked() {
                 platform::pick_file(self.pick.clone(), ui.ctx().clone());
             }
-            if ui.button("Save JSON").clicked() {
+            let save = ui.button("Save JSON");
+            self.control("save-json", &save);
+            if save.clicked() {
                 let json = self.history.design().to_json_pretty();
                 match platform::save_file("design.json", "application/json", json.as_bytes()) {
                     Ok(()) => self.info("design saved as JSON"),
                     Err(e) => self.error(e),
                 }
             }
-            if ui
+            let copy = ui
                 .button("Copy link")
-                .on_hover_text("A link that opens this design")
-                .clicked()
-            {
+                .on_hover_text("A link that opens this design");
+            self.control("copy-link", &copy);
+            if copy.clicked() {
                 let link = self.share_link();
                 if let Some((_, fragment)) = link.split_once('#') {
                     platform::set_fragment(fragment);
@@ -79,6 +82,51 @@ impl MarblingApp {
                     .suffix(" px"),
             );
         });
+    }
+
+    fn export_section(&mut self, ui: &mut egui::Ui, frame: &eframe::Frame) {
+        ui.label(RichText::new("Export").strong());
+        ui.horizontal_wrapped(|ui| {
+            ui.label("PNG size");
+            for size in ExportSize::CHOICES {
+                let r = ui.selectable_value(&mut self.export_size, size, size.label());
+                self.control(size.control_name(), &r);
+            }
+        });
+        let design = self.history.design();
+        let scale = self.export_size.scale(design);
+        let size_text = match marbling_core::output_size(design, scale) {
+            Ok((w, h)) => format!("{w} × {h} px"),
+            Err(e) => e.to_string(),
+        };
+        ui.horizontal_wrapped(|ui| {
+            if let Some((export, _)) = &self.export {
+                let (w, h) = export.size();
+                ui.label(format!("rendering {w} × {h}…"));
+                let cancel = ui.button("Cancel");
+                self.control("export-cancel", &cancel);
+                if cancel.clicked() {
+                    self.export = None;
+                    self.info("export cancelled");
+                }
+            } else {
+                let png = ui
+                    .button("Export PNG")
+                    .on_hover_text(format!("An exact render, {size_text}"));
+                self.control("export-png", &png);
+                if png.clicked() {
+                    self.start_png_export(frame);
+                }
+                let svg = ui
+                    .button("Export SVG")
+                    .on_hover_text("Ink outlines traced forward, within 1 px");
+                self.control("export-svg", &svg);
+                if svg.clicked() {
+                    self.export_svg();
+                }
+            }
+        });
+        ui.label(RichText::new(size_text).weak());
     }
 
     fn tool_section(&mut self, ui: &mut egui::Ui) {
@@ -239,28 +287,27 @@ impl MarblingApp {
     fn history_section(&mut self, ui: &mut egui::Ui) {
         ui.label(RichText::new("History").strong());
         ui.horizontal(|ui| {
-            if ui
+            let undo = ui
                 .add_enabled(self.history.can_undo(), egui::Button::new("Undo"))
-                .on_hover_text("Ctrl/Cmd+Z")
-                .clicked()
-            {
+                .on_hover_text("Ctrl/Cmd+Z");
+            self.control("undo", &undo);
+            if undo.clicked() {
                 self.undo();
             }
-            if ui
+            let redo = ui
                 .add_enabled(self.history.can_redo(), egui::Button::new("Redo"))
-                .on_hover_text("Ctrl/Cmd+Shift+Z")
-                .clicked()
-            {
+                .on_hover_text("Ctrl/Cmd+Shift+Z");
+            self.control("redo", &redo);
+            if redo.clicked() {
                 self.redo();
             }
             let playing = self.playback.is_some();
-            if ui
-                .add_enabled(
-                    self.history.can_undo(),
-                    egui::Button::new(if playing { "Stop" } else { "Play" }),
-                )
-                .clicked()
-            {
+            let play = ui.add_enabled(
+                self.history.can_undo(),
+                egui::Button::new(if playing { "Stop" } else { "Play" }),
+            );
+            self.control("play", &play);
+            if play.clicked() {
                 self.playback = if playing {
                     None
                 } else {

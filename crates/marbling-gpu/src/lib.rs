@@ -53,15 +53,17 @@ pub mod params;
 mod preview;
 pub mod shaders;
 mod target;
+mod tiles;
 
 pub use context::GpuContext;
 pub use error::GpuError;
 pub use exact::{ExactRenderer, PreparedDesign, View};
 #[cfg(not(target_arch = "wasm32"))]
-pub use headless::{DEFAULT_TILE_SIDE, GpuRenderer, OUTPUT_FORMAT, tile_grid};
+pub use headless::{DEFAULT_TILE_SIDE, GpuRenderer, OUTPUT_FORMAT};
 pub use preview::{CACHE_FACTOR, CACHE_FORMAT, PreviewCache, PreviewRenderer};
 #[cfg(not(target_arch = "wasm32"))]
 pub use target::read_buffer;
 pub use target::{RenderTarget, copy_to_buffer};
+pub use tiles::tile_grid;
 /// The wgpu this crate is built on (so callers use the same version).
 pub use wgpu;
