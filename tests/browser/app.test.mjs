@@ -1,98 +1,13 @@
 // End-to-end tests of the web playground in Debian's Chromium, on both GPU paths:
-// WebGPU (SwiftShader Vulkan) and WebGL2 (ANGLE on SwiftShader). Run by `make browser-test`
-// after `trunk build --release`; they read the app's automation hooks on <body>
-// (data-ready, data-backend, data-ops, data-error, data-view, data-frame-ms).
+// WebGPU (SwiftShader Vulkan) and WebGL2 (ANGLE on SwiftShader): loading, tools, undo,
+// share links and autosave. Run by `make browser-test` after `trunk build --release`.
 import { after, before, describe, test } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
-import http from 'node:http';
 import os from 'node:os';
 import path from 'node:path';
-import { chromium } from 'playwright-core';
-import { PNG } from 'pngjs';
-
-const ROOT = path.resolve(import.meta.dirname, '../..');
-const DIST = path.join(ROOT, 'dist');
-const MARBLING = process.env.MARBLING_BIN || path.join(ROOT, 'target/release/marbling');
-const SHOTS = path.join(ROOT, 'docs/screenshots');
-const CHROMIUM = process.env.CHROMIUM || '/usr/bin/chromium';
-const READY_MS = 240_000;
-
-const COMMON = ['--no-sandbox', '--disable-quic', '--no-first-run', '--disable-background-networking',
-  '--disable-component-update', '--disable-sync', '--disable-gpu-sandbox'];
-const BACKENDS = {
-  webgpu: ['--enable-unsafe-webgpu', '--enable-features=Vulkan', '--use-vulkan=swiftshader',
-    '--use-angle=swiftshader', '--enable-unsafe-swiftshader'],
-  webgl2: ['--use-angle=swiftshader', '--enable-unsafe-swiftshader'],
-};
-
-/** Serves `dir` on 127.0.0.1 (a free port); resolves to its base URL. */
-function serve(dir) {
-  const types = { '.html': 'text/html', '.js': 'text/javascript', '.wasm': 'application/wasm',
-    '.png': 'image/png', '.json': 'application/json', '.css': 'text/css' };
-  const server = http.createServer((req, res) => {
-    const url = new URL(req.url, 'http://x');
-    const file = path.join(dir, url.pathname === '/' ? 'index.html' : decodeURIComponent(url.pathname));
-    if (!file.startsWith(dir) || !fs.existsSync(file) || fs.statSync(file).isDirectory()) {
-      res.writeHead(404).end();
-      return;
-    }
-    res.writeHead(200, { 'content-type': types[path.extname(file)] || 'application/octet-stream' });
-    fs.createReadStream(file).pipe(res);
-  });
-  return new Promise((resolve) => server.listen(0, '127.0.0.1', () => resolve({ server, url: `http://127.0.0.1:${server.address().port}/` })));
-}
-
-const decode = (buf) => PNG.sync.read(buf);
-
-/** Fraction of pixels of two equally sized decoded PNGs differing by more than `threshold`. */
-function differing(a, b, threshold) {
-  assert.equal(a.width, b.width);
-  assert.equal(a.height, b.height);
-  let n = 0;
-  for (let i = 0; i < a.data.length; i += 4) {
-    const d = Math.max(Math.abs(a.data[i] - b.data[i]), Math.abs(a.data[i + 1] - b.data[i + 1]), Math.abs(a.data[i + 2] - b.data[i + 2]));
-    if (d > threshold) n++;
-  }
-  return n / (a.width * a.height);
-}
-
-/** The top-left `w × h` of a decoded PNG. */
-function crop(img, w, h) {
-  const out = new PNG({ width: w, height: h });
-  for (let y = 0; y < h; y++) img.data.copy(out.data, y * w * 4, y * img.width * 4, (y * img.width + w) * 4);
-  return out;
-}
-
-async function attr(page, name) {
-  return page.evaluate((n) => document.body.getAttribute(n), name);
-}
-
-async function waitReady(page) {
-  await page.waitForFunction(() => document.body.dataset.ready === '1', null, { timeout: READY_MS });
-}
-
-/** Waits until the design has `ops` ops and its exact frame is on screen. */
-async function waitOps(page, ops) {
-  await page.waitForFunction((n) => document.body.dataset.ops === String(n) && document.body.dataset.ready === '1', ops, { timeout: READY_MS });
-}
-
-/** The sheet's position on the page and its scale, from `data-view`. */
-async function sheet(page) {
-  const [x, y, scale] = (await attr(page, 'data-view')).split(',').map(Number);
-  return { x, y, scale };
-}
-
-/** A screenshot of the page region of `w × h` design pixels at the sheet's corner. */
-async function shootSheet(page, w, h) {
-  // Park the pointer on the panel so no tool footprint is drawn over the sheet.
-  await page.mouse.move(2, 2);
-  await page.waitForTimeout(300);
-  const s = await sheet(page);
-  const clip = { x: Math.round(s.x), y: Math.round(s.y), width: Math.floor(w * s.scale), height: Math.floor(h * s.scale) };
-  return { img: decode(await page.screenshot({ clip })), ...s };
-}
+import { BACKENDS, MARBLING, ROOT, SHOTS, attr, crop, decode, differing, launch, openPage, sheet, shootSheet, waitOps } from './harness.mjs';
 
 const STONE = JSON.parse(fs.readFileSync(path.join(ROOT, 'examples/designs/stone.json'), 'utf8'));
 
@@ -101,26 +16,14 @@ for (const backend of Object.keys(BACKENDS)) {
     let browser;
     let site;
     before(async () => {
-      assert.ok(fs.existsSync(path.join(DIST, 'index.html')), 'dist/ is missing: run trunk build --release first');
-      site = await serve(DIST);
-      browser = await chromium.launch({ executablePath: CHROMIUM, headless: true, args: [...COMMON, ...BACKENDS[backend]] });
+      ({ browser, site } = await launch(backend));
     });
     after(async () => {
       await browser?.close();
       site?.server.close();
     });
 
-    /** A fresh page (empty storage) with console errors collected. */
-    async function open(hash = '') {
-      const context = await browser.newContext({ viewport: { width: 1300, height: 820 }, deviceScaleFactor: 1 });
-      const page = await context.newPage();
-      const errors = [];
-      page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
-      page.on('pageerror', (e) => errors.push(String(e)));
-      await page.goto(site.url + hash);
-      await waitReady(page);
-      return { page, context, errors };
-    }
+    const open = (hash = '') => openPage(browser, site, hash);
 
     test('loads without console errors on the expected backend', async () => {
       const { page, context, errors } = await open();

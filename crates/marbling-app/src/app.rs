@@ -4,6 +4,7 @@ use crate::canvas_gpu::{CanvasGpu, CanvasStatus};
 use crate::export::{ExportSize, ExportStep, PngExport, export_file_name};
 use crate::platform::{self, PickSlot};
 use crate::playback::Playback;
+use crate::recovery::{self, LostFlag, ParkedState};
 use crate::tools::{Gesture, ToolKind, ToolSettings};
 use crate::view::ViewState;
 use crate::{History, PALETTES};
@@ -71,6 +72,10 @@ pub struct MarblingApp {
     pub(crate) export: Option<(PngExport, String)>,
     /// Where this frame drew the panel's main controls (for `data-controls`).
     pub(crate) controls: Vec<(&'static str, egui::Rect)>,
+    /// Raised when the GPU device is lost.
+    pub(crate) lost: LostFlag,
+    /// True once the state is parked for the renderer's restart.
+    pub(crate) parked: bool,
 }
 
 /// Default canvas of a new design, design pixels.
@@ -80,10 +85,13 @@ impl MarblingApp {
     /// Creates the app: GPU resources, then the design from a share link, else the
     /// autosave, else the first gallery example.
     pub fn new(cc: &eframe::CreationContext<'_>) -> Self {
+        let lost = LostFlag::default();
         let (gpu, backend) = match &cc.wgpu_render_state {
             Some(rs) => {
                 let gpu = CanvasGpu::new(&rs.device);
                 rs.renderer.write().callback_resources.insert(gpu);
+                lost.watch(&rs.device, &cc.egui_ctx);
+                platform::expose_device_loss(&rs.device);
                 (true, backend_name(rs.adapter.get_info().backend))
             }
             None => (false, "none".to_owned()),
@@ -91,6 +99,13 @@ impl MarblingApp {
         let fallback =
             Design::from_json(crate::gallery::EXAMPLES[0].json).unwrap_or_else(|_| blank(NEW_SIZE));
         let mut app = Self::with_design(fallback, backend, gpu);
+        app.lost = lost;
+        if let Some(parked) = recovery::take_parked() {
+            app.unpark(parked);
+            app.refresh();
+            app.info("the GPU device was lost: the renderer was restarted, your work is kept");
+            return app;
+        }
         if let Some(json) = platform::load_autosave(cc.storage) {
             match Design::from_json(&json) {
                 Ok(d) => app.history.replace(d),
@@ -137,6 +152,50 @@ impl MarblingApp {
             export_size: ExportSize::Screen,
             export: None,
             controls: Vec::new(),
+            lost: LostFlag::default(),
+            parked: false,
+        }
+    }
+
+    /// The editing state a restarted renderer must keep.
+    fn park_state(&self) -> ParkedState {
+        ParkedState {
+            history: self.history.clone(),
+            tool: self.tool,
+            settings: self.settings,
+            palette: self.palette,
+            ink: self.ink,
+            antialias: self.antialias,
+            last_fragment: self.last_fragment.clone(),
+        }
+    }
+
+    fn unpark(&mut self, p: ParkedState) {
+        self.history = p.history;
+        self.tool = p.tool;
+        self.settings = p.settings;
+        self.palette = p.palette;
+        self.ink = p.ink;
+        self.antialias = p.antialias;
+        self.last_fragment = p.last_fragment;
+    }
+
+    /// Reacts to a lost GPU device once: parks the editing state for the restarted
+    /// renderer (web) or says how to go on (native, where the autosave keeps the work).
+    fn check_device_lost(&mut self) {
+        if !self.lost.is_raised() || self.parked {
+            return;
+        }
+        self.parked = true;
+        self.export = None;
+        self.autosave_pending = true;
+        recovery::park(self.park_state());
+        if cfg!(target_arch = "wasm32") {
+            self.info("the GPU device was lost: restarting the renderer…");
+        } else {
+            self.error(
+                "the GPU device was lost: your design is autosaved; restart the app to go on",
+            );
         }
     }
 
@@ -433,6 +492,10 @@ impl MarblingApp {
             ("data-frame-ms", frame_ms),
             ("data-controls", Some(controls)),
             ("data-exporting", exporting),
+            (
+                "data-recovered",
+                (recovery::recoveries() > 0).then(|| recovery::recoveries().to_string()),
+            ),
         ];
         for (name, value) in &wanted {
             if !self.hooks.contains(&(*name, value.clone())) {
@@ -452,6 +515,7 @@ impl eframe::App for MarblingApp {
             self.frame_times.pop_front();
         }
         self.frame_times.push_back(dt);
+        self.check_device_lost();
         self.poll_picked_file();
         self.check_fragment();
         self.handle_shortcuts(&ctx);

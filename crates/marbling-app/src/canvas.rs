@@ -15,6 +15,7 @@ impl MarblingApp {
     /// Draws the canvas and handles its input.
     pub(crate) fn canvas(&mut self, ui: &mut egui::Ui, frame: &mut eframe::Frame) {
         let (rect, response) = ui.allocate_exact_size(ui.available_size(), Sense::click_and_drag());
+        self.control("canvas", &response);
         let painter = ui.painter_at(rect);
         painter.rect_filled(rect, 0.0, Color32::from_gray(48));
         let size = [f64::from(rect.width()), f64::from(rect.height())];
@@ -25,7 +26,7 @@ impl MarblingApp {
         let pointer = response.hover_pos();
         let local = |p: Pos2| [f64::from(p.x - rect.min.x), f64::from(p.y - rect.min.y)];
 
-        self.navigate(ui, &response, rect);
+        self.navigate(ui, &response, rect, ppp);
         let view = self.view.unwrap_or(view);
         self.drive_tool(ui, &response, rect, &view);
 
@@ -68,8 +69,12 @@ impl MarblingApp {
     }
 
     /// Pan (middle drag, space + drag, two fingers) and zoom (wheel, pinch).
-    fn navigate(&mut self, ui: &egui::Ui, response: &egui::Response, rect: Rect) {
+    /// After each zoom the view is snapped to physical pixels (`ppp` per point), so every
+    /// zoom level samples exactly the points of a CPU render at that scale (whole-pixel
+    /// pans keep it snapped).
+    fn navigate(&mut self, ui: &egui::Ui, response: &egui::Response, rect: Rect, ppp: f64) {
         let Some(view) = &mut self.view else { return };
+        let before = *view;
         let space = ui.input(|i| i.key_down(egui::Key::Space));
         if response.dragged_by(PointerButton::Middle)
             || (space && response.dragged_by(PointerButton::Primary))
@@ -90,6 +95,9 @@ impl MarblingApp {
                     [f64::from(p.x - rect.min.x), f64::from(p.y - rect.min.y)],
                 );
             }
+        }
+        if view.zoom != before.zoom {
+            *view = view.snapped(ppp);
         }
     }
 

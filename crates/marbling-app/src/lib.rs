@@ -14,6 +14,7 @@ pub mod palettes;
 mod panel;
 pub mod platform;
 pub mod playback;
+pub mod recovery;
 pub mod tools;
 pub mod view;
 

@@ -8,6 +8,9 @@ pub type PickedFile = Result<(String, Vec<u8>), String>;
 /// Where an asynchronous file pick delivers its result.
 pub type PickSlot = std::sync::Arc<std::sync::Mutex<Option<PickedFile>>>;
 
+/// The id of the page's `<canvas>` the app draws into.
+pub const CANVAS_ID: &str = "marbling_canvas";
+
 /// Storage key of the autosaved design.
 pub const AUTOSAVE_KEY: &str = "marbling.autosave.v1";
 
@@ -106,6 +109,38 @@ mod imp {
         });
     }
 
+    /// Calls `f` when the page's canvas loses its WebGL context.
+    pub fn on_context_lost(f: impl Fn() + 'static) {
+        use wasm_bindgen::closure::Closure;
+        let Some(canvas) = window()
+            .and_then(|w| w.document())
+            .and_then(|d| d.get_element_by_id(super::CANVAS_ID))
+        else {
+            return;
+        };
+        let listener = Closure::<dyn Fn(web_sys::Event)>::new(move |e: web_sys::Event| {
+            e.prevent_default();
+            f();
+        });
+        let _ = canvas.add_event_listener_with_callback(
+            "webglcontextlost",
+            listener.as_ref().unchecked_ref(),
+        );
+        // The canvas is replaced on restart; the listener lives as long as the page.
+        listener.forget();
+    }
+
+    /// Defines `window.marblingLoseDevice()`, which destroys the GPU device as a driver
+    /// reset would: how the browser tests check that the app survives it.
+    pub fn expose_device_loss(device: &wgpu::Device) {
+        use wasm_bindgen::closure::Closure;
+        let Some(w) = window() else { return };
+        let device = device.clone();
+        let f = Closure::<dyn Fn()>::new(move || device.destroy());
+        let _ = js_sys::Reflect::set(&w, &"marblingLoseDevice".into(), f.as_ref());
+        f.forget();
+    }
+
     /// Sets (or with `None` removes) a `data-…` attribute on `<body>`.
     pub fn set_body_attribute(name: &str, value: Option<&str>) {
         let Some(body) = window().and_then(|w| w.document()).and_then(|d| d.body()) else {
@@ -175,6 +210,9 @@ mod imp {
             *s = Some(result);
         }
     }
+
+    /// Desktop windows have no page to expose a test hook on.
+    pub fn expose_device_loss(_device: &wgpu::Device) {}
 
     /// Desktop windows have no `<body>`.
     pub fn set_body_attribute(_name: &str, _value: Option<&str>) {}

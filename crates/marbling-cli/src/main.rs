@@ -7,6 +7,7 @@ mod bench_svg;
 mod input;
 mod link;
 mod noise;
+mod random;
 mod render;
 mod size;
 mod svg;
@@ -37,6 +38,8 @@ enum Command {
     Noise(noise::NoiseArgs),
     /// Export a design as SVG: each ink region's outline traced forward through later ops.
     Svg(svg::SvgArgs),
+    /// Write a random design (the benchmarks' synthetic designs) as JSON.
+    Random(random::RandomArgs),
     /// Measure vector export time, vertex count and SVG size on synthetic designs.
     BenchSvg(bench_svg::BenchSvgArgs),
 }
@@ -51,6 +54,7 @@ fn main() -> ExitCode {
         Command::Noise(args) => noise::run(&args),
         Command::Svg(args) => svg::run(&args),
         Command::BenchSvg(args) => bench_svg::run(&args),
+        Command::Random(args) => random::run(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

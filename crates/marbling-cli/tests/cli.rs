@@ -257,3 +257,32 @@ fn link_round_trips_and_broken_links_fail() {
         "share link: no \"#d=\" design in it",
     );
 }
+
+#[test]
+fn random_writes_a_valid_reproducible_design() {
+    let dir = scratch("random");
+    let out = dir.join("r.json").to_string_lossy().into_owned();
+    let o = marbling(
+        &[
+            "random", "--ops", "1000", "--size", "1024x768", "--seed", "3", "-o", &out,
+        ],
+        None,
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = std::fs::read_to_string(&out).expect("written");
+    let d = marbling_core::Design::from_json(&text).expect("valid design");
+    assert_eq!((d.width, d.height, d.ops.len()), (1024, 768, 1000));
+    let again = marbling(
+        &[
+            "random", "--ops", "1000", "--size", "1024x768", "--seed", "3", "-o", "-",
+        ],
+        None,
+    );
+    assert_eq!(stdout(&again).trim_end(), text.trim_end());
+    let other = marbling(&["random", "--ops", "1000", "--seed", "4", "-o", "-"], None);
+    assert_ne!(stdout(&other).trim_end(), text.trim_end());
+    assert_fails_with(
+        &marbling(&["random", "--ops", "100001", "-o", "-"], None),
+        "--ops must be at most 100000",
+    );
+}

@@ -1,0 +1,144 @@
+//! Surviving a lost GPU device (a driver reset, a WebGL context taken away, a WebGPU
+//! device destroyed): the app notices, parks its editing state here, and the page's
+//! start-up loop (`main.rs`, wasm32) tears the renderer down and starts a fresh one on a
+//! new canvas, which picks the parked state up. The design, its undo/redo history and
+//! the tool settings survive; only GPU resources are rebuilt.
+//!
+//! Natively eframe cannot reopen its window's device, so the app says what happened and
+//! relies on the autosave (written after every op) instead.
+
+use crate::History;
+use crate::tools::{ToolKind, ToolSettings};
+use marbling_core::{Antialias, Rgb8};
+use std::cell::RefCell;
+use std::sync::Arc;
+use std::sync::atomic::{AtomicBool, AtomicU32, Ordering};
+
+/// What an app hands over to its successor after the device was lost.
+#[derive(Clone, Debug)]
+pub struct ParkedState {
+    /// The design with its undo/redo stacks.
+    pub history: History,
+    /// The selected tool.
+    pub tool: ToolKind,
+    /// The tools' parameters.
+    pub settings: ToolSettings,
+    /// Index into [`crate::PALETTES`].
+    pub palette: usize,
+    /// The current ink.
+    pub ink: Rgb8,
+    /// Antialiasing of exact frames.
+    pub antialias: Antialias,
+    /// The fragment already loaded (so the successor does not reload the link).
+    pub last_fragment: Option<String>,
+}
+
+thread_local! {
+    static PARKED: RefCell<Option<ParkedState>> = const { RefCell::new(None) };
+}
+
+/// Set by the app when its device is gone; the start-up loop restarts the renderer.
+static RESTART: AtomicBool = AtomicBool::new(false);
+
+/// How many times the renderer was restarted (shown as `data-recovered`).
+static RECOVERIES: AtomicU32 = AtomicU32::new(0);
+
+/// Parks `state` and asks for a restart.
+pub fn park(state: ParkedState) {
+    PARKED.with(|p| *p.borrow_mut() = Some(state));
+    RESTART.store(true, Ordering::SeqCst);
+}
+
+/// The parked state, once (the new app takes it).
+pub fn take_parked() -> Option<ParkedState> {
+    PARKED.with(|p| p.borrow_mut().take())
+}
+
+/// True once after [`park`]: the caller must restart the renderer now.
+pub fn take_restart_request() -> bool {
+    let asked = RESTART.swap(false, Ordering::SeqCst);
+    if asked {
+        RECOVERIES.fetch_add(1, Ordering::SeqCst);
+    }
+    asked
+}
+
+/// Restarts so far.
+pub fn recoveries() -> u32 {
+    RECOVERIES.load(Ordering::SeqCst)
+}
+
+/// A flag raised when the device is lost, with what is known about why.
+#[derive(Clone, Debug, Default)]
+pub struct LostFlag(Arc<AtomicBool>);
+
+impl LostFlag {
+    /// Raises the flag.
+    pub fn raise(&self) {
+        self.0.store(true, Ordering::SeqCst);
+    }
+
+    /// True once the device is lost.
+    pub fn is_raised(&self) -> bool {
+        self.0.load(Ordering::SeqCst)
+    }
+
+    /// Watches `device` (and on the web, the page's canvas for `webglcontextlost`):
+    /// raises the flag and wakes the UI when it is lost.
+    pub fn watch(&self, device: &wgpu::Device, ctx: &egui::Context) {
+        let flag = self.clone();
+        let ctx_lost = ctx.clone();
+        device.set_device_lost_callback(move |reason, message| {
+            log::warn!("GPU device lost ({reason:?}): {message}");
+            flag.raise();
+            ctx_lost.request_repaint();
+        });
+        #[cfg(target_arch = "wasm32")]
+        crate::platform::on_context_lost({
+            let flag = self.clone();
+            let ctx = ctx.clone();
+            move || {
+                flag.raise();
+                ctx.request_repaint();
+            }
+        });
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use marbling_core::Design;
+
+    #[test]
+    fn parked_state_is_handed_over_once_with_one_restart() {
+        let history = History::new(Design::new(10, 10, Rgb8::new(1, 2, 3)));
+        assert!(!take_restart_request());
+        park(ParkedState {
+            history: history.clone(),
+            tool: ToolKind::Rake,
+            settings: ToolSettings::default(),
+            palette: 2,
+            ink: Rgb8::new(9, 9, 9),
+            antialias: Antialias::Grid4,
+            last_fragment: None,
+        });
+        let before = recoveries();
+        assert!(take_restart_request());
+        assert!(!take_restart_request());
+        assert_eq!(recoveries(), before + 1);
+        let parked = take_parked().expect("parked");
+        assert_eq!(parked.history, history);
+        assert_eq!(parked.tool, ToolKind::Rake);
+        assert!(take_parked().is_none());
+    }
+
+    #[test]
+    fn the_lost_flag_is_shared_by_its_clones() {
+        let flag = LostFlag::default();
+        let other = flag.clone();
+        assert!(!flag.is_raised());
+        other.raise();
+        assert!(flag.is_raised());
+    }
+}

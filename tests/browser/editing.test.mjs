@@ -1,0 +1,167 @@
+// The playground's files, exports, history playback and navigation, end to end in
+// Chromium on WebGPU and WebGL2 (SwiftShader): buttons are clicked where the app says it
+// drew them (data-controls), downloads and file choosers are the browser's own.
+import { after, before, describe, test } from 'node:test';
+import assert from 'node:assert/strict';
+import { execFileSync } from 'node:child_process';
+import fs from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
+import { PNG } from 'pngjs';
+import {
+  BACKENDS, MARBLING, READY_MS, SHOTS, attr, clickControl, controls, crop, decode, differing, download, example,
+  launch, openPage, sheet, shootSheet, waitOps, waitReady,
+} from './harness.mjs';
+
+const STONE = example('stone');
+const GEL = example('gel-git');
+const tmp = (name) => path.join(os.tmpdir(), `marbling-${process.pid}-${name}`);
+
+/** Renders `file` with the CLI at `scale` (rgss, as the app) and decodes it. */
+function cliRender(file, scale, name) {
+  const out = tmp(name);
+  execFileSync(MARBLING, ['render', file, '-o', out, '--scale', String(scale), '--aa', 'rgss']);
+  return decode(fs.readFileSync(out));
+}
+
+/** The `x, y` window of `w × h` pixels of a decoded PNG. */
+function window(img, x, y, w, h) {
+  const out = new PNG({ width: w, height: h });
+  for (let r = 0; r < h; r++) img.data.copy(out.data, r * w * 4, ((y + r) * img.width + x) * 4, ((y + r) * img.width + x + w) * 4);
+  return out;
+}
+
+/** Waits until `data-view` stops changing and the exact frame is on screen. */
+async function settle(page) {
+  let last = '';
+  for (let i = 0; i < 400; i++) {
+    await page.waitForTimeout(250);
+    const now = await attr(page, 'data-view');
+    if (now === last && (await attr(page, 'data-ready')) === '1') return;
+    last = now;
+  }
+  throw new Error('the view never settled');
+}
+
+for (const backend of Object.keys(BACKENDS)) {
+  describe(`files, exports, playback and navigation on ${backend}`, () => {
+    let browser;
+    let site;
+    before(async () => {
+      ({ browser, site } = await launch(backend));
+    });
+    after(async () => {
+      await browser?.close();
+      site?.server.close();
+    });
+
+    test('Save JSON downloads the design; Open loads a file; a bad file keeps the design', async () => {
+      const { page, context, errors } = await openPage(browser, site);
+      const saved = await download(page, 'save-json');
+      assert.equal(saved.name, 'design.json');
+      assert.deepEqual(JSON.parse(saved.bytes.toString('utf8')), STONE.design);
+
+      const [chooser] = await Promise.all([page.waitForEvent('filechooser', { timeout: READY_MS }), clickControl(page, 'open')]);
+      await chooser.setFiles(GEL.file);
+      await waitOps(page, GEL.design.ops.length);
+      assert.equal(await attr(page, 'data-error'), null);
+
+      const bad = tmp('bad.json');
+      const broken = structuredClone(STONE.design);
+      broken.ops[3].radius = -2;
+      fs.writeFileSync(bad, JSON.stringify(broken));
+      const [again] = await Promise.all([page.waitForEvent('filechooser', { timeout: READY_MS }), clickControl(page, 'open')]);
+      await again.setFiles(bad);
+      await page.waitForFunction(() => document.body.dataset.error !== undefined, null, { timeout: READY_MS });
+      assert.match(await attr(page, 'data-error'), /ops\[3\]\.radius: must be > 0/);
+      assert.equal(await attr(page, 'data-ops'), String(GEL.design.ops.length), 'the current design was lost');
+      assert.deepEqual(errors, []);
+      await context.close();
+    });
+
+    test('Export PNG at 2× equals `marbling render --scale 2`', async () => {
+      const { page, context, errors } = await openPage(browser, site);
+      await clickControl(page, 'export-size-2x');
+      const png = await download(page, 'export-png');
+      const w = STONE.design.width * 2;
+      const h = STONE.design.height * 2;
+      assert.equal(png.name, `marbling-${STONE.design.ops.length}ops-${w}x${h}.png`);
+      const img = decode(png.bytes);
+      assert.deepEqual([img.width, img.height], [w, h]);
+      const cpu = cliRender(STONE.file, 2, `export-${backend}.png`);
+      const frac = differing(cpu, img, 24);
+      console.log(`${backend}: Export PNG 2× vs CLI: ${(100 * frac).toFixed(3)} % of ${w}×${h} px differ by > 24/255`);
+      assert.ok(frac <= 0.01, `${(100 * frac).toFixed(2)} % of pixels differ`);
+      assert.equal(await attr(page, 'data-exporting'), null);
+      assert.deepEqual(errors, []);
+      await context.close();
+    });
+
+    test('Export SVG downloads what `marbling svg` writes', async () => {
+      const { page, context, errors } = await openPage(browser, site);
+      const svg = await download(page, 'export-svg');
+      assert.equal(svg.name, `marbling-${STONE.design.ops.length}ops-${STONE.design.width}x${STONE.design.height}.svg`);
+      const out = tmp(`stone-${backend}.svg`);
+      execFileSync(MARBLING, ['svg', STONE.file, '-o', out]);
+      assert.ok(svg.bytes.equals(fs.readFileSync(out)), 'the app and the CLI wrote different SVGs');
+      assert.match(svg.bytes.toString('utf8', 0, 200), /<svg /);
+      assert.deepEqual(errors, []);
+      await context.close();
+    });
+
+    test('Play animates the history and ends on the same picture', async () => {
+      const { page, context, errors } = await openPage(browser, site);
+      const n = STONE.design.ops.length;
+      const start = await shootSheet(page, STONE.design.width, STONE.design.height);
+      await clickControl(page, 'play');
+      await page.waitForFunction((k) => Number(document.body.dataset.ops) < k, n, { timeout: READY_MS });
+      const during = Number(await attr(page, 'data-ops'));
+      assert.ok(during < n, `playback did not start from the beginning (${during} ops shown)`);
+      await waitOps(page, n);
+      const end = await shootSheet(page, STONE.design.width, STONE.design.height);
+      assert.ok(differing(start.img, end.img, 2) < 0.001, 'the played design differs from the design');
+      assert.deepEqual(errors, []);
+      await context.close();
+    });
+
+    test('wheel zoom renders exactly at the new scale; a middle drag pans', async () => {
+      const { page, context, errors } = await openPage(browser, site);
+      const fit = await sheet(page);
+      const c = (await controls(page)).canvas;
+      const at = { x: fit.x + 200 * fit.scale, y: fit.y + 150 * fit.scale };
+      await page.mouse.move(at.x, at.y);
+      for (let i = 0; i < 4; i++) await page.mouse.wheel(0, -120);
+      await settle(page);
+      const zoomed = await sheet(page);
+      assert.ok(zoomed.scale > 1.5 * fit.scale, `zoom went from ${fit.scale} to ${zoomed.scale}`);
+      // The canvas region inside the sheet, compared with a CLI render at that scale.
+      const x0 = Math.ceil(Math.max(c.x + 2, zoomed.x));
+      const y0 = Math.ceil(Math.max(c.y + 2, zoomed.y));
+      const x1 = Math.floor(Math.min(c.x + c.w - 2, zoomed.x + STONE.design.width * zoomed.scale));
+      const y1 = Math.floor(Math.min(c.y + c.h - 2, zoomed.y + STONE.design.height * zoomed.scale));
+      await page.mouse.move(2, 2);
+      await page.waitForTimeout(300);
+      const shot = decode(await page.screenshot({ clip: { x: x0, y: y0, width: x1 - x0, height: y1 - y0 } }));
+      const cpu = cliRender(STONE.file, zoomed.scale, `zoom-${backend}.png`);
+      const ox = Math.round(x0 - zoomed.x);
+      const oy = Math.round(y0 - zoomed.y);
+      const frac = differing(window(cpu, ox, oy, x1 - x0, y1 - y0), shot, 24);
+      console.log(`${backend}: zoomed ×${(zoomed.scale / fit.scale).toFixed(2)} vs CLI at scale ${zoomed.scale.toFixed(4)}: ${(100 * frac).toFixed(3)} % differ`);
+      assert.ok(frac <= 0.01, `${(100 * frac).toFixed(2)} % of pixels differ at zoom`);
+      await page.screenshot({ path: path.join(SHOTS, `zoomed-${backend}.png`) });
+
+      await page.mouse.move(c.x + c.w / 2, c.y + c.h / 2);
+      await page.mouse.down({ button: 'middle' });
+      for (let i = 1; i <= 10; i++) await page.mouse.move(c.x + c.w / 2 + 6 * i, c.y + c.h / 2 + 4 * i);
+      await page.mouse.up({ button: 'middle' });
+      await settle(page);
+      const panned = await sheet(page);
+      assert.ok(Math.abs(panned.x - zoomed.x - 60) < 1.01 && Math.abs(panned.y - zoomed.y - 40) < 1.01,
+        `pan moved the sheet by ${panned.x - zoomed.x}, ${panned.y - zoomed.y}`);
+      assert.equal(panned.scale, zoomed.scale);
+      assert.equal(await attr(page, 'data-ops'), String(STONE.design.ops.length), 'navigation changed the design');
+      assert.deepEqual(errors, []);
+      await context.close();
+    });
+  });
+}

@@ -1,0 +1,146 @@
+// Shared by the browser tests: a static server for dist/, Chromium on each GPU path,
+// pixel comparison of screenshots, and the app's automation hooks on <body>
+// (data-ready, data-backend, data-ops, data-error, data-view, data-frame-ms,
+// data-controls, data-exporting, data-recovered).
+import assert from 'node:assert/strict';
+import fs from 'node:fs';
+import http from 'node:http';
+import path from 'node:path';
+import { chromium } from 'playwright-core';
+import { PNG } from 'pngjs';
+
+export const ROOT = path.resolve(import.meta.dirname, '../..');
+export const DIST = path.join(ROOT, 'dist');
+export const MARBLING = process.env.MARBLING_BIN || path.join(ROOT, 'target/release/marbling');
+export const SHOTS = path.join(ROOT, 'docs/screenshots');
+const CHROMIUM = process.env.CHROMIUM || '/usr/bin/chromium';
+export const READY_MS = 240_000;
+
+const COMMON = ['--no-sandbox', '--disable-quic', '--no-first-run', '--disable-background-networking',
+  '--disable-component-update', '--disable-sync', '--disable-gpu-sandbox'];
+export const BACKENDS = {
+  webgpu: ['--enable-unsafe-webgpu', '--enable-features=Vulkan', '--use-vulkan=swiftshader',
+    '--use-angle=swiftshader', '--enable-unsafe-swiftshader'],
+  webgl2: ['--use-angle=swiftshader', '--enable-unsafe-swiftshader'],
+};
+
+/** Serves `dir` on 127.0.0.1 (a free port); resolves to its base URL. */
+export function serve(dir) {
+  const types = { '.html': 'text/html', '.js': 'text/javascript', '.wasm': 'application/wasm',
+    '.png': 'image/png', '.json': 'application/json', '.css': 'text/css' };
+  const server = http.createServer((req, res) => {
+    const url = new URL(req.url, 'http://x');
+    const file = path.join(dir, url.pathname === '/' ? 'index.html' : decodeURIComponent(url.pathname));
+    if (!file.startsWith(dir) || !fs.existsSync(file) || fs.statSync(file).isDirectory()) {
+      res.writeHead(404).end();
+      return;
+    }
+    res.writeHead(200, { 'content-type': types[path.extname(file)] || 'application/octet-stream' });
+    fs.createReadStream(file).pipe(res);
+  });
+  return new Promise((resolve) => server.listen(0, '127.0.0.1', () => resolve({ server, url: `http://127.0.0.1:${server.address().port}/` })));
+}
+
+export const decode = (buf) => PNG.sync.read(buf);
+
+/** Fraction of pixels of two equally sized decoded PNGs differing by more than `threshold`. */
+export function differing(a, b, threshold) {
+  assert.equal(a.width, b.width);
+  assert.equal(a.height, b.height);
+  let n = 0;
+  for (let i = 0; i < a.data.length; i += 4) {
+    const d = Math.max(Math.abs(a.data[i] - b.data[i]), Math.abs(a.data[i + 1] - b.data[i + 1]), Math.abs(a.data[i + 2] - b.data[i + 2]));
+    if (d > threshold) n++;
+  }
+  return n / (a.width * a.height);
+}
+
+/** The top-left `w × h` of a decoded PNG. */
+export function crop(img, w, h) {
+  const out = new PNG({ width: w, height: h });
+  for (let y = 0; y < h; y++) img.data.copy(out.data, y * w * 4, y * img.width * 4, (y * img.width + w) * 4);
+  return out;
+}
+
+export async function attr(page, name) {
+  return page.evaluate((n) => document.body.getAttribute(n), name);
+}
+
+export async function waitReady(page) {
+  await page.waitForFunction(() => document.body.dataset.ready === '1', null, { timeout: READY_MS });
+}
+
+/** Waits until the design has `ops` ops and its exact frame is on screen. */
+export async function waitOps(page, ops) {
+  await page.waitForFunction((n) => document.body.dataset.ops === String(n) && document.body.dataset.ready === '1', ops, { timeout: READY_MS });
+}
+
+/** The sheet's position on the page and its scale, from `data-view`. */
+export async function sheet(page) {
+  const [x, y, scale] = (await attr(page, 'data-view')).split(',').map(Number);
+  return { x, y, scale };
+}
+
+/** A screenshot of the page region of `w × h` design pixels at the sheet's corner. */
+export async function shootSheet(page, w, h) {
+  // Park the pointer on the panel so no tool footprint is drawn over the sheet.
+  await page.mouse.move(2, 2);
+  await page.waitForTimeout(300);
+  const s = await sheet(page);
+  const clip = { x: Math.round(s.x), y: Math.round(s.y), width: Math.floor(w * s.scale), height: Math.floor(h * s.scale) };
+  return { img: decode(await page.screenshot({ clip })), ...s };
+}
+
+
+/** Chromium with the flags of `backend`, and the site served from dist/. */
+export async function launch(backend) {
+  assert.ok(fs.existsSync(path.join(DIST, 'index.html')), 'dist/ is missing: run trunk build --release first');
+  const site = await serve(DIST);
+  const browser = await chromium.launch({ executablePath: CHROMIUM, headless: true, args: [...COMMON, ...BACKENDS[backend]] });
+  return { site, browser };
+}
+
+/** A fresh page (empty storage) at `hash`, ready, with console errors collected. */
+export async function openPage(browser, site, hash = '', viewport = { width: 1300, height: 820 }) {
+  const context = await browser.newContext({ viewport, deviceScaleFactor: 1, acceptDownloads: true });
+  const page = await context.newPage();
+  const errors = [];
+  page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
+  page.on('pageerror', (e) => errors.push(String(e)));
+  await page.goto(site.url + hash);
+  await waitReady(page);
+  return { page, context, errors };
+}
+
+/** Where the app drew its named controls, from `data-controls` (CSS pixels). */
+export async function controls(page) {
+  const text = (await attr(page, 'data-controls')) ?? '';
+  const out = {};
+  for (const entry of text.split(';').filter(Boolean)) {
+    const [name, rect] = entry.split('=');
+    const [x, y, w, h] = rect.split(',').map(Number);
+    out[name] = { x, y, w, h };
+  }
+  return out;
+}
+
+/** Clicks the control named `name` (a real click through egui). */
+export async function clickControl(page, name) {
+  const all = await controls(page);
+  const c = all[name];
+  assert.ok(c, `no control ${name} in data-controls (have: ${Object.keys(all).join(', ')})`);
+  await page.mouse.click(c.x + c.w / 2, c.y + c.h / 2);
+}
+
+/** Clicks `name` and returns the file it downloads: { name, bytes }. */
+export async function download(page, name) {
+  const [dl] = await Promise.all([page.waitForEvent('download', { timeout: READY_MS }), clickControl(page, name)]);
+  const file = await dl.path();
+  return { name: dl.suggestedFilename(), bytes: fs.readFileSync(file) };
+}
+
+/** The example design `name` from examples/designs. */
+export function example(name) {
+  const file = path.join(ROOT, 'examples/designs', `${name}.json`);
+  return { file, design: JSON.parse(fs.readFileSync(file, 'utf8')) };
+}
