@@ -7,7 +7,7 @@ import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
-import { BACKENDS, MARBLING, ROOT, SHOTS, attr, crop, decode, differing, launch, openPage, sheet, shootSheet, waitOps } from './harness.mjs';
+import { BACKENDS, MARBLING, READY_MS, ROOT, SHOTS, attr, crop, decode, differing, launch, openPage, sheet, shootSheet, waitOps } from './harness.mjs';
 
 const STONE = JSON.parse(fs.readFileSync(path.join(ROOT, 'examples/designs/stone.json'), 'utf8'));
 
@@ -36,7 +36,7 @@ for (const backend of Object.keys(BACKENDS)) {
       for (let i = 0; i < img.data.length; i += 4 * 97) colours.add(img.data.readUInt32BE(i));
       assert.ok(colours.size > 5, `only ${colours.size} colours on the canvas`);
       fs.mkdirSync(SHOTS, { recursive: true });
-      await page.screenshot({ path: path.join(SHOTS, `playground-${backend}.png`) });
+      await page.screenshot({ path: path.join(SHOTS, `playground-${backend}.png`), timeout: READY_MS });
       assert.deepEqual(errors, []);
       await context.close();
     });
@@ -60,7 +60,7 @@ for (const backend of Object.keys(BACKENDS)) {
       await waitOps(page, n + 2);
       const raked = await shootSheet(page, STONE.width, STONE.height);
       assert.ok(differing(dropped.img, raked.img, 8) > 0.05, 'the rake did not change the canvas');
-      await page.screenshot({ path: path.join(SHOTS, `raked-${backend}.png`) });
+      await page.screenshot({ path: path.join(SHOTS, `raked-${backend}.png`), timeout: READY_MS });
 
       await page.keyboard.press('Control+z');
       await waitOps(page, n + 1);

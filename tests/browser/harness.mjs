@@ -88,7 +88,8 @@ export async function shootSheet(page, w, h) {
   await page.waitForTimeout(300);
   const s = await sheet(page);
   const clip = { x: Math.round(s.x), y: Math.round(s.y), width: Math.floor(w * s.scale), height: Math.floor(h * s.scale) };
-  return { img: decode(await page.screenshot({ clip })), ...s };
+  // A screenshot waits for the GPU to finish the frame: slow on SwiftShader under load.
+  return { img: decode(await page.screenshot({ clip, timeout: READY_MS })), ...s };
 }
 
 

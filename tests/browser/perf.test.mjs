@@ -7,7 +7,7 @@ import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
-import { BACKENDS, MARBLING, attr, launch, openPage, sheet } from './harness.mjs';
+import { BACKENDS, MARBLING, READY_MS, attr, launch, openPage, sheet } from './harness.mjs';
 
 const design = path.join(os.tmpdir(), `marbling-perf-${process.pid}.json`);
 
@@ -29,16 +29,19 @@ for (const backend of Object.keys(BACKENDS)) {
       const link = execFileSync(MARBLING, ['link', design, '--base', site.url]).toString().trim();
       const { page, context, errors } = await openPage(browser, site, link.slice(link.indexOf('#')), { width: 1440, height: 900 });
       assert.equal(await attr(page, 'data-ops'), '1000');
+      // The app builds its live-preview cache in the idle frame after the exact one.
+      await page.waitForFunction(() => document.body.dataset.previewReady === '1', null, { timeout: READY_MS });
       const s = await sheet(page);
       await page.keyboard.press('3'); // tine
       const x = s.x + 100 * s.scale;
       const y = s.y + 384 * s.scale;
       await page.mouse.move(x, y);
       await page.mouse.down();
-      // Keep the pointer moving for 4 s so every frame has a new pending op to draw.
+      // Keep the pointer moving for 6 s so every frame has a new pending op to draw
+      // (data-frame-ms averages the last 60 frames).
       const t0 = Date.now();
       let i = 0;
-      while (Date.now() - t0 < 4000) {
+      while (Date.now() - t0 < 6000) {
         i++;
         await page.mouse.move(x + 5 * (i % 160), y + 40 * Math.sin(i / 10));
         await page.waitForTimeout(5);

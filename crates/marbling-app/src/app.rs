@@ -438,7 +438,7 @@ impl MarblingApp {
     }
 
     /// Keeps the `<body>` automation hooks current (only changed values are written).
-    fn update_hooks(&mut self) {
+    fn update_hooks(&mut self, ctx: &egui::Context) {
         let ready = {
             let st = self.status.lock().ok();
             let drawn = st.as_ref().and_then(|s| {
@@ -451,6 +451,15 @@ impl MarblingApp {
                 && self.playback.is_none()
                 && drawn == Some((self.key, true))
         };
+        let preview_ready = self
+            .status
+            .lock()
+            .ok()
+            .is_some_and(|s| s.cache_ready == Some(self.key));
+        if ready && !preview_ready {
+            // One more frame builds the live-preview cache.
+            ctx.request_repaint();
+        }
         let error = self
             .message
             .as_ref()
@@ -490,6 +499,7 @@ impl MarblingApp {
             ("data-error", error),
             ("data-view", view),
             ("data-frame-ms", frame_ms),
+            ("data-preview-ready", preview_ready.then(|| "1".to_owned())),
             ("data-controls", Some(controls)),
             ("data-exporting", exporting),
             (
@@ -537,7 +547,7 @@ impl eframe::App for MarblingApp {
             self.error(e);
         }
         self.autosave(frame);
-        self.update_hooks();
+        self.update_hooks(&ctx);
     }
 }
 

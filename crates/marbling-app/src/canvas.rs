@@ -87,8 +87,8 @@ impl MarblingApp {
             view.pan([f64::from(d.x), f64::from(d.y)]);
         }
         if let Some(p) = response.hover_pos() {
-            let (scroll, zoom) = ui.input(|i| (i.smooth_scroll_delta.y, i.zoom_delta()));
-            let factor = f64::from(zoom) * (f64::from(scroll) * 0.002).exp();
+            let (scroll, zoom) = ui.input(|i| (wheel_points(i), i.zoom_delta()));
+            let factor = f64::from(zoom) * (scroll * 0.002).exp();
             if (factor - 1.0).abs() > 1e-6 {
                 view.zoom_about(
                     factor,
@@ -241,4 +241,27 @@ impl MarblingApp {
             ui.painter().image(texture, visible, uv, Color32::WHITE);
         }
     }
+}
+
+/// Vertical wheel movement this frame, points (up is positive), taken from the raw
+/// events rather than egui's smoothed scroll so one notch is one exact re-render, not a
+/// dozen animated ones. Ctrl/Cmd+wheel is left to egui's zoom (`zoom_delta`).
+fn wheel_points(i: &egui::InputState) -> f64 {
+    if i.modifiers.command || i.modifiers.ctrl {
+        return 0.0;
+    }
+    i.events
+        .iter()
+        .map(|e| match e {
+            egui::Event::MouseWheel { unit, delta, .. } => {
+                let per_unit = match unit {
+                    egui::MouseWheelUnit::Point => 1.0,
+                    egui::MouseWheelUnit::Line => 40.0,
+                    egui::MouseWheelUnit::Page => f64::from(i.content_rect().height()),
+                };
+                f64::from(delta.y) * per_unit
+            }
+            _ => 0.0,
+        })
+        .sum()
 }

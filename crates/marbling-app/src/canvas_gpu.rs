@@ -37,6 +37,9 @@ pub struct CanvasStatus {
     pub drawn: Option<FrameRequest>,
     /// The last GPU-side error (e.g. more ops than the device's texture can hold).
     pub error: Option<String>,
+    /// The design key whose live-preview cache is built (it is built in the frame after
+    /// the exact frame, so the first drag frame does not have to wait for it).
+    pub cache_ready: Option<u64>,
 }
 
 /// GPU resources kept in egui-wgpu's callback resources between frames.
@@ -100,6 +103,33 @@ impl CanvasGpu {
         }
     }
 
+    /// Builds the live-preview cache of `design` for `req`'s scale unless it exists. The
+    /// cache is rendered without antialiasing: at [`marbling_gpu::CACHE_FACTOR`] = 2 its
+    /// 2 × 2 samples per screen pixel already smooth the preview, at a quarter of the
+    /// cost of an RGSS cache (it matters on slow GPUs, where building it is the pause
+    /// before a drag can start).
+    fn ensure_cache(
+        &mut self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        design: &Design,
+        req: &FrameRequest,
+    ) -> Result<(), String> {
+        let stale = self
+            .cache
+            .as_ref()
+            .is_none_or(|(k, c)| *k != req.design_key || !c.covers(req.scale));
+        if stale {
+            self.cache = None;
+            let cache = self
+                .preview
+                .build_cache(device, queue, design, req.scale, Antialias::None)
+                .map_err(|e| e.to_string())?;
+            self.cache = Some((req.design_key, cache));
+        }
+        Ok(())
+    }
+
     /// Draws `req` into the canvas texture, recording into `encoder`.
     fn draw(
         &mut self,
@@ -109,12 +139,19 @@ impl CanvasGpu {
         design: &Design,
         req: &FrameRequest,
     ) -> Result<(), String> {
+        if self
+            .target
+            .as_ref()
+            .is_none_or(|t| [t.width, t.height] != req.size)
+        {
+            return Ok(());
+        }
+        if req.pending.is_some() {
+            self.ensure_cache(device, queue, design, req)?;
+        }
         let Some(target) = &self.target else {
             return Ok(());
         };
-        if [target.width, target.height] != req.size {
-            return Ok(());
-        }
         if self
             .prepared
             .as_ref()
@@ -145,18 +182,6 @@ impl CanvasGpu {
                 self.exact.draw(&mut pass, prepared);
             }
             Some(op) => {
-                let stale = self
-                    .cache
-                    .as_ref()
-                    .is_none_or(|(k, c)| *k != req.design_key || !c.covers(req.scale));
-                if stale {
-                    self.cache = None;
-                    let cache = self
-                        .preview
-                        .build_cache(device, queue, design, req.scale, req.antialias)
-                        .map_err(|e| e.to_string())?;
-                    self.cache = Some((req.design_key, cache));
-                }
                 let Some((_, cache)) = &mut self.cache else {
                     return Ok(());
                 };
@@ -192,12 +217,22 @@ impl egui_wgpu::CallbackTrait for CanvasCallback {
         let Ok(mut status) = self.status.lock() else {
             return Vec::new();
         };
-        if status.drawn.as_ref() == Some(&self.request) {
-            return Vec::new();
-        }
         let Some(gpu) = resources.get_mut::<CanvasGpu>() else {
             return Vec::new();
         };
+        if status.drawn.as_ref() == Some(&self.request) {
+            // The exact frame is on screen: use the idle frame to get the preview ready.
+            if self.request.pending.is_none()
+                && status.cache_ready != Some(self.request.design_key)
+                && status.error.is_none()
+            {
+                match gpu.ensure_cache(device, queue, &self.design, &self.request) {
+                    Ok(()) => status.cache_ready = Some(self.request.design_key),
+                    Err(e) => status.error = Some(e),
+                }
+            }
+            return Vec::new();
+        }
         match gpu.draw(device, queue, encoder, &self.design, &self.request) {
             Ok(()) => {
                 status.drawn = Some(self.request.clone());
