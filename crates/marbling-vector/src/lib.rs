@@ -60,14 +60,17 @@
 //!   which grows with every comb stroke; [`TraceOptions::max_vertices`] bounds it.
 
 mod canvas;
+mod cellhash;
+mod curve;
 mod error;
-pub mod forward;
 mod guard;
 mod ngon;
 mod options;
 mod outline;
+mod pinch;
 mod preview;
 pub mod refine;
+mod ring;
 pub mod simplify;
 mod svg;
 mod trace;

@@ -3,8 +3,7 @@
 
 use marbling_core::compare::check_snapshot;
 use marbling_core::synth::{Mix, random_design};
-use marbling_core::{Design, Op};
-use marbling_vector::forward::{ForwardStep, compile};
+use marbling_core::{CompiledOp, Design, Op};
 use marbling_vector::refine::{Refiner, distance_to_segment};
 use marbling_vector::simplify::rdp_closed;
 use marbling_vector::{Blend, TraceOptions, initial_sides, preview, trace};
@@ -12,7 +11,7 @@ use std::path::PathBuf;
 
 /// Refiners for every ink op of `design` at tolerance `t` (scale 1, no off-canvas
 /// relaxation, so the bounds apply everywhere).
-fn refiners<'a>(design: &Design, steps: &'a [ForwardStep], t: f64) -> Vec<Refiner<'a>> {
+fn refiners<'a>(design: &Design, steps: &'a [CompiledOp], t: f64) -> Vec<Refiner<'a>> {
     design
         .ops
         .iter()
@@ -48,7 +47,7 @@ fn refined_segments_stay_within_tolerance_of_dense_forward_points() {
         (13, Mix::CombHeavy, 60),
     ] {
         let design = random_design(seed, 200, 150, ops, mix);
-        let steps = compile(&design.ops);
+        let steps = CompiledOp::compile(&design.ops);
         for t in [1.0, 0.25] {
             let (mut worst_dev, mut worst_chord, mut segments) = (0.0f64, 0.0f64, 0);
             for r in refiners(&design, &steps, t) {
@@ -90,7 +89,7 @@ fn simplification_moves_outlines_by_at_most_a_quarter_tolerance() {
     let design = random_design(21, 200, 150, 100, Mix::Mixed);
     let t = 1.0;
     let eps = t / 4.0;
-    let steps = compile(&design.ops);
+    let steps = CompiledOp::compile(&design.ops);
     let (mut before, mut after, mut worst) = (0, 0, 0.0f64);
     for r in refiners(&design, &steps, t) {
         let dense = r
