@@ -65,9 +65,9 @@ pub fn run(args: &BenchSvgArgs) -> Result<()> {
         args.seed
     );
     println!(
-        "| ops | T px | simplified | lossy | seconds | peak vertices | refined vertices | exported vertices | regions | rings | dropped px² | remapped points | SVG bytes |"
+        "| ops | T px | simplified | lossy | seconds | peak vertices | refined vertices | exported vertices | regions | rings | dropped px² | remapped points | level | SVG bytes |"
     );
-    println!("|---:|---:|:---:|:---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|");
+    println!("|---:|---:|:---:|:---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|");
     for &n in &args.ops {
         let design = random_design(args.seed, w, h, n, mix);
         for &t in &args.tolerance {
@@ -97,7 +97,7 @@ pub fn run(args: &BenchSvgArgs) -> Result<()> {
                 }
                 if let Some((s, bytes)) = result {
                     println!(
-                        "| {n} | {t} | {} | {} | {best:.2} | {} | {} | {} | {} | {} | {:.1} | {} | {bytes} |",
+                        "| {n} | {t} | {} | {} | {best:.2} | {} | {} | {} | {} | {} | {:.1} | {} | {} | {bytes} |",
                         if simplify { "yes" } else { "no" },
                         if lossy { "yes" } else { "no" },
                         s.peak_vertices,
@@ -107,6 +107,7 @@ pub fn run(args: &BenchSvgArgs) -> Result<()> {
                         s.rings,
                         s.dropped_area,
                         s.mapped_points,
+                        s.level,
                     );
                 }
             }

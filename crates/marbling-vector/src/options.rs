@@ -18,23 +18,28 @@ pub struct TraceOptions {
     /// Most bisections of one initial segment (default 30).
     pub max_depth: u32,
     /// Furthest a segment's mapped midpoint may lie from its chord, as a fraction of T
-    /// (default 1/8).
+    /// (default 0.04).
     pub deviation: f64,
     /// Longest chord of a refined segment on the canvas, in units of T (default 4):
     /// with `deviation` the chord limit only matters on nearly straight parts.
     pub chord: f64,
-    /// Simplification distance ε, as a fraction of T (default 1/8).
+    /// Simplification distance ε, as a fraction of T (default 0.04).
     pub epsilon: f64,
-    /// Re-anchor outlines every this many ops (default 16; 0: never, every point is an
+    /// Re-anchor outlines every this many ops (default 32; 0: never, every point is an
     /// exact forward image of the original rim). Re-anchoring replaces each segment's
     /// source by the quadratic through its three exact samples, so a point inserted
     /// later is carried through at most this many ops instead of all since its ink was
     /// laid; the quadratic stands in for the true outline within about `deviation`·T.
     pub anchor: u32,
-    /// Width w of the lossy step, as a fraction of T (default 1/4; 0 turns it off):
+    /// Width w of the lossy step, as a fraction of T (default 1/16; 0 turns it off):
     /// after every op that grew a region by a quarter, parts of a ring closer than w
     /// are cut apart and pieces of mean width (2·area/perimeter) below w are dropped.
     pub thin: f64,
+    /// Vertex budget (default 150 000): whenever more vertices than this are held after
+    /// an op, `deviation`, `thin` and `epsilon` double for the rest of the design (at
+    /// most three times; [`crate::TraceStats::level`] says how often), and every region
+    /// is thinned again at once.
+    pub max_live: usize,
     /// Most refined vertices in the whole design before it is refused (default 50 M).
     pub max_vertices: usize,
 }
@@ -46,12 +51,13 @@ impl Default for TraceOptions {
             scale: 1.0,
             simplify: true,
             max_depth: 30,
-            deviation: 0.125,
+            deviation: 0.04,
             chord: 4.0,
-            epsilon: 0.125,
-            thin: 0.25,
-            anchor: 16,
+            epsilon: 0.04,
+            thin: 0.0625,
+            anchor: 32,
             max_vertices: 50_000_000,
+            max_live: 150_000,
         }
     }
 }

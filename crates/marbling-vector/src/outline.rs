@@ -55,6 +55,9 @@ pub struct TraceStats {
     pub refined_vertices: usize,
     /// Most vertices held after any op (all regions together).
     pub peak_vertices: usize,
+    /// Times the deviation, thin width and simplification distance were doubled
+    /// because more than `TraceOptions::max_live` vertices were held (0: none).
+    pub level: u32,
     /// Rings exported.
     pub rings: usize,
     /// Cuts the lossy step made (exact: they change no winding number).
@@ -79,6 +82,7 @@ impl std::ops::AddAssign for TraceStats {
         self.initial_vertices += o.initial_vertices;
         self.refined_vertices += o.refined_vertices;
         self.peak_vertices = self.peak_vertices.max(o.peak_vertices);
+        self.level = self.level.max(o.level);
         self.rings += o.rings;
         self.cuts += o.cuts;
         self.dropped_pieces += o.dropped_pieces;

@@ -67,11 +67,11 @@ impl Refine<'_> {
     /// `inner` lies further than `factor` times the deviation from it (both relaxed off
     /// the canvas).
     fn exceeds(&self, a: Point, inner: &[Point], b: Point, factor: f64) -> bool {
+        let ab = b - a;
+        let len2 = ab.hypot2();
         let within = |spacing: f64, deviation: f64| {
-            (b - a).hypot() <= factor * spacing
-                && inner
-                    .iter()
-                    .all(|&m| distance_to_segment(m, a, b) <= factor * deviation)
+            let (s, d) = (factor * spacing, factor * deviation);
+            len2 <= s * s && inner.iter().all(|&m| near_segment(m, a, ab, len2, d))
         };
         // The canvas only relaxes the limits: test the strict ones first.
         if within(self.spacing, self.deviation) {
@@ -196,6 +196,20 @@ impl Refine<'_> {
             i += 1;
         }
         out
+    }
+}
+
+/// Whether `m` lies within `d` of the segment from `a` along `ab` (`len2` = |ab|²):
+/// without square roots when `m` projects inside the segment.
+#[inline]
+fn near_segment(m: Point, a: Point, ab: kurbo::Vec2, len2: f64, d: f64) -> bool {
+    let am = m - a;
+    let t = am.dot(ab);
+    if len2 > 0.0 && (0.0..=len2).contains(&t) {
+        let c = ab.cross(am);
+        c * c <= d * d * len2
+    } else {
+        distance_to_segment(m, a, a + ab) <= d
     }
 }
 

@@ -75,12 +75,12 @@ impl Region {
         }
     }
 
-    /// The lossy step on every ring, when the vertex count grew by a quarter since it
+    /// The lossy step on every ring, when the vertex count grew by half since it
     /// last ran (or `force`).
     fn pinch(&mut self, pinch: Option<&Pinch>, force: bool) {
         let Some(pinch) = pinch else { return };
         let n = self.vertices();
-        if !force && n < 64.max(self.pinched_at + self.pinched_at / 4) {
+        if !force && n < 64.max(self.pinched_at + self.pinched_at / 2) {
             return;
         }
         let mut out = Vec::with_capacity(self.rings.len());
@@ -107,28 +107,42 @@ pub fn trace_with_progress(
     );
     let ops = CompiledOp::compile(&design.ops);
     let spacing = opts.spacing();
-    let refine = Refine {
+    let mut refine = Refine {
         ops: &ops,
         spacing: spacing * opts.chord,
         deviation: spacing * opts.deviation,
         canvas: opts.simplify.then_some(canvas),
-        merge_any: opts.anchor > 0,
+        merge_any: false,
         min_fraction: 0.5f64.powi(opts.max_depth as i32) / 8.0,
     };
-    let width = spacing * opts.thin;
-    let pinch = (opts.thin > 0.0).then_some(Pinch {
-        width,
-        separation: (4.0 * width).max(2.0 * spacing * opts.chord),
-        reach: spacing * opts.chord,
-        op: 0,
-    });
+    // Coarsening level: while more than `max_live` vertices are held, the deviation,
+    // the thin width and the simplification distance double (at most `MAX_LEVEL` times).
+    let mut level = 0;
+    let pinch_at = |level: i32, op: usize| {
+        let width = spacing * opts.thin * 2f64.powi(level);
+        (opts.thin > 0.0).then_some(Pinch {
+            width,
+            separation: (4.0 * width).max(2.0 * spacing * opts.chord),
+            reach: spacing * opts.chord,
+            op,
+        })
+    };
     let mut regions: Vec<Region> = Vec::new();
     let mut peak = 0;
     for (j, op) in design.ops.iter().enumerate() {
-        let pinch_j = pinch.map(|p| Pinch { op: j, ..p });
+        let pinch_j = pinch_at(level, j);
+        let live = regions.iter().map(Region::vertices).sum::<usize>();
+        let coarsen = live > opts.max_live && level < MAX_LEVEL;
+        if coarsen {
+            level += 1;
+            refine.deviation = spacing * opts.deviation * 2f64.powi(level);
+            // Past the budget, neighbouring segments may also merge approximately.
+            refine.merge_any = opts.anchor > 0;
+        }
+        let pinch_j = if coarsen { pinch_at(level, j) } else { pinch_j };
         regions.par_iter_mut().with_max_len(1).for_each(|r| {
             r.advance(j, &refine, opts.anchor as usize);
-            r.pinch(pinch_j.as_ref(), false);
+            r.pinch(pinch_j.as_ref(), coarsen);
         });
         let (center, radius, color) = match *op {
             Op::Drop(d) => (d.center, d.radius, d.color),
@@ -167,17 +181,19 @@ pub fn trace_with_progress(
         progress(j + 1, design.ops.len());
     }
     let last = design.ops.len().saturating_sub(1);
-    let pinch_last = pinch.map(|p| Pinch { op: last, ..p });
+    let pinch_last = pinch_at(level, last);
+    let epsilon = opts.spacing() * opts.epsilon * 2f64.powi(level);
     let traced: Vec<(Option<Outline>, TraceStats)> = regions
         .into_par_iter()
         .with_max_len(1)
         .map(|mut r| {
             r.pinch(pinch_last.as_ref(), true);
-            finish(r, opts, &canvas)
+            finish(r, opts, &canvas, epsilon)
         })
         .collect();
     let mut stats = TraceStats {
         peak_vertices: peak,
+        level: level as u32,
         ..TraceStats::default()
     };
     let mut outlines = Vec::with_capacity(traced.len());
@@ -196,6 +212,9 @@ pub fn trace_with_progress(
     })
 }
 
+/// Most doublings of the lossy limits when a design holds too many vertices.
+const MAX_LEVEL: i32 = 3;
+
 /// Refuses a design once its rings hold more than `opts.max_vertices` vertices.
 fn check_total(total: usize, opts: &TraceOptions) -> Result<(), VectorError> {
     if total > opts.max_vertices {
@@ -207,9 +226,13 @@ fn check_total(total: usize, opts: &TraceOptions) -> Result<(), VectorError> {
 }
 
 /// Simplifies a traced region's rings; `None` when nothing of it is visible.
-fn finish(r: Region, opts: &TraceOptions, canvas: &Canvas) -> (Option<Outline>, TraceStats) {
+fn finish(
+    r: Region,
+    opts: &TraceOptions,
+    canvas: &Canvas,
+    epsilon: f64,
+) -> (Option<Outline>, TraceStats) {
     let refined = r.vertices();
-    let epsilon = opts.spacing() * opts.epsilon;
     let rings: Vec<Vec<kurbo::Point>> = r
         .rings
         .iter()
@@ -237,6 +260,7 @@ fn finish(r: Region, opts: &TraceOptions, canvas: &Canvas) -> (Option<Outline>, 
         dropped_area: r.pinched.area,
         cuts: r.pinched.cuts,
         peak_vertices: 0,
+        level: 0,
     };
     let outline = (!rings.is_empty()).then_some(Outline {
         op_index: r.op_index,
