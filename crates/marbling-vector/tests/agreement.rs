@@ -37,10 +37,12 @@ fn vector_render_agrees_with_cpu_reference_on_random_designs() {
     );
     for (i, &ops) in sizes.iter().cycle().take(21).enumerate() {
         let mix = mixes[i % mixes.len()];
-        // Comb-heavy designs stretch ink into filaments whose length grows with every
-        // stroke; 100 ops keep the suite fast (see the crate docs on vertex counts).
+        // Comb-heavy designs beyond ~150 ops are mostly filaments thinner than T/16,
+        // which the lossy step drops and the RGSS reference point-samples: seed 1014 at
+        // 300 comb-heavy ops differs in 6.6 % of pixels (see the crate docs); 150 ops
+        // stay well inside the budget.
         let ops = if mix == Mix::CombHeavy {
-            ops.min(100)
+            ops.min(150)
         } else {
             ops
         };
