@@ -336,7 +336,11 @@ mod tests {
             Point::new(30.0, 4.0),
             Point::new(-1.0, 3.0),
         ] {
-            assert_eq!(winding(&pieces, q), winding(&[r.clone()], q), "at {q:?}");
+            assert_eq!(
+                winding(&pieces, q),
+                winding(std::slice::from_ref(&r), q),
+                "at {q:?}"
+            );
         }
     }
 

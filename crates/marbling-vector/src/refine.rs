@@ -1,5 +1,7 @@
-//! Adaptive refinement of one forward-traced circle: bisect the original arc wherever
-//! the mapped outline is too coarse.
+//! Exact adaptive refinement of one circle mapped through all later ops at once:
+//! bisect the original arc wherever the mapped outline is too coarse. Tracing itself
+//! goes op by op (see the crate docs); this whole-map refiner is the reference the
+//! tolerance tests measure against, and provides [`distance_to_segment`].
 
 use crate::VectorError;
 use crate::canvas::Canvas;

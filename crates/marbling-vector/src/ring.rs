@@ -177,7 +177,7 @@ impl Refine<'_> {
         let n = ring.len();
         let mut out = Vec::with_capacity(n + n / 8 + 4);
         // Merging is tried every fourth op: contraction is slow, stretching is not.
-        let try_merge = upto % 4 == 0;
+        let try_merge = upto.is_multiple_of(4);
         let mut i = 0;
         while i < n {
             if try_merge
