@@ -39,8 +39,9 @@ pub struct BenchSvgArgs {
     /// Also export without simplification (slow and large for big designs).
     #[arg(long)]
     raw: bool,
-    /// Also export without the lossy step (thin pieces kept; vertex counts then grow
-    /// geometrically with the op count, so keep --ops small).
+    /// Also export exactly: no lossy step, no re-anchoring, no vertex budget (as
+    /// `marbling svg --exact`; vertex counts then grow geometrically with the op count,
+    /// so keep --ops small).
     #[arg(long)]
     lossless: bool,
     /// Exports per case; the fastest is reported.
@@ -84,6 +85,8 @@ pub fn run(args: &BenchSvgArgs) -> Result<()> {
                     tolerance: t,
                     simplify,
                     thin: if lossy { defaults.thin } else { 0.0 },
+                    anchor: if lossy { defaults.anchor } else { 0 },
+                    max_live: if lossy { defaults.max_live } else { usize::MAX },
                     ..defaults
                 };
                 let mut best = f64::INFINITY;
