@@ -44,6 +44,9 @@ pub struct BenchSvgArgs {
     /// so keep --ops small).
     #[arg(long)]
     lossless: bool,
+    /// Vertex budget of the lossy export (see `TraceOptions::max_live`).
+    #[arg(long, default_value_t = TraceOptions::default().max_live)]
+    max_live: usize,
     /// Exports per case; the fastest is reported.
     #[arg(long, default_value_t = 1)]
     repeat: u32,
@@ -86,7 +89,7 @@ pub fn run(args: &BenchSvgArgs) -> Result<()> {
                     simplify,
                     thin: if lossy { defaults.thin } else { 0.0 },
                     anchor: if lossy { defaults.anchor } else { 0 },
-                    max_live: if lossy { defaults.max_live } else { usize::MAX },
+                    max_live: if lossy { args.max_live } else { usize::MAX },
                     ..defaults
                 };
                 let mut best = f64::INFINITY;

@@ -33,7 +33,7 @@
 //!    add up to the original's everywhere). Pieces whose mean width 2·|area|/perimeter
 //!    is below w are then dropped: filaments of ink, and thin gaps inside a region,
 //!    narrower than w on average.
-//! 5. **Vertex budget.** Whenever more than `max_live` vertices (default 150 000) are
+//! 5. **Vertex budget.** Whenever more than `max_live` vertices (default 60 000) are
 //!    held after an op, `deviation`, `thin` and `epsilon` double for the rest of the
 //!    design (at most 3 times: w ≤ T/2, deviation and ε ≤ 0.32·T), every region is
 //!    thinned at once, and any two neighbouring segments within half the limits may
@@ -52,7 +52,7 @@
 //! # Tolerance contract (output pixels, `T` = [`TraceOptions::tolerance`])
 //! Lengths are output pixels: design pixels × [`TraceOptions::scale`]. Defaults:
 //! `deviation` = `epsilon` = 0.04, `chord` = 4, `thin` = 1/16, `anchor` = 32,
-//! `max_live` = 150 000.
+//! `max_live` = 60 000.
 //!
 //! **What T guarantees** (the exact mode: `thin = 0`, `anchor = 0`, `max_live` =
 //! `usize::MAX`, `marbling svg --exact`): every vertex and probe is the forward image of

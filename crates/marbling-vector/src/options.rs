@@ -35,7 +35,7 @@ pub struct TraceOptions {
     /// after every op that grew a region by a quarter, parts of a ring closer than w
     /// are cut apart and pieces of mean width (2·area/perimeter) below w are dropped.
     pub thin: f64,
-    /// Vertex budget (default 150 000): whenever more vertices than this are held after
+    /// Vertex budget (default 60 000): whenever more vertices than this are held after
     /// an op, `deviation`, `thin` and `epsilon` double for the rest of the design (at
     /// most three times; [`crate::TraceStats::level`] says how often), and every region
     /// is thinned again at once.
@@ -57,7 +57,7 @@ impl Default for TraceOptions {
             thin: 0.0625,
             anchor: 32,
             max_vertices: 50_000_000,
-            max_live: 150_000,
+            max_live: 60_000,
         }
     }
 }

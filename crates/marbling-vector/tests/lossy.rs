@@ -29,7 +29,14 @@ fn thin_step_bounds_growth_and_reports_what_it_dropped() {
 #[test]
 fn vertex_budget_coarsens_and_keeps_counts_down() {
     let design = random_design(32, 400, 300, 300, Mix::DropHeavy);
-    let free = trace(&design, &TraceOptions::default()).expect("traceable");
+    let free = trace(
+        &design,
+        &TraceOptions {
+            max_live: usize::MAX,
+            ..TraceOptions::default()
+        },
+    )
+    .expect("traceable");
     let tight = trace(
         &design,
         &TraceOptions {
