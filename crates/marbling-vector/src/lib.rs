@@ -33,9 +33,9 @@
 //!    add up to the original's everywhere). Pieces whose mean width 2·|area|/perimeter
 //!    is below w are then dropped: filaments of ink, and thin gaps inside a region,
 //!    narrower than w on average.
-//! 5. **Vertex budget.** Whenever more than `max_live` vertices (default 60 000) are
-//!    held after an op, `deviation`, `thin` and `epsilon` double for the rest of the
-//!    design (at most 3 times: w ≤ T/2, deviation and ε ≤ 0.32·T), every region is
+//! 5. **Vertex budget.** Whenever more than `max_live`/min(T, 1) vertices (default
+//!    60 000, 240 000 at T = 0.25) are held after an op, `deviation`, `thin` and
+//!    `epsilon` double for the rest of the design (at most 3 times: w ≤ T/2, deviation and ε ≤ 0.32·T), every region is
 //!    thinned at once, and any two neighbouring segments within half the limits may
 //!    merge (their source becomes the quadratic through their three points).
 //!    [`TraceStats::level`] says how often this happened; 0 for every design of the

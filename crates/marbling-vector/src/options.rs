@@ -35,9 +35,9 @@ pub struct TraceOptions {
     /// after every op that grew a region by a quarter, parts of a ring closer than w
     /// are cut apart and pieces of mean width (2·area/perimeter) below w are dropped.
     pub thin: f64,
-    /// Vertex budget (default 60 000): whenever more vertices than this are held after
-    /// an op, `deviation`, `thin` and `epsilon` double for the rest of the design (at
-    /// most three times; [`crate::TraceStats::level`] says how often), and every region
+    /// Vertex budget at T ≥ 1, divided by T below (default 60 000: 240 000 at
+    /// T = 0.25): whenever more vertices than that are held after an op, `deviation`,
+    /// `thin` and `epsilon` double for the rest of the design (at most three times; [`crate::TraceStats::level`] says how often), and every region
     /// is thinned again at once.
     pub max_live: usize,
     /// Most refined vertices in the whole design before it is refused (default 50 M).

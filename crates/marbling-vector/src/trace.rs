@@ -118,6 +118,9 @@ pub fn trace_with_progress(
     // Coarsening level: while more than `max_live` vertices are held, the deviation,
     // the thin width and the simplification distance double (at most `MAX_LEVEL` times).
     let mut level = 0;
+    // Finer tolerances need more vertices for the same picture: the budget grows as 1/T
+    // below T = 1.
+    let budget = (opts.max_live as f64 / opts.tolerance.min(1.0)).min(usize::MAX as f64) as usize;
     let pinch_at = |level: i32, op: usize| {
         let width = spacing * opts.thin * 2f64.powi(level);
         (opts.thin > 0.0).then_some(Pinch {
@@ -132,7 +135,7 @@ pub fn trace_with_progress(
     for (j, op) in design.ops.iter().enumerate() {
         let pinch_j = pinch_at(level, j);
         let live = regions.iter().map(Region::vertices).sum::<usize>();
-        let coarsen = live > opts.max_live && level < MAX_LEVEL;
+        let coarsen = live > budget && level < MAX_LEVEL;
         if coarsen {
             level += 1;
             refine.deviation = spacing * opts.deviation * 2f64.powi(level);
