@@ -102,5 +102,6 @@ bench-noise: setup-gpu
 
 ## Vector export: time, vertices and SVG size (see docs/BENCHMARKS.md).
 bench-svg: $(MARBLING)
-	$(MARBLING) bench-svg --ops 50,200 --tolerance 1,0.25 --raw
-	$(MARBLING) bench-svg --ops 100,300,500 --tolerance 1 --mix drop-heavy
+	$(MARBLING) bench-svg --ops 50,200,1000 --tolerance 1,0.25
+	$(MARBLING) bench-svg --ops 50,200,1000 --tolerance 1,0.25 --mix drop-heavy
+	$(MARBLING) bench-svg --ops 50,100,200,300 --tolerance 1 --raw --lossless

@@ -39,6 +39,14 @@ pub struct BenchSvgArgs {
     /// Also export without simplification (slow and large for big designs).
     #[arg(long)]
     raw: bool,
+    /// Also export exactly: no lossy step, no re-anchoring, no vertex budget (as
+    /// `marbling svg --exact`; vertex counts then grow geometrically with the op count,
+    /// so keep --ops small).
+    #[arg(long)]
+    lossless: bool,
+    /// Vertex budget of the lossy export (see `TraceOptions::max_live`).
+    #[arg(long, default_value_t = TraceOptions::default().max_live)]
+    max_live: usize,
     /// Exports per case; the fastest is reported.
     #[arg(long, default_value_t = 1)]
     repeat: u32,
@@ -61,18 +69,28 @@ pub fn run(args: &BenchSvgArgs) -> Result<()> {
         args.seed
     );
     println!(
-        "| ops | T px | simplified | seconds | refined vertices | exported vertices | regions | SVG bytes |"
+        "| ops | T px | simplified | lossy | seconds | peak vertices | refined vertices | exported vertices | regions | rings | dropped px² | remapped points | level | SVG bytes |"
     );
-    println!("|---:|---:|:---:|---:|---:|---:|---:|---:|");
+    println!("|---:|---:|:---:|:---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|");
     for &n in &args.ops {
         let design = random_design(args.seed, w, h, n, mix);
         for &t in &args.tolerance {
-            let modes: &[bool] = if args.raw { &[true, false] } else { &[true] };
-            for &simplify in modes {
+            let mut modes = vec![(true, true)];
+            if args.raw {
+                modes.push((false, true));
+            }
+            if args.lossless {
+                modes.push((true, false));
+            }
+            for &(simplify, lossy) in &modes {
+                let defaults = TraceOptions::default();
                 let opts = TraceOptions {
                     tolerance: t,
                     simplify,
-                    ..TraceOptions::default()
+                    thin: if lossy { defaults.thin } else { 0.0 },
+                    anchor: if lossy { defaults.anchor } else { 0 },
+                    max_live: if lossy { args.max_live } else { usize::MAX },
+                    ..defaults
                 };
                 let mut best = f64::INFINITY;
                 let mut result = None;
@@ -85,11 +103,17 @@ pub fn run(args: &BenchSvgArgs) -> Result<()> {
                 }
                 if let Some((s, bytes)) = result {
                     println!(
-                        "| {n} | {t} | {} | {best:.2} | {} | {} | {} | {bytes} |",
+                        "| {n} | {t} | {} | {} | {best:.2} | {} | {} | {} | {} | {} | {:.1} | {} | {} | {bytes} |",
                         if simplify { "yes" } else { "no" },
+                        if lossy { "yes" } else { "no" },
+                        s.peak_vertices,
                         s.refined_vertices,
                         s.vertices,
                         s.regions - s.culled,
+                        s.rings,
+                        s.dropped_area,
+                        s.mapped_points,
+                        s.level,
                     );
                 }
             }

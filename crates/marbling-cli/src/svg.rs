@@ -17,8 +17,9 @@ pub struct SvgArgs {
     /// Output SVG; `-` writes to standard output. Written only once complete.
     #[arg(short, long)]
     output: String,
-    /// Tolerance T in output pixels: outline segments span at most T and stay within
-    /// T/2 of the true outline (see marbling_vector's docs).
+    /// Tolerance T in output pixels: outlines stay within about T/4 of the true ones
+    /// outside the lossy step, which drops pieces thinner than T/16 on average (see
+    /// marbling_vector's docs).
     #[arg(long, default_value_t = 1.0, allow_negative_numbers = true)]
     tolerance: f64,
     /// Output pixels per design pixel: the SVG's width/height attributes and the unit of
@@ -31,6 +32,10 @@ pub struct SvgArgs {
     /// Keep every refined vertex (no simplification, no off-canvas collapse).
     #[arg(long)]
     no_simplify: bool,
+    /// Exact tracing: no lossy step (thin pieces kept), no re-anchoring, no vertex
+    /// budget. Vertex counts then grow geometrically with the op count.
+    #[arg(long)]
+    exact: bool,
     /// Refuse designs needing more refined vertices than this.
     #[arg(long, default_value_t = TraceOptions::default().max_vertices)]
     max_vertices: usize,
@@ -70,12 +75,20 @@ pub fn write_atomically(path: &str, bytes: &[u8]) -> Result<()> {
 /// Traces the design and writes the SVG.
 pub fn run(args: &SvgArgs) -> Result<()> {
     let design = read_design(&args.design)?;
+    let defaults = TraceOptions::default();
     let opts = TraceOptions {
         tolerance: args.tolerance,
         scale: scale_of(args.scale, args.width, design.width)?,
         simplify: !args.no_simplify,
         max_vertices: args.max_vertices,
-        ..TraceOptions::default()
+        thin: if args.exact { 0.0 } else { defaults.thin },
+        anchor: if args.exact { 0 } else { defaults.anchor },
+        max_live: if args.exact {
+            usize::MAX
+        } else {
+            defaults.max_live
+        },
+        ..defaults
     };
     opts.validate()?;
     let start = Instant::now();
@@ -95,13 +108,17 @@ pub fn run(args: &SvgArgs) -> Result<()> {
     }
     let s = vector.stats;
     let summary = format!(
-        "{}: {} ops, {} regions ({} culled), {} vertices ({} refined), {} bytes, T {} px at scale {}, traced in {:.3} s",
+        "{}: {} ops, {} regions ({} culled) in {} rings, {} vertices ({} refined, peak {}), dropped {:.1} design px² of thin ink, coarsening level {}, {} bytes, T {} px at scale {}, traced in {:.3} s",
         args.output,
         design.ops.len(),
         s.regions - s.culled,
         s.culled,
+        s.rings,
         s.vertices,
         s.refined_vertices,
+        s.peak_vertices,
+        s.dropped_area,
+        s.level,
         svg.len(),
         opts.tolerance,
         opts.scale,

@@ -7,6 +7,7 @@
 
 pub mod color;
 pub mod compare;
+mod compiled;
 mod design;
 mod image;
 mod json;
@@ -19,6 +20,7 @@ mod validate;
 mod walk;
 
 pub use color::Rgb8;
+pub use compiled::CompiledOp;
 pub use design::{CURRENT_VERSION, Design, MAX_OPS, MAX_SIDE, SUPPORTED_VERSIONS};
 pub use image::{PngError, RgbaImage};
 pub use json::DesignError;

@@ -9,6 +9,11 @@ pub enum VectorError {
     /// The output scale is not a positive finite number.
     #[error("scale must be a finite number > 0, got {0}")]
     BadScale(f64),
+    /// A tracing option relative to the tolerance is out of range.
+    #[error(
+        "{0} = {1} is out of range (deviation and epsilon: (0, 1] × T; thin: [0, 1] × T; chord: ≥ 1 × T)"
+    )]
+    BadFraction(&'static str, f64),
     /// The design has something that is not a union of traced ink outlines.
     #[error("design cannot be traced exactly as vectors: {0}")]
     Untraceable(String),

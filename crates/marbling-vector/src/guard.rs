@@ -1,25 +1,25 @@
 //! A uniform grid over an outline's vertices that tells whether replacing a chain of
 //! the outline by its chord would sweep over another part of the same outline.
 
+use crate::cellhash::CellMap;
 use kurbo::Point;
-use std::collections::HashMap;
 
 /// Vertex buckets of one closed outline on square cells of side `cell`.
 pub struct Guard<'a> {
     points: &'a [Point],
     cell: f64,
-    buckets: HashMap<(i64, i64), Vec<u32>>,
+    buckets: CellMap<Vec<u32>>,
 }
 
 impl<'a> Guard<'a> {
     /// Buckets `points` on cells of side `cell` (> 0, design pixels); the chords it is
     /// asked about should deviate from their chains by at most `cell / 2`.
     pub fn new(points: &'a [Point], cell: f64) -> Self {
-        let mut buckets: HashMap<(i64, i64), Vec<u32>> = HashMap::new();
+        let mut buckets: CellMap<Vec<u32>> = CellMap::default();
         let mut guard = Self {
             points,
             cell,
-            buckets: HashMap::new(),
+            buckets: CellMap::default(),
         };
         for (i, &p) in points.iter().enumerate() {
             buckets.entry(guard.key(p)).or_default().push(i as u32);

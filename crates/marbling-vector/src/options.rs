@@ -5,9 +5,10 @@ use crate::VectorError;
 /// How finely to trace a design. Lengths are output pixels (design pixels × `scale`).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct TraceOptions {
-    /// Tolerance T, output pixels (> 0): refined segments span at most T, mapped arc
-    /// midpoints lie within T/4 of their chord, simplification moves the outline by at
-    /// most T/4. Default 1.
+    /// Tolerance T, output pixels (> 0): refined segments span at most T, their mapped
+    /// midpoints lie within `deviation`·T of the chord, simplification moves outlines by
+    /// at most `epsilon`·T, and the lossy step drops pieces thinner than `thin`·T on
+    /// average. Default 1.
     pub tolerance: f64,
     /// Output pixels per design pixel (> 0). Default 1 (SVG user units = design pixels).
     pub scale: f64,
@@ -16,6 +17,29 @@ pub struct TraceOptions {
     pub simplify: bool,
     /// Most bisections of one initial segment (default 30).
     pub max_depth: u32,
+    /// Furthest a segment's mapped midpoint may lie from its chord, as a fraction of T
+    /// (default 0.04).
+    pub deviation: f64,
+    /// Longest chord of a refined segment on the canvas, in units of T (default 4):
+    /// with `deviation` the chord limit only matters on nearly straight parts.
+    pub chord: f64,
+    /// Simplification distance ε, as a fraction of T (default 0.04).
+    pub epsilon: f64,
+    /// Re-anchor outlines every this many ops (default 32; 0: never, every point is an
+    /// exact forward image of the original rim). Re-anchoring replaces each segment's
+    /// source by the quadratic through its three exact samples, so a point inserted
+    /// later is carried through at most this many ops instead of all since its ink was
+    /// laid; the quadratic stands in for the true outline within about `deviation`·T.
+    pub anchor: u32,
+    /// Width w of the lossy step, as a fraction of T (default 1/16; 0 turns it off):
+    /// after every op that grew a region by a quarter, parts of a ring closer than w
+    /// are cut apart and pieces of mean width (2·area/perimeter) below w are dropped.
+    pub thin: f64,
+    /// Vertex budget at T ≥ 1, divided by T below (default 60 000: 240 000 at
+    /// T = 0.25): whenever more vertices than that are held after an op, `deviation`,
+    /// `thin` and `epsilon` double for the rest of the design (at most three times; [`crate::TraceStats::level`] says how often), and every region
+    /// is thinned again at once.
+    pub max_live: usize,
     /// Most refined vertices in the whole design before it is refused (default 50 M).
     pub max_vertices: usize,
 }
@@ -27,7 +51,13 @@ impl Default for TraceOptions {
             scale: 1.0,
             simplify: true,
             max_depth: 30,
+            deviation: 0.04,
+            chord: 4.0,
+            epsilon: 0.04,
+            thin: 0.0625,
+            anchor: 32,
             max_vertices: 50_000_000,
+            max_live: 60_000,
         }
     }
 }
@@ -40,6 +70,17 @@ impl TraceOptions {
         }
         if !(self.scale.is_finite() && self.scale > 0.0) {
             return Err(VectorError::BadScale(self.scale));
+        }
+        for (name, v) in [("deviation", self.deviation), ("epsilon", self.epsilon)] {
+            if !(v.is_finite() && v > 0.0 && v <= 1.0) {
+                return Err(VectorError::BadFraction(name, v));
+            }
+        }
+        if !(self.chord.is_finite() && self.chord >= 1.0) {
+            return Err(VectorError::BadFraction("chord", self.chord));
+        }
+        if !(self.thin.is_finite() && (0.0..=1.0).contains(&self.thin)) {
+            return Err(VectorError::BadFraction("thin", self.thin));
         }
         Ok(())
     }

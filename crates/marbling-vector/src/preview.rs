@@ -40,7 +40,7 @@ pub fn preview(vector: &VectorDesign, scale: f64, blend: Blend) -> Result<RgbaIm
     let paths = vector
         .outlines
         .iter()
-        .filter_map(|o| Some((path(&o.points)?, o.color)));
+        .filter_map(|o| Some((path(&o.rings)?, o.color)));
     match blend {
         Blend::Srgb => srgb(w, h, vector.background, paths, transform),
         Blend::Linear(aa) => Ok(sampled(
@@ -60,15 +60,21 @@ pub fn render_vector(design: &Design, opts: &TraceOptions) -> Result<RgbaImage, 
     preview(&trace(design, opts)?, opts.scale, Blend::default())
 }
 
-/// A closed tiny-skia path through `points` (design pixels); `None` if degenerate.
-fn path(points: &[kurbo::Point]) -> Option<Path> {
-    let mut pb = PathBuilder::with_capacity(points.len() + 1, points.len());
-    let (first, rest) = points.split_first()?;
-    pb.move_to(first.x as f32, first.y as f32);
-    for p in rest {
-        pb.line_to(p.x as f32, p.y as f32);
+/// A tiny-skia path of closed subpaths through `rings` (design pixels); `None` if
+/// degenerate.
+fn path(rings: &[Vec<kurbo::Point>]) -> Option<Path> {
+    let n: usize = rings.iter().map(Vec::len).sum();
+    let mut pb = PathBuilder::with_capacity(n + rings.len(), n);
+    for ring in rings {
+        let Some((first, rest)) = ring.split_first() else {
+            continue;
+        };
+        pb.move_to(first.x as f32, first.y as f32);
+        for p in rest {
+            pb.line_to(p.x as f32, p.y as f32);
+        }
+        pb.close();
     }
-    pb.close();
     pb.finish()
 }
 

@@ -1,10 +1,12 @@
-//! Adaptive refinement of one forward-traced circle: bisect the original arc wherever
-//! the mapped outline is too coarse.
+//! Exact adaptive refinement of one circle mapped through all later ops at once:
+//! bisect the original arc wherever the mapped outline is too coarse. Tracing itself
+//! goes op by op (see the crate docs); this whole-map refiner is the reference the
+//! tolerance tests measure against, and provides [`distance_to_segment`].
 
 use crate::VectorError;
 use crate::canvas::Canvas;
-use crate::forward::{ForwardStep, forward_through};
 use kurbo::{Point, Vec2};
+use marbling_core::CompiledOp;
 use std::f64::consts::TAU;
 
 /// Traces the circle of `center` and `radius` forward through `ops` (oldest first).
@@ -14,7 +16,7 @@ use std::f64::consts::TAU;
 #[derive(Clone, Copy, Debug)]
 pub struct Refiner<'a> {
     /// The ops after the one that laid the ink, oldest first, compiled.
-    pub ops: &'a [ForwardStep],
+    pub ops: &'a [CompiledOp],
     /// Centre of the original circle, design pixels.
     pub center: Point,
     /// Radius of the original circle, design pixels.
@@ -61,7 +63,7 @@ impl Refiner<'_> {
     pub fn map(&self, theta: f64) -> Point {
         let (s, c) = theta.sin_cos();
         let p = self.center + Vec2::new(c, s) * self.radius;
-        forward_through(self.ops, p)
+        self.ops.iter().fold(p, |p, op| op.forward(p))
     }
 
     /// Whether the mapped segment `a`–`b` must be split, given the mapped points `q`

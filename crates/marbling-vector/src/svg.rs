@@ -40,25 +40,28 @@ pub fn to_svg(vector: &VectorDesign) -> String {
     for outline in &vector.outlines {
         let _ = write!(s, "<path fill=\"{}\" d=\"", hex(outline.color));
         let mut numbers = Numbers::new(&mut s, places);
-        let mut prev: Option<(i64, i64)> = None;
-        for p in &outline.points {
-            let q = ((p.x * unit).round() as i64, (p.y * unit).round() as i64);
-            match prev {
-                None => {
-                    numbers.command('M');
-                    numbers.push(q.0);
-                    numbers.push(q.1);
-                    numbers.command('l');
+        for ring in &outline.rings {
+            let mut prev: Option<(i64, i64)> = None;
+            for p in ring {
+                let q = ((p.x * unit).round() as i64, (p.y * unit).round() as i64);
+                match prev {
+                    None => {
+                        numbers.command('M');
+                        numbers.push(q.0);
+                        numbers.push(q.1);
+                        numbers.command('l');
+                    }
+                    Some(r) if r == q => continue,
+                    Some(r) => {
+                        numbers.push(q.0 - r.0);
+                        numbers.push(q.1 - r.1);
+                    }
                 }
-                Some(r) if r == q => continue,
-                Some(r) => {
-                    numbers.push(q.0 - r.0);
-                    numbers.push(q.1 - r.1);
-                }
+                prev = Some(q);
             }
-            prev = Some(q);
+            numbers.command('z');
         }
-        s.push_str("z\"/>\n");
+        s.push_str("\"/>\n");
     }
     s.push_str("</svg>\n");
     s

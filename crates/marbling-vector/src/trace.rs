@@ -1,14 +1,17 @@
-//! Forward tracing of a whole design: every drop and spray, in parallel over regions.
+//! Forward tracing of a whole design, op by op: every drop and spray becomes a region
+//! whose rings are carried through each later op, refined where that op stretched or
+//! bent them, and (the lossy step) pinched apart and thinned out where they became
+//! thinner than the tolerance allows to matter.
 
-use crate::forward::{ForwardStep, compile};
-use crate::refine::Refiner;
+use crate::curve::Curve;
+use crate::pinch::{Pinch, PinchCount};
+use crate::ring::{Node, Refine, RefineCount, carry, initial_ring, reanchor};
 use crate::simplify::simplify_outline;
 use crate::{
     Canvas, MARGIN_PX, Outline, TraceOptions, TraceStats, VectorDesign, VectorError, initial_sides,
 };
-use marbling_core::{Design, Op, Point, Rgb8};
+use marbling_core::{CompiledOp, Design, Op, Rgb8};
 use rayon::prelude::*;
-use std::sync::atomic::{AtomicUsize, Ordering};
 
 /// Checks that `design` is exactly a background rectangle plus traced ink regions.
 ///
@@ -31,7 +34,65 @@ pub fn trace(design: &Design, opts: &TraceOptions) -> Result<VectorDesign, Vecto
     trace_with_progress(design, opts, &|_, _| {})
 }
 
-/// As [`trace`], calling `progress(done, total)` (regions, from any thread).
+/// One drop or spray being traced.
+struct Region {
+    /// Index of the op that laid the ink.
+    op_index: usize,
+    /// Ink colour.
+    color: Rgb8,
+    /// Source curves of its rings' segments: the rim, then cuts.
+    curves: Vec<Curve>,
+    /// Closed rings; the region is their union under the nonzero rule.
+    rings: Vec<Vec<Node>>,
+    /// The op after which its segments were last re-anchored (or the ink was laid).
+    anchored_at: usize,
+    /// Vertices when the lossy step last ran on this region.
+    pinched_at: usize,
+    /// Vertices of the initial n-gon.
+    initial: usize,
+    /// What refinement did.
+    refined: RefineCount,
+    /// What the lossy step did.
+    pinched: PinchCount,
+}
+
+impl Region {
+    fn vertices(&self) -> usize {
+        self.rings.iter().map(Vec::len).sum()
+    }
+
+    /// Carries the rings through op `j` and refines them; re-anchors them when `anchor`
+    /// ops (> 0) have passed since the last time.
+    fn advance(&mut self, j: usize, refine: &Refine, anchor: usize) {
+        let op = &refine.ops[j];
+        for ring in &mut self.rings {
+            carry(ring, op);
+            *ring = refine.refine(&mut self.curves, ring, j, &mut self.refined);
+        }
+        if anchor > 0 && j >= self.anchored_at + anchor {
+            self.curves = reanchor(&mut self.rings, j);
+            self.anchored_at = j;
+        }
+    }
+
+    /// The lossy step on every ring, when the vertex count grew by half since it
+    /// last ran (or `force`).
+    fn pinch(&mut self, pinch: Option<&Pinch>, force: bool) {
+        let Some(pinch) = pinch else { return };
+        let n = self.vertices();
+        if !force && n < 64.max(self.pinched_at + self.pinched_at / 2) {
+            return;
+        }
+        let mut out = Vec::with_capacity(self.rings.len());
+        for ring in std::mem::take(&mut self.rings) {
+            pinch.apply(ring, &mut self.curves, &mut out, &mut self.pinched);
+        }
+        self.rings = out;
+        self.pinched_at = self.vertices();
+    }
+}
+
+/// As [`trace`], calling `progress(done, total)` (ops processed, from this thread).
 pub fn trace_with_progress(
     design: &Design,
     opts: &TraceOptions,
@@ -44,29 +105,100 @@ pub fn trace_with_progress(
         f64::from(design.height),
         MARGIN_PX / opts.scale,
     );
-    let ink: Vec<Ink> = design
-        .ops
-        .iter()
-        .enumerate()
-        .filter_map(|(k, op)| match *op {
-            Op::Drop(d) => Some((k, d.center, d.radius, d.color)),
-            Op::Spray(s) => Some((k, s.center, s.radius, s.color)),
-            _ => None,
+    let ops = CompiledOp::compile(&design.ops);
+    let spacing = opts.spacing();
+    let mut refine = Refine {
+        ops: &ops,
+        spacing: spacing * opts.chord,
+        deviation: spacing * opts.deviation,
+        canvas: opts.simplify.then_some(canvas),
+        merge_any: false,
+        min_fraction: 0.5f64.powi(opts.max_depth as i32) / 8.0,
+    };
+    // Coarsening level: while more than `max_live` vertices are held, the deviation,
+    // the thin width and the simplification distance double (at most `MAX_LEVEL` times).
+    let mut level = 0;
+    // Finer tolerances need more vertices for the same picture: the budget grows as 1/T
+    // below T = 1.
+    let budget = (opts.max_live as f64 / opts.tolerance.min(1.0)).min(usize::MAX as f64) as usize;
+    let pinch_at = |level: i32, op: usize| {
+        let width = spacing * opts.thin * 2f64.powi(level);
+        (opts.thin > 0.0).then_some(Pinch {
+            width,
+            separation: (4.0 * width).max(2.0 * spacing * opts.chord),
+            reach: spacing * opts.chord,
+            op,
+        })
+    };
+    let mut regions: Vec<Region> = Vec::new();
+    let mut peak = 0;
+    for (j, op) in design.ops.iter().enumerate() {
+        let pinch_j = pinch_at(level, j);
+        let live = regions.iter().map(Region::vertices).sum::<usize>();
+        let coarsen = live > budget && level < MAX_LEVEL;
+        if coarsen {
+            level += 1;
+            refine.deviation = spacing * opts.deviation * 2f64.powi(level);
+            // Past the budget, neighbouring segments may also merge approximately.
+            refine.merge_any = opts.anchor > 0;
+        }
+        let pinch_j = if coarsen { pinch_at(level, j) } else { pinch_j };
+        regions.par_iter_mut().with_max_len(1).for_each(|r| {
+            r.advance(j, &refine, opts.anchor as usize);
+            r.pinch(pinch_j.as_ref(), coarsen);
+        });
+        let (center, radius, color) = match *op {
+            Op::Drop(d) => (d.center, d.radius, d.color),
+            Op::Spray(s) => (s.center, s.radius, s.color),
+            _ => {
+                let total = regions.iter().map(Region::vertices).sum::<usize>();
+                peak = peak.max(total);
+                check_total(total, opts)?;
+                progress(j + 1, design.ops.len());
+                continue;
+            }
+        };
+        let rim = Curve::Circle {
+            center,
+            radius,
+            op: j,
+        };
+        let sides = initial_sides(radius * opts.scale, opts.tolerance);
+        let mut region = Region {
+            op_index: j,
+            color,
+            curves: vec![rim],
+            rings: vec![initial_ring(&rim, 0, sides)],
+            anchored_at: j,
+            pinched_at: 0,
+            initial: sides,
+            refined: RefineCount::default(),
+            pinched: PinchCount::default(),
+        };
+        region.rings[0] =
+            refine.refine(&mut region.curves, &region.rings[0], j, &mut region.refined);
+        regions.push(region);
+        let total = regions.iter().map(Region::vertices).sum::<usize>();
+        peak = peak.max(total);
+        check_total(total, opts)?;
+        progress(j + 1, design.ops.len());
+    }
+    let last = design.ops.len().saturating_sub(1);
+    let pinch_last = pinch_at(level, last);
+    let epsilon = opts.spacing() * opts.epsilon * 2f64.powi(level);
+    let traced: Vec<(Option<Outline>, TraceStats)> = regions
+        .into_par_iter()
+        .with_max_len(1)
+        .map(|mut r| {
+            r.pinch(pinch_last.as_ref(), true);
+            finish(r, opts, &canvas, epsilon)
         })
         .collect();
-    let steps = compile(&design.ops);
-    let used = AtomicUsize::new(0);
-    let done = AtomicUsize::new(0);
-    let traced: Vec<(Option<Outline>, TraceStats)> = ink
-        .par_iter()
-        .with_max_len(1)
-        .map(|&ink_op| {
-            let r = trace_region(&steps, ink_op, opts, &canvas, &used);
-            progress(done.fetch_add(1, Ordering::Relaxed) + 1, ink.len());
-            r
-        })
-        .collect::<Result<_, _>>()?;
-    let mut stats = TraceStats::default();
+    let mut stats = TraceStats {
+        peak_vertices: peak,
+        level: level as u32,
+        ..TraceStats::default()
+    };
     let mut outlines = Vec::with_capacity(traced.len());
     for (outline, s) in traced {
         stats += s;
@@ -83,54 +215,60 @@ pub fn trace_with_progress(
     })
 }
 
-/// A drop or spray: op index, centre, radius (design pixels), colour.
-type Ink = (usize, Point, f64, Rgb8);
+/// Most doublings of the lossy limits when a design holds too many vertices.
+const MAX_LEVEL: i32 = 3;
 
-/// Traces one drop or spray of `design`; `None` when it is invisible.
-fn trace_region(
-    steps: &[ForwardStep],
-    (k, center, radius, color): Ink,
-    opts: &TraceOptions,
-    canvas: &Canvas,
-    used: &AtomicUsize,
-) -> Result<(Option<Outline>, TraceStats), VectorError> {
-    let spacing = opts.spacing();
-    let refiner = Refiner {
-        ops: &steps[k + 1..],
-        center,
-        radius,
-        spacing,
-        deviation: spacing / 4.0,
-        canvas: opts.simplify.then_some(*canvas),
-        max_depth: opts.max_depth,
-        max_vertices: opts.max_vertices,
-    };
-    let sides = initial_sides(radius * opts.scale, opts.tolerance);
-    let refined = refiner.refine(sides)?;
-    let total = used.fetch_add(refined.points.len(), Ordering::Relaxed) + refined.points.len();
+/// Refuses a design once its rings hold more than `opts.max_vertices` vertices.
+fn check_total(total: usize, opts: &TraceOptions) -> Result<(), VectorError> {
     if total > opts.max_vertices {
         return Err(VectorError::TooComplex {
             limit: opts.max_vertices,
         });
     }
-    let points = if opts.simplify {
-        simplify_outline(&refined.points, canvas, spacing / 4.0)
-    } else {
-        refined.points.clone()
-    };
+    Ok(())
+}
+
+/// Simplifies a traced region's rings; `None` when nothing of it is visible.
+fn finish(
+    r: Region,
+    opts: &TraceOptions,
+    canvas: &Canvas,
+    epsilon: f64,
+) -> (Option<Outline>, TraceStats) {
+    let refined = r.vertices();
+    let rings: Vec<Vec<kurbo::Point>> = r
+        .rings
+        .iter()
+        .map(|ring| {
+            let points: Vec<kurbo::Point> = ring.iter().map(|n| n.p).collect();
+            if opts.simplify {
+                simplify_outline(&points, canvas, epsilon)
+            } else {
+                points
+            }
+        })
+        .filter(|ring| ring.len() >= 3)
+        .collect();
+    let vertices = rings.iter().map(Vec::len).sum();
     let stats = TraceStats {
         regions: 1,
-        culled: usize::from(points.is_empty()),
-        initial_vertices: sides,
-        refined_vertices: refined.points.len(),
-        vertices: points.len(),
-        capped: refined.capped,
-        mapped_points: refined.mapped,
+        culled: usize::from(rings.is_empty()),
+        initial_vertices: r.initial,
+        refined_vertices: refined,
+        vertices,
+        rings: rings.len(),
+        capped: r.refined.capped,
+        mapped_points: r.refined.mapped,
+        dropped_pieces: r.pinched.dropped,
+        dropped_area: r.pinched.area,
+        cuts: r.pinched.cuts,
+        peak_vertices: 0,
+        level: 0,
     };
-    let outline = (!points.is_empty()).then_some(Outline {
-        op_index: k,
-        color,
-        points,
+    let outline = (!rings.is_empty()).then_some(Outline {
+        op_index: r.op_index,
+        color: r.color,
+        rings,
     });
-    Ok((outline, stats))
+    (outline, stats)
 }

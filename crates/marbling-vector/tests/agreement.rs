@@ -1,10 +1,11 @@
 //! The vector render (traced outlines rasterised with tiny-skia at the reference's
 //! RGSS sample positions) agrees with the exact CPU reference render on random designs.
 //!
-//! Tolerance: 0.2 output pixels. The RGSS reference point-samples sub-pixel filaments,
+//! Tolerance: the default T = 1 output pixel, with the default lossy step (pieces of
+//! mean width below T/4 dropped). The RGSS reference point-samples sub-pixel filaments,
 //! so a boundary moved by a fraction of a pixel flips whole samples (a quarter of the
-//! pixel's colour each); at T = 1 the densest 300-op designs differ in 3–6 % of pixels
-//! while looking the same, at T = 0.2 all stay under 1 %.
+//! pixel's colour each); the default deviation and simplification fractions (T/8 each)
+//! keep that under the budget.
 
 use marbling_core::compare::compare;
 use marbling_core::synth::{Mix, random_design};
@@ -17,7 +18,7 @@ const THRESHOLD: u8 = 48;
 /// Largest allowed fraction of mismatching pixels.
 const BUDGET: f64 = 0.01;
 /// Tracing tolerance, output pixels.
-const TOLERANCE: f64 = 0.2;
+const TOLERANCE: f64 = 1.0;
 
 #[test]
 fn vector_render_agrees_with_cpu_reference_on_random_designs() {
@@ -31,13 +32,17 @@ fn vector_render_agrees_with_cpu_reference_on_random_designs() {
     let mut worst: f64 = 0.0;
     let mut n = 0;
     println!("T = {TOLERANCE} px, 200×150, budget {BUDGET} of pixels off by more than {THRESHOLD}");
-    println!("seed mix           ops regions vertices  refined capped mismatch  trace s");
+    println!(
+        "seed mix           ops regions  rings vertices  refined    peak capped dropped px² mismatch  trace s"
+    );
     for (i, &ops) in sizes.iter().cycle().take(21).enumerate() {
         let mix = mixes[i % mixes.len()];
-        // Comb-heavy designs stretch ink into filaments whose length grows with every
-        // stroke; 100 ops keep the suite fast (see the crate docs on vertex counts).
+        // Comb-heavy designs beyond ~150 ops are mostly filaments thinner than T/16,
+        // which the lossy step drops and the RGSS reference point-samples: seed 1014 at
+        // 300 comb-heavy ops differs in 6.6 % of pixels (see the crate docs); 150 ops
+        // stay well inside the budget.
         let ops = if mix == Mix::CombHeavy {
-            ops.min(100)
+            ops.min(150)
         } else {
             ops
         };
@@ -58,11 +63,14 @@ fn vector_render_agrees_with_cpu_reference_on_random_designs() {
         let diff = compare(&expected, &actual, THRESHOLD).expect("same size");
         let s = vector.stats;
         println!(
-            "{seed} {mix:<12?} {ops:>4} {:>7} {:>8} {:>8} {:>6} {:>7.3} % {:>8.3}",
+            "{seed} {mix:<12?} {ops:>4} {:>7} {:>6} {:>8} {:>8} {:>7} {:>6} {:>11.1} {:>6.3} % {:>8.3}",
             s.regions - s.culled,
+            s.rings,
             s.vertices,
             s.refined_vertices,
+            s.peak_vertices,
             s.capped,
+            s.dropped_area,
             100.0 * diff.fraction(),
             secs
         );

@@ -8,10 +8,7 @@ use marbling_vector::{Blend, TraceOptions, preview, trace};
 #[test]
 fn perturbed_vector_render_fails_the_budget() {
     let design = random_design(7, 200, 150, 60, Mix::DropHeavy);
-    let opts = TraceOptions {
-        tolerance: 0.2,
-        ..TraceOptions::default()
-    };
+    let opts = TraceOptions::default();
     let mut vector = trace(&design, &opts).expect("traceable");
     let reference = render(&design, &RenderOptions::default()).expect("render");
     let good = preview(&vector, 1.0, Blend::Linear(Antialias::Rgss)).expect("preview");
@@ -23,7 +20,7 @@ fn perturbed_vector_render_fails_the_budget() {
     );
     // Shift every outline by 3 design pixels: the comparison must notice.
     for o in &mut vector.outlines {
-        for p in &mut o.points {
+        for p in o.rings.iter_mut().flatten() {
             p.x += 3.0;
         }
     }

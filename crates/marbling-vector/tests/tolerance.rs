@@ -3,8 +3,7 @@
 
 use marbling_core::compare::check_snapshot;
 use marbling_core::synth::{Mix, random_design};
-use marbling_core::{Design, Op};
-use marbling_vector::forward::{ForwardStep, compile};
+use marbling_core::{CompiledOp, Design, Op};
 use marbling_vector::refine::{Refiner, distance_to_segment};
 use marbling_vector::simplify::rdp_closed;
 use marbling_vector::{Blend, TraceOptions, initial_sides, preview, trace};
@@ -12,7 +11,7 @@ use std::path::PathBuf;
 
 /// Refiners for every ink op of `design` at tolerance `t` (scale 1, no off-canvas
 /// relaxation, so the bounds apply everywhere).
-fn refiners<'a>(design: &Design, steps: &'a [ForwardStep], t: f64) -> Vec<Refiner<'a>> {
+fn refiners<'a>(design: &Design, steps: &'a [CompiledOp], t: f64) -> Vec<Refiner<'a>> {
     design
         .ops
         .iter()
@@ -48,7 +47,7 @@ fn refined_segments_stay_within_tolerance_of_dense_forward_points() {
         (13, Mix::CombHeavy, 60),
     ] {
         let design = random_design(seed, 200, 150, ops, mix);
-        let steps = compile(&design.ops);
+        let steps = CompiledOp::compile(&design.ops);
         for t in [1.0, 0.25] {
             let (mut worst_dev, mut worst_chord, mut segments) = (0.0f64, 0.0f64, 0);
             for r in refiners(&design, &steps, t) {
@@ -90,7 +89,7 @@ fn simplification_moves_outlines_by_at_most_a_quarter_tolerance() {
     let design = random_design(21, 200, 150, 100, Mix::Mixed);
     let t = 1.0;
     let eps = t / 4.0;
-    let steps = compile(&design.ops);
+    let steps = CompiledOp::compile(&design.ops);
     let (mut before, mut after, mut worst) = (0, 0, 0.0f64);
     for r in refiners(&design, &steps, t) {
         let dense = r
@@ -127,18 +126,23 @@ fn initial_polygon_sides_follow_radius_and_tolerance() {
 
 #[test]
 fn traced_outlines_keep_vertex_counts_bounded_on_a_single_drop() {
-    // One drop, nothing after it: the exported circle needs about π·√(2R/T) vertices
-    // whatever refinement did.
+    // One drop, nothing after it: the exported circle needs about π·√(R/(2ε)) vertices
+    // (one per √(8Rε) of arc, ε = epsilon·T) whatever refinement did.
     let mut design = Design::new(200, 200, marbling_core::Rgb8::new(255, 255, 255));
     design.ops.push(Op::Drop(marbling_core::Drop {
         center: marbling_core::Point::new(100.0, 100.0),
         radius: 80.0,
         color: marbling_core::Rgb8::new(0, 0, 0),
     }));
-    let v = trace(&design, &TraceOptions::default()).expect("traceable");
-    let expected = std::f64::consts::PI * (2.0 * 80.0f64).sqrt();
+    let opts = TraceOptions::default();
+    let v = trace(&design, &opts).expect("traceable");
+    let eps = opts.epsilon * opts.tolerance;
+    let expected = std::f64::consts::PI * (80.0 / (2.0 * eps)).sqrt();
     println!("{:?}, expected about {expected:.0}", v.stats);
-    assert!(v.stats.refined_vertices >= 500, "spacing ≤ T means ≥ 2πR/T");
+    // Refinement: probes within deviation·T of their chords, so at least as many
+    // vertices as that sagitta allows on a circle.
+    let min_refined = std::f64::consts::PI * (80.0 / (2.0 * opts.deviation)).sqrt();
+    assert!(v.stats.refined_vertices as f64 >= min_refined);
     // RDP picks farthest points rather than even spacing: within 2× of the optimum.
     assert!((v.stats.vertices as f64) < 2.0 * expected);
 }
@@ -148,6 +152,12 @@ fn golden_vector_preview() {
     let design = random_design(5, 160, 120, 80, Mix::Mixed);
     let vector = trace(&design, &TraceOptions::default()).expect("traceable");
     let image = preview(&vector, 1.0, Blend::default()).expect("preview");
+    // The golden image itself agrees with the CPU reference (so updating it cannot
+    // bless a wrong render).
+    let reference =
+        marbling_core::render(&design, &marbling_core::RenderOptions::default()).expect("render");
+    let diff = marbling_core::compare::compare(&reference, &image, 48).expect("same size");
+    assert!(diff.fraction() <= 0.01, "{:.3} %", 100.0 * diff.fraction());
     let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
         .join("../../tests/snapshots/vector/mixed_80ops_160x120.png");
     check_snapshot(&path, &image, 16, 0.002).unwrap_or_else(|e| panic!("{e}"));

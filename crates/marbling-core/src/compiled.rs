@@ -1,0 +1,337 @@
+//! Ops compiled once for fast point mapping: unit directions, αλ, 2π/wavelength and the
+//! sin/cos of a wavy comb's angle are computed here instead of at every point.
+//!
+//! This is the one compiled representation of an op. The CPU reference renderer's
+//! inverse walk ([`crate::Walker`]) and forward tracing of ink outlines
+//! (marbling-vector) both use it; the formulas are those of [`Op::forward`] and
+//! [`Op::inverse`] (results agree to rounding, f64 design pixels).
+
+use crate::Op;
+use kurbo::{Point, Vec2};
+use std::f64::consts::TAU;
+
+/// One op with its constants precomputed. Lengths are design pixels.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum CompiledOp {
+    /// Drop (`deform`) or spray (`!deform`): a disc of new ink of centre (cx, cy) and
+    /// squared radius r2. A drop maps P ↦ C + (P − C)·√(1 + r²/ρ²); a spray moves nothing.
+    Disc {
+        /// Centre x.
+        cx: f64,
+        /// Centre y.
+        cy: f64,
+        /// Squared radius, design px².
+        r2: f64,
+        /// Whether the disc pushes older ink outwards (drop) or not (spray).
+        deform: bool,
+    },
+    /// Tine (`spacing == 0`) or rake: shift αλ/(d + λ) along the unit motion m, where d
+    /// is the distance to the (nearest) tine line measured along the unit normal n.
+    Comb {
+        /// Origin x.
+        ax: f64,
+        /// Origin y.
+        ay: f64,
+        /// Unit motion x.
+        mx: f64,
+        /// Unit motion y.
+        my: f64,
+        /// Unit normal x (−m.y).
+        nx: f64,
+        /// Unit normal y (m.x).
+        ny: f64,
+        /// α·λ, design px².
+        al: f64,
+        /// λ, design px.
+        lambda: f64,
+        /// Tine spacing of a rake, 0 for a single tine.
+        spacing: f64,
+    },
+    /// Wavy comb: shift A·sin(k·(P·n) + φ) along m = (cos t, sin t), n = (sin t, −cos t).
+    Wave {
+        /// Unit motion x (cos t).
+        mx: f64,
+        /// Unit motion y (sin t).
+        my: f64,
+        /// Unit normal x (sin t).
+        nx: f64,
+        /// Unit normal y (−cos t).
+        ny: f64,
+        /// Amplitude A, design px.
+        amp: f64,
+        /// 2π / wavelength, radians per design px.
+        k: f64,
+        /// Phase φ, radians.
+        phase: f64,
+    },
+    /// Circular comb (d = |ρ − r|) or vortex (d = ρ): rotation by αλ/(d + λ)/ρ radians
+    /// about C.
+    Swirl {
+        /// Centre x.
+        cx: f64,
+        /// Centre y.
+        cy: f64,
+        /// Radius r of the circular comb (unused by a vortex).
+        r: f64,
+        /// α·λ, design px².
+        al: f64,
+        /// λ, design px.
+        lambda: f64,
+        /// Vortex rather than circular comb.
+        vortex: bool,
+    },
+}
+
+impl CompiledOp {
+    /// Compiles one op.
+    pub fn new(op: &Op) -> Self {
+        match *op {
+            Op::Drop(d) => Self::Disc {
+                cx: d.center.x,
+                cy: d.center.y,
+                r2: d.radius * d.radius,
+                deform: true,
+            },
+            Op::Spray(s) => Self::Disc {
+                cx: s.center.x,
+                cy: s.center.y,
+                r2: s.radius * s.radius,
+                deform: false,
+            },
+            Op::Tine(t) => Self::comb(t.origin, t.direction, t.alpha, t.lambda, 0.0),
+            Op::Rake(r) => Self::comb(r.origin, r.direction, r.alpha, r.lambda, r.spacing),
+            Op::Wavy(w) => {
+                let (s, c) = w.angle.sin_cos();
+                Self::Wave {
+                    mx: c,
+                    my: s,
+                    nx: s,
+                    ny: -c,
+                    amp: w.amplitude,
+                    k: TAU / w.wavelength,
+                    phase: w.phase,
+                }
+            }
+            Op::Circular(c) => Self::Swirl {
+                cx: c.center.x,
+                cy: c.center.y,
+                r: c.radius,
+                al: c.alpha * c.lambda,
+                lambda: c.lambda,
+                vortex: false,
+            },
+            Op::Vortex(v) => Self::Swirl {
+                cx: v.center.x,
+                cy: v.center.y,
+                r: 0.0,
+                al: v.alpha * v.lambda,
+                lambda: v.lambda,
+                vortex: true,
+            },
+        }
+    }
+
+    fn comb(origin: Point, dir: Vec2, alpha: f64, lambda: f64, spacing: f64) -> Self {
+        let m = dir.normalize();
+        Self::Comb {
+            ax: origin.x,
+            ay: origin.y,
+            mx: m.x,
+            my: m.y,
+            nx: -m.y,
+            ny: m.x,
+            al: alpha * lambda,
+            lambda,
+            spacing,
+        }
+    }
+
+    /// Compiles every op of a design, oldest first.
+    pub fn compile(ops: &[Op]) -> Vec<Self> {
+        ops.iter().map(Self::new).collect()
+    }
+
+    /// Where older ink at `p` ends up after this op (a spray, or a drop's own centre,
+    /// moves nothing).
+    #[inline]
+    pub fn forward(&self, p: Point) -> Point {
+        let (x, y) = match *self {
+            Self::Disc { cx, cy, r2, deform } => {
+                let (dx, dy) = (p.x - cx, p.y - cy);
+                let d2 = dx * dx + dy * dy;
+                if !deform || d2 == 0.0 {
+                    return p;
+                }
+                let f = (1.0 + r2 / d2).sqrt();
+                (cx + dx * f, cy + dy * f)
+            }
+            Self::Comb { .. } => comb_shift(p.x, p.y, self, 1.0),
+            Self::Wave { .. } => wave_shift(p.x, p.y, self, 1.0),
+            Self::Swirl { .. } => swirl_turn(p.x, p.y, self, 1.0),
+        };
+        Point::new(x, y)
+    }
+
+    /// Where a point `p` after this op was before it; `None` when `p` lies in the ink
+    /// this op lays (ρ < r of a drop or spray).
+    #[inline]
+    pub fn inverse(&self, p: Point) -> Option<Point> {
+        let (x, y) = match *self {
+            Self::Disc { cx, cy, r2, deform } => {
+                let (dx, dy) = (p.x - cx, p.y - cy);
+                let d2 = dx * dx + dy * dy;
+                if d2 < r2 {
+                    return None;
+                }
+                if !deform {
+                    return Some(p);
+                }
+                drop_back(cx, cy, r2, dx, dy, d2)
+            }
+            Self::Comb { .. } => comb_shift(p.x, p.y, self, -1.0),
+            Self::Wave { .. } => wave_shift(p.x, p.y, self, -1.0),
+            Self::Swirl { .. } => swirl_turn(p.x, p.y, self, -1.0),
+        };
+        Some(Point::new(x, y))
+    }
+}
+
+/// Inverse of a drop outside its disc: P = C + (P' − C)·√(1 − r²/ρ²), given
+/// (dx, dy) = P' − C and d2 = ρ².
+#[inline(always)]
+pub(crate) fn drop_back(cx: f64, cy: f64, r2: f64, dx: f64, dy: f64, d2: f64) -> (f64, f64) {
+    let f = (1.0 - r2 / d2).sqrt();
+    (cx + dx * f, cy + dy * f)
+}
+
+/// Distance to the nearest rake tine: s/2 − |fmod(d, s) − s/2| for d ≥ 0.
+#[inline(always)]
+fn rake_distance(d: f64, s: f64) -> f64 {
+    let q = d / s;
+    // fract(q) by truncation (fast, vectorisable); beyond 2^52 an f64 has no fraction.
+    let fr = if q < 4.0e15 {
+        q - (q as i64 as f64)
+    } else {
+        0.0
+    };
+    s * (0.5 - (fr - 0.5).abs())
+}
+
+/// A comb's shift at (x, y) times `sign` (+1 forward, −1 inverse: the shift is constant
+/// along m, so subtracting it inverts exactly). Identity for other ops.
+#[inline(always)]
+pub(crate) fn comb_shift(x: f64, y: f64, s: &CompiledOp, sign: f64) -> (f64, f64) {
+    let CompiledOp::Comb {
+        ax,
+        ay,
+        mx,
+        my,
+        nx,
+        ny,
+        al,
+        lambda,
+        spacing,
+    } = *s
+    else {
+        return (x, y);
+    };
+    let mut d = ((x - ax) * nx + (y - ay) * ny).abs();
+    if spacing > 0.0 {
+        d = rake_distance(d, spacing);
+    }
+    let f = sign * al / (d + lambda);
+    (x + f * mx, y + f * my)
+}
+
+/// A wavy comb's shift at (x, y) times `sign` (constant along m). Identity for other ops.
+#[inline(always)]
+pub(crate) fn wave_shift(x: f64, y: f64, s: &CompiledOp, sign: f64) -> (f64, f64) {
+    let CompiledOp::Wave {
+        mx,
+        my,
+        nx,
+        ny,
+        amp,
+        k,
+        phase,
+    } = *s
+    else {
+        return (x, y);
+    };
+    let f = sign * amp * (k * (x * nx + y * ny) + phase).sin();
+    (x + f * mx, y + f * my)
+}
+
+/// A swirl's rotation of (x, y) by `sign` times its angle (the angle depends on ρ only,
+/// which a rotation about C keeps, so −1 inverts exactly). Identity for other ops.
+#[inline(always)]
+pub(crate) fn swirl_turn(x: f64, y: f64, s: &CompiledOp, sign: f64) -> (f64, f64) {
+    let CompiledOp::Swirl {
+        cx,
+        cy,
+        r,
+        al,
+        lambda,
+        vortex,
+    } = *s
+    else {
+        return (x, y);
+    };
+    let (dx, dy) = (x - cx, y - cy);
+    let rho = (dx * dx + dy * dy).sqrt();
+    if rho == 0.0 {
+        return (x, y);
+    }
+    let d = if vortex { rho } else { (rho - r).abs() };
+    let theta = sign * al / (d + lambda) / rho;
+    let (sn, cs) = theta.sin_cos();
+    (cx + dx * cs - dy * sn, cy + dx * sn + dy * cs)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::Back;
+    use crate::synth::{Mix, SplitMix64, random_design};
+
+    fn close(a: Point, b: Point) -> bool {
+        (a - b).hypot() <= 1e-9 * (1.0 + a.to_vec2().hypot())
+    }
+
+    #[test]
+    fn compiled_ops_match_op_forward_and_inverse() {
+        let mut rng = SplitMix64(9);
+        for mix in [Mix::Mixed, Mix::DropHeavy, Mix::CombHeavy] {
+            let design = random_design(3, 300, 200, 300, mix);
+            for op in &design.ops {
+                let c = CompiledOp::new(op);
+                for _ in 0..40 {
+                    let p = Point::new(rng.range(-100.0, 400.0), rng.range(-100.0, 300.0));
+                    assert!(close(op.forward(p), c.forward(p)), "{op:?}");
+                    match (op.inverse(p), c.inverse(p)) {
+                        (Back::Moved(a), Some(b)) => assert!(close(a, b), "{op:?}"),
+                        (Back::Ink(_), None) => {}
+                        (a, b) => panic!("{op:?} at {p:?}: {a:?} vs {b:?}"),
+                    }
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn inverse_undoes_forward() {
+        let design = random_design(5, 300, 200, 200, Mix::Mixed);
+        let mut rng = SplitMix64(2);
+        for op in &design.ops {
+            let c = CompiledOp::new(op);
+            for _ in 0..40 {
+                let p = Point::new(rng.range(-50.0, 350.0), rng.range(-50.0, 250.0));
+                match c.inverse(c.forward(p)) {
+                    Some(back) => assert!((back - p).hypot() < 1e-6, "{op:?}: {p:?} → {back:?}"),
+                    // Only a spray leaves older ink under new ink.
+                    None => assert!(matches!(op, Op::Spray(_)), "{op:?} at {p:?}"),
+                }
+            }
+        }
+    }
+}
