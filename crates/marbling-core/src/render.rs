@@ -305,7 +305,7 @@ impl Shader {
 
     /// [`Shader::tile`] for designs with a noise background or overlays: every sample's
     /// colour comes from [`Surface`]; the adaptive mode refines where the first samples
-    /// come from different sources (inks or background), as on the GPU.
+    /// sources (ink colours, or the plain background colour) differ, as on the GPU.
     fn tile_textured(
         &self,
         tile: &Tile,
@@ -321,7 +321,11 @@ impl Shader {
         for p in 0..count {
             let range = p as usize * k..(p as usize + 1) * k;
             let cs = &scratch.colors[range.clone()];
-            if opts.antialias.refinement().is_some() && cs.iter().any(|&c| c != cs[0]) {
+            if opts.antialias.refinement().is_some()
+                && cs
+                    .iter()
+                    .any(|&c| self.srgb[c as usize] != self.srgb[cs[0] as usize])
+            {
                 scratch.refine.push(p);
                 continue;
             }
