@@ -7,9 +7,10 @@
 
 // False in surface_off.wgsl (the plain variant), so its checks compile away.
 const SURFACE_ENABLED: bool = true;
+// `flags` bits and layer indices: bit i set ⇔ layers[i] is used.
 const SURFACE_BACKGROUND: u32 = 1u;
-const SURFACE_PAPER: u32 = 2u;
-const SURFACE_PIGMENT: u32 = 4u;
+const SURFACE_PIGMENT: u32 = 2u;
+const SURFACE_PAPER: u32 = 4u;
 
 // One noise turned into an intensity in [0, 1] (keep in sync with `LayerParams`).
 struct SurfaceLayer {
@@ -29,20 +30,24 @@ struct SurfaceParams {
     flags: u32,
     // Palette stops in use (2..=8).
     stop_count: u32,
-    _pad: vec2<u32>,
+    // Always 3: the loop bound over `layers`, read from the uniform so that the
+    // compiler keeps ONE call of sample_noise (unrolling would triple a large shader).
+    layer_count: u32,
+    _pad: u32,
     // Palette stops, sRGB in [0, 1] (rgb; w unused), evenly spaced over intensity 0..1.
     stops: array<vec4<f32>, 8>,
-    background: SurfaceLayer,
-    paper: SurfaceLayer,
-    pigment: SurfaceLayer,
+    // 0: background noise (at the back-traced point), 1: pigment grain (where the walk
+    // ended), 2: paper grain (at the output design point).
+    layers: array<SurfaceLayer, 3>,
 }
 
-fn surface_intensity(p: vec2<f32>, l: SurfaceLayer) -> f32 {
-    let n = sample_noise(p, l.noise);
-    if l.transfer == 0u {
+fn surface_intensity(p: vec2<f32>, i: u32) -> f32 {
+    let n = sample_noise(p, surface.layers[i].noise);
+    let transfer = surface.layers[i].transfer;
+    if transfer == 0u {
         return noise_to_grey(n);
     }
-    return threshold_transfer(n, l.threshold, l.width, l.transfer == 2u);
+    return threshold_transfer(n, surface.layers[i].threshold, surface.layers[i].width, transfer == 2u);
 }
 
 // sRGB value in [0, 1] → linear light, per channel (IEC 61966-2-1).
@@ -52,9 +57,8 @@ fn srgb_to_linear3(c: vec3<f32>) -> vec3<f32> {
     return select(hi, lo, c <= vec3<f32>(0.04045));
 }
 
-// Linear colour of the noise background at back-traced design point p.
-fn surface_background(p: vec2<f32>) -> vec3<f32> {
-    let t = surface_intensity(p, surface.background);
+// Linear colour of the palette at intensity t.
+fn surface_palette(t: f32) -> vec3<f32> {
     let n = surface.stop_count - 1u;
     let x = clamp(t, 0.0, 1.0) * f32(n);
     let i = min(u32(floor(x)), n - 1u);
@@ -69,14 +73,20 @@ fn surface_background(p: vec2<f32>) -> vec3<f32> {
 // it: the noise background, then pigment grain at `end`, then paper grain at `start`.
 fn surface_shade(c: vec3<f32>, background: bool, start: vec2<f32>, end: vec2<f32>) -> vec3<f32> {
     var rgb = c;
-    if background && (surface.flags & SURFACE_BACKGROUND) != 0u {
-        rgb = surface_background(end);
-    }
-    if (surface.flags & SURFACE_PIGMENT) != 0u {
-        rgb *= 1.0 - surface.pigment.strength * surface_intensity(end, surface.pigment);
-    }
-    if (surface.flags & SURFACE_PAPER) != 0u {
-        rgb *= 1.0 - surface.paper.strength * surface_intensity(start, surface.paper);
+    for (var i = 0u; i < surface.layer_count; i++) {
+        if (surface.flags & (1u << i)) == 0u || (i == 0u && !background) {
+            continue;
+        }
+        var p = end;
+        if i == 2u {
+            p = start;
+        }
+        let g = surface_intensity(p, i);
+        if i == 0u {
+            rgb = surface_palette(g);
+        } else {
+            rgb *= 1.0 - surface.layers[i].strength * g;
+        }
     }
     return rgb;
 }

@@ -8,7 +8,8 @@ struct SurfaceParams {
     // Always 0 for the designs drawn with this variant.
     flags: u32,
     stop_count: u32,
-    _pad: vec2<u32>,
+    layer_count: u32,
+    _pad: u32,
 }
 
 fn surface_shade(c: vec3<f32>, background: bool, start: vec2<f32>, end: vec2<f32>) -> vec3<f32> {

@@ -8,10 +8,16 @@ use marbling_noise::wgsl::NoiseGpu;
 
 /// `SurfaceParams::flags` bit: the background is noise.
 pub const SURFACE_BACKGROUND: u32 = 1;
-/// `SurfaceParams::flags` bit: paper grain.
-pub const SURFACE_PAPER: u32 = 2;
 /// `SurfaceParams::flags` bit: pigment grain.
-pub const SURFACE_PIGMENT: u32 = 4;
+pub const SURFACE_PIGMENT: u32 = 2;
+/// `SurfaceParams::flags` bit: paper grain.
+pub const SURFACE_PAPER: u32 = 4;
+/// Index in [`SurfaceParams::layers`] of the background noise.
+pub const LAYER_BACKGROUND: usize = 0;
+/// Index in [`SurfaceParams::layers`] of pigment grain.
+pub const LAYER_PIGMENT: usize = 1;
+/// Index in [`SurfaceParams::layers`] of paper grain.
+pub const LAYER_PAPER: usize = 2;
 
 /// One noise turned into an intensity. Keep in sync with `struct SurfaceLayer` in
 /// shaders/surface.wgsl.
@@ -39,16 +45,16 @@ pub struct SurfaceParams {
     pub flags: u32,
     /// Palette stops in use.
     pub stop_count: u32,
+    /// Always 3, the shader's loop bound over `layers` (a uniform, so the loop holding
+    /// the one call of the noise dispatcher is not unrolled).
+    pub layer_count: u32,
     /// Padding.
-    pub _pad: [u32; 2],
+    pub _pad: u32,
     /// Palette stops, sRGB in [0, 1] (w unused).
     pub stops: [[f32; 4]; MAX_PALETTE_STOPS],
-    /// The background noise.
-    pub background: LayerParams,
-    /// Paper grain (sampled at the output design point).
-    pub paper: LayerParams,
-    /// Pigment grain (sampled where the walk ended).
-    pub pigment: LayerParams,
+    /// Background noise, pigment grain (sampled where the walk ended), paper grain
+    /// (sampled at the output design point): see `LAYER_*`.
+    pub layers: [LayerParams; 3],
 }
 
 fn layer(noise: &NoiseLayer, strength: f64) -> LayerParams {
@@ -74,15 +80,14 @@ impl SurfaceParams {
         let mut p = Self {
             flags: 0,
             stop_count: 2,
-            _pad: [0; 2],
+            layer_count: 3,
+            _pad: 0,
             stops: [[0.0; 4]; MAX_PALETTE_STOPS],
-            background: LayerParams::default(),
-            paper: LayerParams::default(),
-            pigment: LayerParams::default(),
+            layers: [LayerParams::default(); 3],
         };
         if let Some(bg) = &design.background_noise {
             p.flags |= SURFACE_BACKGROUND;
-            p.background = layer(&bg.noise, 0.0);
+            p.layers[LAYER_BACKGROUND] = layer(&bg.noise, 0.0);
             let stops = bg.palette.srgb_stops();
             p.stop_count = stops.len().clamp(2, MAX_PALETTE_STOPS) as u32;
             for (slot, s) in p.stops.iter_mut().zip(&stops) {
@@ -93,11 +98,11 @@ impl SurfaceParams {
             match o.kind {
                 GrainKind::Paper => {
                     p.flags |= SURFACE_PAPER;
-                    p.paper = layer(&o.noise, o.strength);
+                    p.layers[LAYER_PAPER] = layer(&o.noise, o.strength);
                 }
                 GrainKind::Pigment => {
                     p.flags |= SURFACE_PIGMENT;
-                    p.pigment = layer(&o.noise, o.strength);
+                    p.layers[LAYER_PIGMENT] = layer(&o.noise, o.strength);
                 }
             }
         }

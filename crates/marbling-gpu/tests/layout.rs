@@ -104,11 +104,10 @@ fn surface_params_match_wgsl() {
         &[
             ("flags", offset_of!(SurfaceParams, flags)),
             ("stop_count", offset_of!(SurfaceParams, stop_count)),
+            ("layer_count", offset_of!(SurfaceParams, layer_count)),
             ("_pad", offset_of!(SurfaceParams, _pad)),
             ("stops", offset_of!(SurfaceParams, stops)),
-            ("background", offset_of!(SurfaceParams, background)),
-            ("paper", offset_of!(SurfaceParams, paper)),
-            ("pigment", offset_of!(SurfaceParams, pigment)),
+            ("layers", offset_of!(SurfaceParams, layers)),
         ],
         size_of::<SurfaceParams>(),
     );
