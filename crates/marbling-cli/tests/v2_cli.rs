@@ -44,6 +44,17 @@ fn cpu_render_draws_a_v2_design() {
 }
 
 #[test]
+fn validate_names_the_surface() {
+    let dir = workdir("validate");
+    let o = marbling(&dir, &["validate", "design.json"]);
+    assert!(o.status.success());
+    assert_eq!(
+        String::from_utf8_lossy(&o.stdout).trim(),
+        "design.json: valid, 120×90, 2 ops: 1 drop, 1 tine; perlin noise background, pigment-grain"
+    );
+}
+
+#[test]
 fn vector_exports_refuse_noise_and_write_nothing() {
     let dir = workdir("svg");
     for args in [

@@ -75,12 +75,10 @@ fn v2_round_trips_exactly() {
         assert_eq!(again.to_json_pretty(), d.to_json_pretty());
     }
     // Palette arrays and a plain colour background with overlays stay v2.
-    let text = V2
-        .replace(
-            r#""palette":"marble""#,
-            r##""palette":["#000000","#808080","#ffffff"]"##,
-        )
-        .replace(r#""version":2"#, r#""version":2"#);
+    let text = V2.replace(
+        r#""palette":"marble""#,
+        r##""palette":["#000000","#808080","#ffffff"]"##,
+    );
     let d = Design::from_json(&text).expect("stops");
     let p = &d.background_noise.as_ref().expect("noise").palette;
     assert_eq!(p.name, None);
