@@ -11,7 +11,8 @@ pub struct ValidateArgs {
     design: String,
 }
 
-/// Prints `NAME: valid, W×H, N ops (a drop, b tine, …)`.
+/// Prints `NAME: valid, W×H, N ops: a drop, b tine, …` and, for schema v2, `; perlin
+/// noise background, paper-grain, …`.
 pub fn run(args: &ValidateArgs) -> Result<()> {
     let d = read_design(&args.design)?;
     let counts: Vec<String> = d
@@ -24,8 +25,18 @@ pub fn run(args: &ValidateArgs) -> Result<()> {
     } else {
         format!(": {}", counts.join(", "))
     };
+    let mut v2 = Vec::new();
+    if let Some(bg) = &d.background_noise {
+        v2.push(format!("{} noise background", bg.noise.type_name()));
+    }
+    v2.extend(d.overlays.iter().map(|o| o.kind.name().to_owned()));
+    let surface = if v2.is_empty() {
+        String::new()
+    } else {
+        format!("; {}", v2.join(", "))
+    };
     println!(
-        "{}: valid, {}×{}, {} ops{detail}",
+        "{}: valid, {}×{}, {} ops{detail}{surface}",
         display_name(&args.design),
         d.width,
         d.height,

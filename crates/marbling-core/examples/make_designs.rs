@@ -4,7 +4,10 @@
 //! Run from the workspace root: `cargo run -p marbling-core --example make_designs`.
 
 use marbling_core::synth::SplitMix64;
-use marbling_core::{Circular, Design, Drop, Op, Point, Rake, Rgb8, Vec2, Vortex, Wavy};
+use marbling_core::{
+    Circular, Design, Drop, NoiseBackground, NoiseLayer, Op, Overlay, Palette, Point, Rake, Rgb8,
+    Tine, Vec2, Vortex, Wavy,
+};
 use std::f64::consts::FRAC_PI_2;
 
 const W: u32 = 640;
@@ -81,6 +84,88 @@ fn design(background: &str, ops: Vec<Op>) -> Design {
     d
 }
 
+fn noise(json: &str) -> NoiseLayer {
+    NoiseLayer::from_json(json).expect("example noise specs are valid")
+}
+
+/// Schema v2 "start from noise": a Perlin fBm stone texture as the background, marbled
+/// by a wavy comb, a rake back and forth and two vortices (no ink at all).
+fn fbm_marbled() -> Design {
+    let mut d = design("#f4ecd8", Vec::new());
+    d.set_background_noise(Some(NoiseBackground::new(
+        noise(r#"{"type":"perlin","frequency":0.01,"octaves":6,"persistence":0.55,"seed":11}"#),
+        Palette::named("marble").expect("built-in palette"),
+    )));
+    d.ops = vec![
+        Op::Wavy(Wavy {
+            angle: 0.0,
+            amplitude: 18.0,
+            wavelength: 140.0,
+            phase: 0.0,
+        }),
+        rake(0.0, 0.0, (1.0, 0.0), 50.0, 40.0, 10.0),
+        rake(0.0, 25.0, (-1.0, 0.0), 50.0, 40.0, 10.0),
+        Op::Vortex(Vortex {
+            center: Point::new(200.0, 200.0),
+            alpha: 120.0,
+            lambda: 40.0,
+        }),
+        Op::Vortex(Vortex {
+            center: Point::new(450.0, 210.0),
+            alpha: -120.0,
+            lambda: 40.0,
+        }),
+    ];
+    d
+}
+
+/// Worley cells as the background, drops of ink, a gel-git comb, and pigment grain that
+/// flows with everything (compare the grain's stretch along the comb strokes).
+fn worley_pigment() -> Design {
+    let mut d = design(
+        "#f4ecd8",
+        stone(7, &["#14213d", "#fca311", "#e5e5e5"], 40, (20.0, 40.0)),
+    );
+    d.set_background_noise(Some(NoiseBackground::new(
+        noise(r#"{"type":"worley","frequency":0.03,"feature":"f2-f1","seed":5}"#),
+        Palette::from_stops(vec![hex("#0b4f6c"), hex("#a8dadc"), hex("#f1faee")])
+            .expect("three stops"),
+    )));
+    d.ops.extend(gel_git_combs(48.0, 60.0));
+    d.ops.push(Op::Tine(Tine {
+        origin: Point::new(0.0, 200.0),
+        direction: Vec2::new(1.0, 0.0),
+        alpha: 120.0,
+        lambda: 20.0,
+    }));
+    d.overlays.push(Overlay::pigment_grain(
+        noise(r#"{"type":"perlin","frequency":0.12,"octaves":2,"seed":3}"#),
+        0.35,
+    ));
+    d
+}
+
+/// A plain stone design printed on paper: paper grain fixed to the sheet while the ink
+/// is combed over it.
+fn on_paper() -> Design {
+    let earth = ["#1d3557", "#c0392b", "#e9c46a", "#2a9d8f"];
+    let mut d = design("#f6efe0", stone(8, &earth, 90, (24.0, 48.0)));
+    d.ops.push(rake(0.0, 0.0, (0.0, 1.0), 60.0, 50.0, 10.0));
+    d.ops.push(Op::Wavy(Wavy {
+        angle: FRAC_PI_2,
+        amplitude: 12.0,
+        wavelength: 100.0,
+        phase: 0.5,
+    }));
+    d.overlays.push(Overlay::paper_grain(
+        noise(
+            r#"{"type":"paper","length":16,"width":1.5,"density":0.25,"seed":8,"impurities":{"density":0.0008,"radius":1.5,"strength":1.5}}"#,
+        ),
+        0.3,
+    ));
+    d
+}
+
 fn main() -> std::io::Result<()> {
     let earth = ["#1d3557", "#c0392b", "#e9c46a", "#2a9d8f", "#f4f1de"];
     let indigo = ["#14213d", "#fca311", "#e5e5e5", "#3d5a80", "#98c1d9"];
@@ -149,6 +234,9 @@ fn main() -> std::io::Result<()> {
         ("serpentine", design("#f7f3e8", serpentine)),
         ("bouquet", design("#f7efe2", bouquet)),
         ("vortex", design("#f7f3e8", vortex)),
+        ("fbm-marbled", fbm_marbled()),
+        ("worley-pigment", worley_pigment()),
+        ("on-paper", on_paper()),
     ];
     std::fs::create_dir_all("examples/designs")?;
     for (name, d) in designs {

@@ -1,17 +1,20 @@
 //! The design document: canvas size, background and the history of operations.
 
-use crate::{Op, Rgb8};
+use crate::{NoiseBackground, Op, Overlay, Rgb8};
 
 /// Largest accepted canvas side, design pixels.
 pub const MAX_SIDE: u32 = 16_384;
 /// Largest accepted number of operations in one design.
 pub const MAX_OPS: usize = 100_000;
-/// The schema version this crate writes.
-pub const CURRENT_VERSION: u64 = 1;
+/// The newest schema version this crate writes (designs that need none of its
+/// additions are still written as version 1, see [`Design::version`]).
+pub const CURRENT_VERSION: u64 = 2;
 /// Every schema version this crate reads.
-pub const SUPPORTED_VERSIONS: &[u64] = &[1];
+pub const SUPPORTED_VERSIONS: &[u64] = &[1, 2];
 
-/// A marbled design: its history of operations, oldest first, on a plain background.
+/// A marbled design: its history of operations, oldest first, on a plain or noise
+/// background, with optional grain overlays (schema v2; see [`crate::surface`] for
+/// the exact colour rules).
 ///
 /// Coordinates are design pixels, origin top-left, x right, y down; angles in radians.
 #[derive(Clone, Debug, PartialEq)]
@@ -20,8 +23,15 @@ pub struct Design {
     pub width: u32,
     /// Canvas height, design pixels, 1..=[`MAX_SIDE`].
     pub height: u32,
-    /// Colour of the tank before any ink.
+    /// Colour of the tank before any ink. With a [`Design::background_noise`] this is
+    /// only the colour that stands for it where one colour is needed (set by
+    /// [`Design::set_background_noise`] and by the reader to the palette's middle).
     pub background: Rgb8,
+    /// Schema v2: a noise texture mapped to a palette, marbled like ink; `None` for a
+    /// plain [`Design::background`].
+    pub background_noise: Option<NoiseBackground>,
+    /// Schema v2: grain overlays applied after marbling, in order.
+    pub overlays: Vec<Overlay>,
     /// Operations, oldest first.
     pub ops: Vec<Op>,
 }
@@ -33,8 +43,31 @@ impl Design {
             width,
             height,
             background,
+            background_noise: None,
+            overlays: Vec::new(),
             ops: Vec::new(),
         }
+    }
+
+    /// The schema version this design is written as: 1 for a plain background without
+    /// overlays (so v1 documents and share links stay byte-identical), else 2.
+    pub fn version(&self) -> u64 {
+        if self.uses_v2() { 2 } else { 1 }
+    }
+
+    /// Whether the design uses a schema v2 feature (noise background or overlays),
+    /// which only raster renderers draw.
+    pub fn uses_v2(&self) -> bool {
+        self.background_noise.is_some() || !self.overlays.is_empty()
+    }
+
+    /// Sets a noise background (and [`Design::background`] to the colour that stands
+    /// for it), or a plain one with `None`.
+    pub fn set_background_noise(&mut self, noise: Option<NoiseBackground>) {
+        if let Some(n) = &noise {
+            self.background = n.mid_color();
+        }
+        self.background_noise = noise;
     }
 
     /// How many ops of each type, as `(type, count)` in [`crate::OP_TYPES`] order,

@@ -1,7 +1,18 @@
-//! Reading and writing design documents (schema v1 JSON), with errors that name the
-//! JSON path of every problem.
+//! Reading and writing design documents (schema v1 and v2 JSON), with errors that name
+//! the JSON path of every problem.
+//!
+//! Schema v2 (`"version": 2`) differs from v1 in two places only:
+//! - `background` is a colour `"#rrggbb"` as in v1, or an object
+//!   `{"noise": SPEC, "palette": P}`: SPEC a `marbling-noise` spec (design pixels), P a
+//!   palette name or an array of 2..=8 `"#rrggbb"` (default `"grey"`);
+//! - optional `"overlays": [{"type": "paper-grain" | "pigment-grain", "noise": SPEC,
+//!   "strength": s}]`, s in [0, 1].
+//!
+//! See [`crate::surface`] for how they colour a render. A design that uses neither is
+//! written as version 1.
 
 use crate::design::{CURRENT_VERSION, SUPPORTED_VERSIONS};
+use crate::surface::{GrainKind, NoiseBackground, NoiseLayer, Overlay, Palette};
 use crate::validate::Checker;
 use crate::{Circular, Design, Drop, Op, Rake, Rgb8, Spray, Tine, ValidationErrors, Vortex, Wavy};
 use kurbo::{Point, Vec2};
@@ -25,7 +36,15 @@ pub enum DesignError {
     Invalid(ValidationErrors),
 }
 
-const TOP_FIELDS: &[&str] = &["version", "width", "height", "background", "ops"];
+const TOP_FIELDS: &[&str] = &[
+    "version",
+    "width",
+    "height",
+    "background",
+    "overlays",
+    "ops",
+];
+const TOP_FIELDS_V1: &[&str] = &["version", "width", "height", "background", "ops"];
 
 /// Field names of each op type, `type` first, in the order they are written.
 fn op_fields(kind: &str) -> Option<&'static [&'static str]> {
@@ -292,7 +311,8 @@ impl Reader {
     }
 
     fn design(&mut self, v: &Value) -> Option<Design> {
-        let obj = self.object("", v, TOP_FIELDS)?;
+        let v1 = v.get("version").and_then(Value::as_u64) == Some(1);
+        let obj = self.object("", v, if v1 { TOP_FIELDS_V1 } else { TOP_FIELDS })?;
         let version = self.field("", obj, "version")?;
         match version.as_u64() {
             Some(n) if SUPPORTED_VERSIONS.contains(&n) => {}
@@ -312,7 +332,40 @@ impl Reader {
         }
         let width = self.side(obj, "width");
         let height = self.side(obj, "height");
-        let background = self.color("", obj, "background");
+        let background = match self.field("", obj, "background") {
+            Some(Value::Object(_)) if v1 => {
+                self.c.push(
+                    "background",
+                    "a noise background needs \"version\": 2; version 1 takes a colour \"#rrggbb\"",
+                );
+                None
+            }
+            Some(b @ Value::Object(_)) => {
+                self.noise_background(b).map(|n| (n.mid_color(), Some(n)))
+            }
+            Some(_) => self.color("", obj, "background").map(|c| (c, None)),
+            None => None,
+        };
+        let overlays = match obj.get("overlays") {
+            None => Some(Vec::new()),
+            Some(Value::Array(items)) => items
+                .iter()
+                .enumerate()
+                .map(|(i, item)| self.overlay(i, item))
+                .collect::<Vec<_>>()
+                .into_iter()
+                .collect::<Option<Vec<_>>>(),
+            Some(other) => {
+                self.c.push(
+                    "overlays",
+                    format!("must be an array, got {}", type_of(other)),
+                );
+                None
+            }
+        };
+        if let Some(list) = &overlays {
+            self.c.overlay_kinds(list.iter().map(|o| o.kind));
+        }
         let ops = match self.field("", obj, "ops") {
             Some(Value::Array(items)) => {
                 self.c.op_count(items.len());
@@ -330,11 +383,106 @@ impl Reader {
             }
             None => None,
         };
+        let (background, background_noise) = background?;
         Some(Design {
             width: width?,
             height: height?,
-            background: background?,
+            background,
+            background_noise,
+            overlays: overlays?,
             ops: ops?,
+        })
+    }
+
+    /// A noise spec at `path`, its problems reported under that path.
+    fn noise(&mut self, path: &str, v: Option<&Value>) -> Option<NoiseLayer> {
+        let Some(v) = v else {
+            self.c.push(path, "missing");
+            return None;
+        };
+        match NoiseLayer::from_value(v) {
+            Ok(n) => Some(n),
+            Err(problems) => {
+                for p in problems {
+                    self.c.push(join(path, &p.path), p.message);
+                }
+                None
+            }
+        }
+    }
+
+    fn palette(&mut self, path: &str, v: Option<&Value>) -> Option<Palette> {
+        let result = match v {
+            None => Palette::named("grey"),
+            Some(Value::String(name)) => Palette::named(name),
+            Some(Value::Array(items)) => {
+                let mut stops = Vec::new();
+                for (i, it) in items.iter().enumerate() {
+                    match it.as_str().map(str::parse::<Rgb8>) {
+                        Some(Ok(c)) => stops.push(c),
+                        _ => self.c.push(
+                            format!("{path}[{i}]"),
+                            format!("must be a colour \"#rrggbb\", got {}", short(it)),
+                        ),
+                    }
+                }
+                if stops.len() != items.len() {
+                    return None;
+                }
+                Palette::from_stops(stops)
+            }
+            Some(other) => {
+                self.c.push(
+                    path,
+                    format!(
+                        "must be a palette name or an array of \"#rrggbb\", got {}",
+                        short(other)
+                    ),
+                );
+                return None;
+            }
+        };
+        result.map_err(|e| self.c.push(path, e.to_string())).ok()
+    }
+
+    fn noise_background(&mut self, v: &Value) -> Option<NoiseBackground> {
+        let obj = self.object("background", v, &["noise", "palette"])?;
+        let noise = self.noise("background.noise", obj.get("noise"));
+        let palette = self.palette("background.palette", obj.get("palette"));
+        Some(NoiseBackground::new(noise?, palette?))
+    }
+
+    fn overlay(&mut self, i: usize, v: &Value) -> Option<Overlay> {
+        let path = format!("overlays[{i}]");
+        let obj = self.object(&path, v, &["type", "noise", "strength"])?;
+        let kind = match obj.get("type") {
+            Some(Value::String(s)) if s == "paper-grain" => Some(GrainKind::Paper),
+            Some(Value::String(s)) if s == "pigment-grain" => Some(GrainKind::Pigment),
+            Some(other) => {
+                self.c.push(
+                    format!("{path}.type"),
+                    format!(
+                        "unknown overlay type {}; expected one of {}",
+                        short(other),
+                        crate::OVERLAY_TYPES.join(", ")
+                    ),
+                );
+                None
+            }
+            None => {
+                self.c.push(format!("{path}.type"), "missing");
+                None
+            }
+        };
+        let noise = self.noise(&format!("{path}.noise"), obj.get("noise"));
+        let strength = self.number(&path, obj, "strength");
+        if let Some(s) = strength {
+            self.c.strength(&format!("{path}.strength"), s);
+        }
+        Some(Overlay {
+            kind: kind?,
+            noise: noise?,
+            strength: strength?,
         })
     }
 }
@@ -399,6 +547,17 @@ fn op_value(op: &Op) -> Value {
     }
 }
 
+fn palette_value(p: &Palette) -> Value {
+    match &p.name {
+        Some(name) => json!(name),
+        None => Value::Array(p.stops.iter().map(|c| json!(c.to_string())).collect()),
+    }
+}
+
+fn overlay_value(o: &Overlay) -> Value {
+    json!({"type": o.kind.name(), "noise": o.noise.json().clone(), "strength": num(o.strength)})
+}
+
 impl Design {
     /// Reads a design document, checking its structure and every value rule.
     /// All problems are reported at once, each with its JSON path.
@@ -425,23 +584,51 @@ impl Design {
         }
     }
 
-    /// The document as a JSON value in schema v1 field order.
+    /// The document as a JSON value in schema field order: version 1 when the design
+    /// uses no v2 feature (exactly the v1 document), else version 2.
     pub fn to_value(&self) -> Value {
-        json!({
-            "version": CURRENT_VERSION,
-            "width": self.width,
-            "height": self.height,
-            "background": self.background.to_string(),
-            "ops": self.ops.iter().map(op_value).collect::<Vec<_>>(),
-        })
+        debug_assert!(CURRENT_VERSION >= self.version());
+        let mut m = Map::new();
+        m.insert("version".into(), json!(self.version()));
+        m.insert("width".into(), json!(self.width));
+        m.insert("height".into(), json!(self.height));
+        m.insert("background".into(), self.background_value());
+        if !self.overlays.is_empty() {
+            m.insert(
+                "overlays".into(),
+                Value::Array(self.overlays.iter().map(overlay_value).collect()),
+            );
+        }
+        m.insert(
+            "ops".into(),
+            Value::Array(self.ops.iter().map(op_value).collect()),
+        );
+        Value::Object(m)
     }
 
-    /// The document as indented JSON, one op per line.
+    fn background_value(&self) -> Value {
+        match &self.background_noise {
+            None => json!(self.background.to_string()),
+            Some(n) => {
+                json!({"noise": n.noise.json().clone(), "palette": palette_value(&n.palette)})
+            }
+        }
+    }
+
+    /// The document as indented JSON, one op (and one overlay) per line.
     pub fn to_json_pretty(&self) -> String {
         let mut out = String::from("{\n");
         let v = self.to_value();
         for key in ["version", "width", "height", "background"] {
             out += &format!("  {:?}: {},\n", key, v[key]);
+        }
+        if !self.overlays.is_empty() {
+            out += "  \"overlays\": [";
+            for (i, o) in self.overlays.iter().enumerate() {
+                out += if i == 0 { "\n    " } else { ",\n    " };
+                out += &overlay_value(o).to_string();
+            }
+            out += "\n  ],\n";
         }
         out += "  \"ops\": [";
         for (i, op) in self.ops.iter().enumerate() {

@@ -1,6 +1,7 @@
 //! Mathematical marbling (Lu, Jaffer, Jin, Zhao & Mao 2012): the seven operations of
 //! design schema v1 with their exact forward and inverse maps, design documents (JSON,
-//! validated with path-named errors) and the exact CPU reference renderer.
+//! validated with path-named errors; schema v2 adds noise backgrounds and grain
+//! overlays, see [`surface`]) and the exact CPU reference renderer.
 //!
 //! Conventions: design pixels, origin top-left, x right, y down, angles in radians,
 //! colours sRGB `"#rrggbb"`; all geometry in f64.
@@ -15,6 +16,7 @@ mod ops;
 mod render;
 pub mod sampling;
 mod share;
+pub mod surface;
 pub mod synth;
 mod validate;
 mod walk;
@@ -33,6 +35,10 @@ pub use render::{
 pub use sampling::Antialias;
 pub use share::{
     MAX_LINK_JSON_BYTES, ShareError, decode_share, encode_share_payload, share_fragment,
+};
+pub use surface::{
+    GrainKind, MAX_PALETTE_STOPS, NoiseBackground, NoiseLayer, OVERLAY_TYPES, Overlay, Palette,
+    PaletteError,
 };
 pub use validate::{FieldError, ValidationErrors};
 pub use walk::{Batch, Traced, Walker};

@@ -3,8 +3,10 @@
 //! tiles with rayon.
 
 use crate::sampling::Sample;
+use crate::surface::Surface;
 use crate::walk::{Batch, Traced, Walker};
 use crate::{Antialias, Design, Rgb8, RgbaImage};
+use kurbo::Point;
 use rayon::prelude::*;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
@@ -123,6 +125,12 @@ struct TileScratch {
     /// Palette index of each traced sample.
     colors: Vec<u32>,
     refine: Vec<u32>,
+    /// Output design point of each sample (designs with a surface only).
+    starts: Vec<Point>,
+    /// Where each sample's walk ended (designs with a surface only).
+    ends: Vec<Point>,
+    /// Linear colour of each sample (designs with a surface only).
+    linear: Vec<[f32; 3]>,
 }
 
 /// Turns traced samples into colours.
@@ -133,6 +141,8 @@ struct Shader {
     srgb: Vec<Rgb8>,
     /// The same palette in linear light.
     linear: Vec<[f32; 3]>,
+    /// Noise background and overlays; `None` keeps the plain palette fast path.
+    surface: Option<Surface>,
 }
 
 impl Shader {
@@ -148,6 +158,7 @@ impl Shader {
             walker: Walker::new(&design.ops),
             srgb,
             linear,
+            surface: Surface::new(design),
         }
     }
 
@@ -202,8 +213,38 @@ impl Shader {
         }
         scratch.traced.clear();
         scratch.traced.resize(n as usize, Traced::Ink(0));
-        self.walker
-            .trace_batch(&mut scratch.batch, &mut scratch.traced);
+        if let Some(surface) = &self.surface {
+            scratch.starts.clear();
+            scratch.starts.extend(
+                scratch
+                    .batch
+                    .xs
+                    .iter()
+                    .zip(&scratch.batch.ys)
+                    .map(|(&x, &y)| Point::new(x, y)),
+            );
+            scratch.ends.clear();
+            scratch.ends.resize(n as usize, Point::ZERO);
+            self.walker.trace_batch_with_ends(
+                &mut scratch.batch,
+                &mut scratch.traced,
+                &mut scratch.ends,
+            );
+            scratch.linear.clear();
+            for i in 0..n as usize {
+                let (start, end) = (scratch.starts[i], scratch.ends[i]);
+                let base = match scratch.traced[i] {
+                    Traced::Ink(k) => self.linear[k],
+                    Traced::Background(p) => surface.background(p.x, p.y),
+                };
+                scratch
+                    .linear
+                    .push(surface.overlay(base, (start.x, start.y), (end.x, end.y)));
+            }
+        } else {
+            self.walker
+                .trace_batch(&mut scratch.batch, &mut scratch.traced);
+        }
         scratch.colors.clear();
         scratch
             .colors
@@ -218,6 +259,9 @@ impl Shader {
         scratch: &mut TileScratch,
         mut put: impl FnMut(u32, u32, Rgb8),
     ) {
+        if self.surface.is_some() {
+            return self.tile_textured(tile, opts, scratch, put);
+        }
         let samples = opts.antialias.samples();
         let count = tile.w * tile.h;
         self.trace(tile, 0..count, samples, opts.scale, scratch);
@@ -241,6 +285,62 @@ impl Shader {
             for (i, &p) in refine.iter().enumerate() {
                 let cs = &scratch.colors[i * fine.len()..(i + 1) * fine.len()];
                 put(p % tile.w, p / tile.w, self.average(cs, fine));
+            }
+            scratch.refine = refine;
+        }
+    }
+
+    /// Weighted average of per-sample linear colours `lin`, encoded to sRGB (designs
+    /// with a surface: colours vary within one source, so no exact-colour shortcut).
+    fn average_linear(lin: &[[f32; 3]], samples: &[Sample]) -> Rgb8 {
+        let mut acc = [0.0f32; 3];
+        for (c, s) in lin.iter().zip(samples) {
+            for ch in 0..3 {
+                acc[ch] += s.weight * c[ch];
+            }
+        }
+        let e = crate::color::linear_to_srgb;
+        Rgb8::new(e(acc[0]), e(acc[1]), e(acc[2]))
+    }
+
+    /// [`Shader::tile`] for designs with a noise background or overlays: every sample's
+    /// colour comes from [`Surface`]; the adaptive mode refines where the first samples
+    /// sources (ink colours, or the plain background colour) differ, as on the GPU.
+    fn tile_textured(
+        &self,
+        tile: &Tile,
+        opts: &RenderOptions,
+        scratch: &mut TileScratch,
+        mut put: impl FnMut(u32, u32, Rgb8),
+    ) {
+        let samples = opts.antialias.samples();
+        let count = tile.w * tile.h;
+        self.trace(tile, 0..count, samples, opts.scale, scratch);
+        let k = samples.len();
+        scratch.refine.clear();
+        for p in 0..count {
+            let range = p as usize * k..(p as usize + 1) * k;
+            let cs = &scratch.colors[range.clone()];
+            if opts.antialias.refinement().is_some()
+                && cs
+                    .iter()
+                    .any(|&c| self.srgb[c as usize] != self.srgb[cs[0] as usize])
+            {
+                scratch.refine.push(p);
+                continue;
+            }
+            put(
+                p % tile.w,
+                p / tile.w,
+                Self::average_linear(&scratch.linear[range], samples),
+            );
+        }
+        if let Some(fine) = opts.antialias.refinement() {
+            let refine = std::mem::take(&mut scratch.refine);
+            self.trace(tile, refine.iter().copied(), fine, opts.scale, scratch);
+            for (i, &p) in refine.iter().enumerate() {
+                let lin = &scratch.linear[i * fine.len()..(i + 1) * fine.len()];
+                put(p % tile.w, p / tile.w, Self::average_linear(lin, fine));
             }
             scratch.refine = refine;
         }

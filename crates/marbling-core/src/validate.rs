@@ -82,6 +82,27 @@ impl Checker {
         }
     }
 
+    /// An overlay strength: finite, in [0, 1].
+    pub(crate) fn strength(&mut self, path: &str, v: f64) {
+        if self.finite(path, v) && !(0.0..=1.0).contains(&v) {
+            self.push(path, format!("must be in [0, 1], got {v}"));
+        }
+    }
+
+    /// At most one overlay of each kind (the GPU renderer draws one of each).
+    pub(crate) fn overlay_kinds(&mut self, kinds: impl Iterator<Item = crate::GrainKind>) {
+        let mut seen = Vec::new();
+        for (i, k) in kinds.enumerate() {
+            if seen.contains(&k) {
+                self.push(
+                    format!("overlays[{i}].type"),
+                    format!("at most one {} overlay is allowed", k.name()),
+                );
+            }
+            seen.push(k);
+        }
+    }
+
     pub(crate) fn op_count(&mut self, n: usize) {
         if n > MAX_OPS {
             self.push("ops", format!("at most {MAX_OPS} ops are allowed, got {n}"));
@@ -153,6 +174,19 @@ impl Design {
         for (i, op) in self.ops.iter().enumerate() {
             c.op(i, op);
         }
+        if let Some(n) = &self.background_noise {
+            let k = n.palette.stops.len();
+            if !(2..=crate::MAX_PALETTE_STOPS).contains(&k) {
+                c.push(
+                    "background.palette",
+                    crate::PaletteError::StopCount(k).to_string(),
+                );
+            }
+        }
+        for (i, o) in self.overlays.iter().enumerate() {
+            c.strength(&format!("overlays[{i}].strength"), o.strength);
+        }
+        c.overlay_kinds(self.overlays.iter().map(|o| o.kind));
         c.finish()
     }
 }

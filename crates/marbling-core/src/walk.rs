@@ -93,9 +93,26 @@ impl Walker {
     }
 
     /// Walks every sample of `batch` back through every op, op-major, writing each
-    /// result to `out[id]`. The batch is consumed (left empty or holding background
-    /// samples' end points in arbitrary order).
+    /// result to `out[id]`. The batch is consumed (left empty).
     pub fn trace_batch(&self, batch: &mut Batch, out: &mut [Traced]) {
+        self.trace_batch_impl::<false>(batch, out, &mut []);
+    }
+
+    /// As [`Walker::trace_batch`], and also writes to `ends[id]` the design point where
+    /// each walk ended: the back-traced point for the background, or the point (in the
+    /// coordinates just after that op) that the covering drop or spray's ink holds.
+    /// Pigment grain is sampled there, so it moves with the ink.
+    pub fn trace_batch_with_ends(&self, batch: &mut Batch, out: &mut [Traced], ends: &mut [Point]) {
+        self.trace_batch_impl::<true>(batch, out, ends);
+    }
+
+    #[inline(always)]
+    fn trace_batch_impl<const ENDS: bool>(
+        &self,
+        batch: &mut Batch,
+        out: &mut [Traced],
+        ends: &mut [Point],
+    ) {
         let Batch { xs, ys, ids } = batch;
         for (k, s) in self.steps.iter().enumerate().rev() {
             if ids.is_empty() {
@@ -110,6 +127,9 @@ impl Walker {
                         let d2 = dx * dx + dy * dy;
                         if d2 < r2 {
                             out[ids[i] as usize] = Traced::Ink(k);
+                            if ENDS {
+                                ends[ids[i] as usize] = Point::new(xs[i], ys[i]);
+                            }
                             continue;
                         }
                         let (x, y) = if deform {
@@ -133,6 +153,9 @@ impl Walker {
         }
         for i in 0..ids.len() {
             out[ids[i] as usize] = Traced::Background(Point::new(xs[i], ys[i]));
+            if ENDS {
+                ends[ids[i] as usize] = Point::new(xs[i], ys[i]);
+            }
         }
         batch.clear();
     }

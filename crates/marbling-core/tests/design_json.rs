@@ -288,7 +288,7 @@ fn unknown_op_types_are_rejected() {
 fn unsupported_versions_name_the_supported_ones() {
     assert_eq!(
         errors(&variant("\"version\": 1", "\"version\": 7")),
-        ["version: unsupported version 7; this build reads version 1"]
+        ["version: unsupported version 7; this build reads version 1, 2"]
     );
 }
 

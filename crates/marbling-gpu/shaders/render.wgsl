@@ -1,5 +1,6 @@
 // The exact renderer: every sample of every output pixel walks back through ALL ops of
-// the design, newest → oldest, in one fragment-shader pass (common.wgsl is prepended).
+// the design, newest → oldest, in one fragment-shader pass (common.wgsl, marbling-noise's
+// noise module and surface.wgsl are prepended; see src/shaders.rs).
 // Vertex + fragment only, uniforms + a float texture: runs on WebGPU and WebGL2 alike.
 
 // Keep in sync with `RenderParams` in src/params.rs (checked by tests/layout.rs).
@@ -27,18 +28,37 @@ struct RenderParams {
 @group(0) @binding(0) var<uniform> params: RenderParams;
 // Rgba32Float, 2 texels per op, op k at (2·(k mod ops_per_row), k div ops_per_row).
 @group(0) @binding(1) var ops: texture_2d<f32>;
+// Schema v2 noise background and grain overlays (surface.flags == 0: none).
+@group(0) @binding(2) var<uniform> surface: SurfaceParams;
 
 @vertex
 fn vs_main(@builtin(vertex_index) vertex: u32) -> @builtin(position) vec4<f32> {
     return fullscreen_position(vertex);
 }
 
+// Where a walk ended: the colour (linear r, g, b, packed sRGB) of the ink that covered it
+// or of the plain background, whether it reached the background, and the end point.
+struct Hit {
+    color: vec4<f32>,
+    background: bool,
+    end: vec2<f32>,
+}
+
 // Walks design point `p0` back through every op: the colour it shows as
-// (linear r, g, b, packed sRGB).
+// (linear r, g, b, packed sRGB; for a v2 surface, packed is the ink's or the plain
+// background's, used only to decide refinement).
 fn trace(p0: vec2<f32>) -> vec4<f32> {
+    let h = walk(p0);
+    if !SURFACE_ENABLED || surface.flags == 0u {
+        return h.color;
+    }
+    return vec4<f32>(surface_shade(h.color.rgb, h.background, p0, h.end), h.color.w);
+}
+
+fn walk(p0: vec2<f32>) -> Hit {
     let n = params.op_count;
     if n == 0u {
-        return params.background;
+        return Hit(params.background, true, p0);
     }
     let last_col = i32(params.ops_per_row * 2u) - 2;
     var row = i32((n - 1u) / params.ops_per_row);
@@ -49,7 +69,7 @@ fn trace(p0: vec2<f32>) -> vec4<f32> {
         let b = textureLoad(ops, vec2<i32>(col + 1, row), 0);
         let r = op_back(a, b, p);
         if r.z > 0.0 {
-            return b;
+            return Hit(b, false, p);
         }
         p = r.xy;
         col -= 2;
@@ -58,7 +78,7 @@ fn trace(p0: vec2<f32>) -> vec4<f32> {
             row -= 1;
         }
     }
-    return params.background;
+    return Hit(params.background, true, p);
 }
 
 // Weighted average in linear light of samples[start .. start + count] of output pixel
@@ -89,7 +109,7 @@ fn fs_main(@builtin(position) position: vec4<f32>) -> @location(0) vec4<f32> {
     if params.encode_srgb == 0u {
         return vec4<f32>(r.rgb, 1.0);
     }
-    if r.w >= 0.0 {
+    if r.w >= 0.0 && (!SURFACE_ENABLED || surface.flags == 0u) {
         // Every sample shows one colour: keep its exact sRGB bytes, as the CPU does.
         return vec4<f32>(unpack_srgb(r.w), 1.0);
     }

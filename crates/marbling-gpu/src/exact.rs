@@ -5,14 +5,20 @@
 use crate::GpuError;
 use crate::encode::layout_ops;
 use crate::params::RenderParams;
-use crate::shaders::RENDER_WGSL;
+use crate::shaders::{RENDER_PLAIN_WGSL, render_wgsl};
+use crate::surface::SurfaceParams;
 use marbling_core::{Antialias, Design};
+use std::sync::OnceLock;
 
-/// The exact render pipeline for one target format.
+/// The exact render pipeline for one target format, in two variants: plain (every v1
+/// design; no noise code) and, built on the first design that needs it, with schema v2
+/// surfaces (noise background, grain overlays).
 #[derive(Debug)]
 pub struct ExactRenderer {
     layout: wgpu::BindGroupLayout,
+    pipeline_layout: wgpu::PipelineLayout,
     pipeline: wgpu::RenderPipeline,
+    surface_pipeline: OnceLock<wgpu::RenderPipeline>,
     format: wgpu::TextureFormat,
 }
 
@@ -20,6 +26,9 @@ pub struct ExactRenderer {
 #[derive(Debug)]
 pub struct PreparedDesign {
     _ops: wgpu::Texture,
+    _surface: wgpu::Buffer,
+    /// Whether the design needs the surface variant of the pipeline.
+    textured: bool,
     uniform: wgpu::Buffer,
     bind_group: wgpu::BindGroup,
     params: RenderParams,
@@ -47,8 +56,8 @@ impl ExactRenderer {
     /// `Rgba8Unorm`) the shader encodes sRGB itself, exactly like the CPU renderer.
     pub fn new(device: &wgpu::Device, format: wgpu::TextureFormat) -> Self {
         let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
-            label: Some("marbling render.wgsl"),
-            source: wgpu::ShaderSource::Wgsl(RENDER_WGSL.into()),
+            label: Some("marbling render.wgsl (plain)"),
+            source: wgpu::ShaderSource::Wgsl(RENDER_PLAIN_WGSL.into()),
         });
         let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("marbling render"),
@@ -75,6 +84,18 @@ impl ExactRenderer {
                     },
                     count: None,
                 },
+                wgpu::BindGroupLayoutEntry {
+                    binding: 2,
+                    visibility: wgpu::ShaderStages::FRAGMENT,
+                    ty: wgpu::BindingType::Buffer {
+                        ty: wgpu::BufferBindingType::Uniform,
+                        has_dynamic_offset: false,
+                        min_binding_size: wgpu::BufferSize::new(
+                            std::mem::size_of::<SurfaceParams>() as u64,
+                        ),
+                    },
+                    count: None,
+                },
             ],
         });
         let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
@@ -91,9 +112,28 @@ impl ExactRenderer {
         );
         Self {
             layout,
+            pipeline_layout,
             pipeline,
+            surface_pipeline: OnceLock::new(),
             format,
         }
+    }
+
+    /// The variant with schema v2 surfaces, compiled on first use.
+    fn surface_pipeline(&self, device: &wgpu::Device) -> &wgpu::RenderPipeline {
+        self.surface_pipeline.get_or_init(|| {
+            let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+                label: Some("marbling render.wgsl (surface)"),
+                source: wgpu::ShaderSource::Wgsl(render_wgsl().into()),
+            });
+            crate::fullscreen::pipeline(
+                device,
+                "marbling render (surface)",
+                &self.pipeline_layout,
+                &module,
+                self.format,
+            )
+        })
     }
 
     /// The target format this pipeline draws into.
@@ -159,6 +199,17 @@ impl ExactRenderer {
             mapped_at_creation: false,
         });
         queue.write_buffer(&uniform, 0, bytemuck::bytes_of(&params));
+        let surface_params = SurfaceParams::new(design);
+        if surface_params.flags != 0 {
+            self.surface_pipeline(device);
+        }
+        let surface = device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("marbling surface params"),
+            size: std::mem::size_of::<SurfaceParams>() as u64,
+            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        });
+        queue.write_buffer(&surface, 0, bytemuck::bytes_of(&surface_params));
         let view = ops.create_view(&wgpu::TextureViewDescriptor::default());
         let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("marbling render"),
@@ -172,10 +223,16 @@ impl ExactRenderer {
                     binding: 1,
                     resource: wgpu::BindingResource::TextureView(&view),
                 },
+                wgpu::BindGroupEntry {
+                    binding: 2,
+                    resource: surface.as_entire_binding(),
+                },
             ],
         });
         Ok(PreparedDesign {
             _ops: ops,
+            _surface: surface,
+            textured: surface_params.flags != 0,
             uniform,
             bind_group,
             params,
@@ -189,7 +246,12 @@ impl ExactRenderer {
     /// Records a full-target draw of `design` (its view set with
     /// [`PreparedDesign::set_view`]) into `pass`, whose target has this pipeline's format.
     pub fn draw(&self, pass: &mut wgpu::RenderPass<'_>, design: &PreparedDesign) {
-        pass.set_pipeline(&self.pipeline);
+        let pipeline = match (design.textured, self.surface_pipeline.get()) {
+            (true, Some(p)) => p,
+            // `prepare` built the surface variant for every design that needs it.
+            _ => &self.pipeline,
+        };
+        pass.set_pipeline(pipeline);
         pass.set_bind_group(0, &design.bind_group, &[]);
         pass.draw(0..3, 0..1);
     }

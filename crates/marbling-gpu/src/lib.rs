@@ -32,6 +32,14 @@
 //! the parameters (what rounding them to f32 does) already moves visible ink. The tests
 //! state both budgets (tests/gpu_vs_cpu.rs); docs/BENCHMARKS.md has the numbers.
 //!
+//! # Schema v2 surfaces
+//! Noise backgrounds and grain overlays (see `marbling_core::surface`) use
+//! marbling-noise's WGSL, composed into the exact renderer's module
+//! ([`shaders::render_wgsl`]), with their parameters in a second uniform block
+//! ([`surface::SurfaceParams`], about 1.1 KiB, well under WebGL2's 16 KiB). The live
+//! preview shows them through its cache; while a tool is dragged the pending op moves
+//! the cached paper grain too (part of the drag-only approximation).
+//!
 //! # Pieces
 //! - [`GpuContext`]: a device (headless on any adapter, including Mesa lavapipe, or
 //!   the app's own).
@@ -52,6 +60,7 @@ mod headless;
 pub mod params;
 mod preview;
 pub mod shaders;
+pub mod surface;
 mod target;
 mod tiles;
 

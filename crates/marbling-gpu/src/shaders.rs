@@ -1,9 +1,24 @@
-//! The WGSL sources, compiled into the crate. Each shader module is `common.wgsl`
-//! (op inverse, sRGB transfer, full-screen triangle) followed by its own file.
+//! The WGSL sources, compiled into the crate. WGSL has no includes, so each module is
+//! assembled from files: `common.wgsl` (op inverse, sRGB transfer, full-screen
+//! triangle), then for the exact renderer marbling-noise's `noise` module and
+//! `surface.wgsl` (schema v2 noise backgrounds and grain overlays), then its own file.
 
-/// The exact renderer: `shaders/common.wgsl` + `shaders/render.wgsl`.
-pub const RENDER_WGSL: &str = concat!(
+/// `shaders/common.wgsl`.
+pub const COMMON: &str = include_str!("../shaders/common.wgsl");
+/// `shaders/surface.wgsl`: noise background, pigment and paper grain.
+pub const SURFACE: &str = include_str!("../shaders/surface.wgsl");
+/// `shaders/surface_off.wgsl`: stand-ins for `surface.wgsl` in the plain variant.
+pub const SURFACE_OFF: &str = include_str!("../shaders/surface_off.wgsl");
+/// `shaders/render.wgsl`: the exact renderer's entry points.
+pub const RENDER: &str = include_str!("../shaders/render.wgsl");
+
+/// The exact renderer for designs with a plain background and no overlays (every v1
+/// design): `common.wgsl`, `surface_off.wgsl`, `render.wgsl` — no noise code, so it is
+/// as small and fast as before schema v2.
+pub const RENDER_PLAIN_WGSL: &str = concat!(
     include_str!("../shaders/common.wgsl"),
+    "\n",
+    include_str!("../shaders/surface_off.wgsl"),
     "\n",
     include_str!("../shaders/render.wgsl")
 );
@@ -15,5 +30,20 @@ pub const PREVIEW_WGSL: &str = concat!(
     include_str!("../shaders/preview.wgsl")
 );
 
+/// The exact renderer: `common.wgsl`, marbling-noise's noise module, `surface.wgsl`,
+/// `render.wgsl`.
+pub fn render_wgsl() -> String {
+    let noise = marbling_noise::wgsl::module("noise").unwrap_or_else(|| {
+        unreachable!("marbling-noise always provides its noise module");
+    });
+    [COMMON, &noise, SURFACE, RENDER].join("\n")
+}
+
 /// Every shader module as (name, source), for validation.
-pub const ALL: [(&str, &str); 2] = [("render", RENDER_WGSL), ("preview", PREVIEW_WGSL)];
+pub fn all() -> [(&'static str, String); 3] {
+    [
+        ("render", render_wgsl()),
+        ("render-plain", RENDER_PLAIN_WGSL.to_owned()),
+        ("preview", PREVIEW_WGSL.to_owned()),
+    ]
+}

@@ -2,7 +2,8 @@
 //! as naga computes for the shaders (keep src/params.rs and shaders/*.wgsl in sync).
 
 use marbling_gpu::params::{PreviewParams, RenderParams};
-use marbling_gpu::shaders::{PREVIEW_WGSL, RENDER_WGSL};
+use marbling_gpu::shaders::{PREVIEW_WGSL, render_wgsl};
+use marbling_gpu::surface::{LayerParams, SurfaceParams};
 use std::mem::{offset_of, size_of};
 
 /// (member name, offset) of WGSL struct `name`, and its size.
@@ -45,7 +46,7 @@ fn check(source: &str, name: &str, host: &[(&str, usize)], host_size: usize) {
 #[test]
 fn render_params_match_wgsl() {
     check(
-        RENDER_WGSL,
+        &render_wgsl(),
         "RenderParams",
         &[
             ("background", offset_of!(RenderParams, background)),
@@ -79,5 +80,35 @@ fn preview_params_match_wgsl() {
             ("samples", offset_of!(PreviewParams, samples)),
         ],
         size_of::<PreviewParams>(),
+    );
+}
+
+#[test]
+fn surface_params_match_wgsl() {
+    let source = render_wgsl();
+    check(
+        &source,
+        "SurfaceLayer",
+        &[
+            ("noise", offset_of!(LayerParams, noise)),
+            ("threshold", offset_of!(LayerParams, threshold)),
+            ("width", offset_of!(LayerParams, width)),
+            ("transfer", offset_of!(LayerParams, transfer)),
+            ("strength", offset_of!(LayerParams, strength)),
+        ],
+        size_of::<LayerParams>(),
+    );
+    check(
+        &source,
+        "SurfaceParams",
+        &[
+            ("flags", offset_of!(SurfaceParams, flags)),
+            ("stop_count", offset_of!(SurfaceParams, stop_count)),
+            ("layer_count", offset_of!(SurfaceParams, layer_count)),
+            ("_pad", offset_of!(SurfaceParams, _pad)),
+            ("stops", offset_of!(SurfaceParams, stops)),
+            ("layers", offset_of!(SurfaceParams, layers)),
+        ],
+        size_of::<SurfaceParams>(),
     );
 }

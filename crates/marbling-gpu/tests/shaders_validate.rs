@@ -1,6 +1,6 @@
 //! Every WGSL module parses and validates with naga: no GPU needed.
 
-use marbling_gpu::shaders::ALL;
+use marbling_gpu::shaders::all;
 
 fn validate(name: &str, source: &str) -> naga::Module {
     let module = naga::front::wgsl::parse_str(source)
@@ -21,8 +21,8 @@ fn validate(name: &str, source: &str) -> naga::Module {
 
 #[test]
 fn every_shader_parses_and_validates() {
-    for (name, source) in ALL {
-        let module = validate(name, source);
+    for (name, source) in all() {
+        let module = validate(name, &source);
         let entries: Vec<&str> = module
             .entry_points
             .iter()
@@ -34,7 +34,9 @@ fn every_shader_parses_and_validates() {
 
 #[test]
 fn a_broken_shader_is_caught() {
-    let broken = ALL[0].1.replace("return b;", "return b.xyz;");
+    let source = &all()[0].1;
+    assert!(source.contains("return Hit(b, false, p);"));
+    let broken = source.replace("return Hit(b, false, p);", "return Hit(b.xyz, false, p);");
     let parsed = naga::front::wgsl::parse_str(&broken);
     let valid = parsed.as_ref().ok().map(|m| {
         naga::valid::Validator::new(
@@ -52,8 +54,8 @@ fn a_broken_shader_is_caught() {
 #[test]
 fn every_entry_point_translates_to_webgl2_glsl() {
     use naga::back::glsl;
-    for (name, source) in ALL {
-        let module = naga::front::wgsl::parse_str(source).expect("parses");
+    for (name, source) in all() {
+        let module = naga::front::wgsl::parse_str(&source).expect("parses");
         let info = naga::valid::Validator::new(
             naga::valid::ValidationFlags::all(),
             naga::valid::Capabilities::empty(),

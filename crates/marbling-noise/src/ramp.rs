@@ -64,6 +64,12 @@ impl ColorRamp {
         Self::new(hex_list(stops))
     }
 
+    /// The stops, sRGB in [0, 1], evenly spaced from t = 0 to t = 1.
+    #[must_use]
+    pub fn stops(&self) -> &[Rgb] {
+        &self.stops
+    }
+
     /// The colour at t ∈ [0, 1] (clamped).
     #[must_use]
     pub fn sample(&self, t: f32) -> Rgb {

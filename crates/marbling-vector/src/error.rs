@@ -17,6 +17,12 @@ pub enum VectorError {
     /// The design has something that is not a union of traced ink outlines.
     #[error("design cannot be traced exactly as vectors: {0}")]
     Untraceable(String),
+    /// The design uses schema v2 raster-only features (a noise background, grain
+    /// overlays); `0` names them.
+    #[error(
+        "design has {0}, which only raster renders draw; use `marbling render --backend cpu` or `--backend gpu`"
+    )]
+    RasterOnly(String),
     /// Refinement needed more vertices than allowed.
     #[error(
         "design needs more than {limit} outline vertices at this tolerance; raise the tolerance or the vertex limit"

@@ -16,15 +16,25 @@ use rayon::prelude::*;
 /// Checks that `design` is exactly a background rectangle plus traced ink regions.
 ///
 /// Every schema-v1 design is: its background is one plain colour and its seven op types
-/// are drops and sprays (regions) and homeomorphic deformations (forward maps). Image or
-/// noise backgrounds, once the schema has them, are refused here with a message naming
-/// them, before anything is traced or written.
+/// are drops and sprays (regions) and homeomorphic deformations (forward maps). Schema
+/// v2 noise backgrounds and grain overlays are refused here with a message naming them
+/// ([`VectorError::RasterOnly`]), before anything is traced or written.
 pub fn check_traceable(design: &Design) -> Result<(), VectorError> {
     if design.width == 0 || design.height == 0 {
         return Err(VectorError::Untraceable(format!(
             "empty canvas {}×{}",
             design.width, design.height
         )));
+    }
+    let mut raster_only = Vec::new();
+    if design.background_noise.is_some() {
+        raster_only.push("a noise background".to_owned());
+    }
+    if !design.overlays.is_empty() {
+        raster_only.push(format!("{} grain overlay(s)", design.overlays.len()));
+    }
+    if !raster_only.is_empty() {
+        return Err(VectorError::RasterOnly(raster_only.join(" and ")));
     }
     Ok(())
 }

@@ -1,0 +1,111 @@
+//! The uniform block of schema v2 surfaces (noise background, paper and pigment grain)
+//! read by `shaders/surface.wgsl`: `#[repr(C)]` + bytemuck mirrors of the WGSL structs,
+//! checked against naga by tests/layout.rs.
+
+use marbling_core::surface::MAX_PALETTE_STOPS;
+use marbling_core::{Design, GrainKind, NoiseLayer};
+use marbling_noise::wgsl::NoiseGpu;
+
+/// `SurfaceParams::flags` bit: the background is noise.
+pub const SURFACE_BACKGROUND: u32 = 1;
+/// `SurfaceParams::flags` bit: pigment grain.
+pub const SURFACE_PIGMENT: u32 = 2;
+/// `SurfaceParams::flags` bit: paper grain.
+pub const SURFACE_PAPER: u32 = 4;
+/// Index in [`SurfaceParams::layers`] of the background noise.
+pub const LAYER_BACKGROUND: usize = 0;
+/// Index in [`SurfaceParams::layers`] of pigment grain.
+pub const LAYER_PIGMENT: usize = 1;
+/// Index in [`SurfaceParams::layers`] of paper grain.
+pub const LAYER_PAPER: usize = 2;
+
+/// One noise turned into an intensity. Keep in sync with `struct SurfaceLayer` in
+/// shaders/surface.wgsl.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
+pub struct LayerParams {
+    /// The noise (marbling-noise's uniform; evaluated at design pixels).
+    pub noise: NoiseGpu,
+    /// Threshold transfer centre, noise units.
+    pub threshold: f32,
+    /// Threshold transfer width, noise units.
+    pub width: f32,
+    /// 0: `0.5 + n/6` clamped; 1: threshold; 2: inverted threshold.
+    pub transfer: u32,
+    /// Overlay strength in [0, 1] (unused for the background).
+    pub strength: f32,
+}
+
+/// Schema v2 surface of a design. Keep in sync with `struct SurfaceParams` in
+/// shaders/surface.wgsl.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
+pub struct SurfaceParams {
+    /// `SURFACE_*` bits; 0 for a plain background without overlays.
+    pub flags: u32,
+    /// Palette stops in use.
+    pub stop_count: u32,
+    /// Always 3, the shader's loop bound over `layers` (a uniform, so the loop holding
+    /// the one call of the noise dispatcher is not unrolled).
+    pub layer_count: u32,
+    /// Padding.
+    pub _pad: u32,
+    /// Palette stops, sRGB in [0, 1] (w unused).
+    pub stops: [[f32; 4]; MAX_PALETTE_STOPS],
+    /// Background noise, pigment grain (sampled where the walk ended), paper grain
+    /// (sampled at the output design point): see `LAYER_*`.
+    pub layers: [LayerParams; 3],
+}
+
+fn layer(noise: &NoiseLayer, strength: f64) -> LayerParams {
+    // Parsing a NoiseLayer already checked that its spec has a WGSL form.
+    let gpu = NoiseGpu::from_spec(noise.spec(), 1).unwrap_or_default();
+    let (threshold, width, transfer) = match noise.threshold() {
+        None => (0.0, 0.0, 0),
+        Some(t) => (t.threshold, t.width, if t.invert { 2 } else { 1 }),
+    };
+    LayerParams {
+        noise: gpu,
+        threshold,
+        width,
+        transfer,
+        strength: strength as f32,
+    }
+}
+
+impl SurfaceParams {
+    /// The surface of `design` (all zero flags for a plain v1 design). The GPU draws at
+    /// most one overlay of each kind; the schema allows no more.
+    pub fn new(design: &Design) -> Self {
+        let mut p = Self {
+            flags: 0,
+            stop_count: 2,
+            layer_count: 3,
+            _pad: 0,
+            stops: [[0.0; 4]; MAX_PALETTE_STOPS],
+            layers: [LayerParams::default(); 3],
+        };
+        if let Some(bg) = &design.background_noise {
+            p.flags |= SURFACE_BACKGROUND;
+            p.layers[LAYER_BACKGROUND] = layer(&bg.noise, 0.0);
+            let stops = bg.palette.srgb_stops();
+            p.stop_count = stops.len().clamp(2, MAX_PALETTE_STOPS) as u32;
+            for (slot, s) in p.stops.iter_mut().zip(&stops) {
+                *slot = [s[0], s[1], s[2], 1.0];
+            }
+        }
+        for o in &design.overlays {
+            match o.kind {
+                GrainKind::Paper => {
+                    p.flags |= SURFACE_PAPER;
+                    p.layers[LAYER_PAPER] = layer(&o.noise, o.strength);
+                }
+                GrainKind::Pigment => {
+                    p.flags |= SURFACE_PIGMENT;
+                    p.layers[LAYER_PIGMENT] = layer(&o.noise, o.strength);
+                }
+            }
+        }
+        p
+    }
+}
