@@ -2,6 +2,9 @@
 
 use crate::canvas_gpu::{CanvasGpu, CanvasStatus};
 use crate::export::{ExportSize, ExportStep, PngExport, export_file_name};
+use crate::history::Surface;
+use crate::noise_panel::{Mode, NoiseAnalysis};
+use crate::noise_settings::NoiseSettings;
 use crate::platform::{self, PickSlot};
 use crate::playback::Playback;
 use crate::recovery::{self, LostFlag, ParkedState};
@@ -76,6 +79,14 @@ pub struct MarblingApp {
     pub(crate) lost: LostFlag,
     /// True once the state is parked for the renderer's restart.
     pub(crate) parked: bool,
+    /// Marbling or the noise playground.
+    pub(crate) mode: Mode,
+    /// The noise playground's parameters.
+    pub(crate) noise: NoiseSettings,
+    /// The noise (and zoom factor) the canvas shows, to notice changes.
+    pub(crate) noise_shown: Option<(NoiseSettings, f64)>,
+    /// Statistics of the shown noise (`Some(None)`: none can be computed).
+    pub(crate) noise_analysis: Option<Option<NoiseAnalysis>>,
 }
 
 /// Default canvas of a new design, design pixels.
@@ -154,6 +165,10 @@ impl MarblingApp {
             controls: Vec::new(),
             lost: LostFlag::default(),
             parked: false,
+            mode: Mode::Marbling,
+            noise: NoiseSettings::default(),
+            noise_shown: None,
+            noise_analysis: None,
         }
     }
 
@@ -202,10 +217,55 @@ impl MarblingApp {
     /// The shown design changed: new key, new snapshot.
     pub(crate) fn refresh(&mut self) {
         self.key += 1;
+        if self.mode == Mode::Noise {
+            let d = self.history.design();
+            match self
+                .noise
+                .design([d.width, d.height], self.noise_zoom_factor())
+            {
+                Ok(noise) => self.shown = Arc::new(noise),
+                Err(e) => self.error(format!("noise: {e}")),
+            }
+            return;
+        }
         self.shown = Arc::new(match &self.playback {
             Some(p) => p.frame(self.history.design()),
             None => self.history.shown(),
         });
+    }
+
+    /// Switches between marbling and the noise playground.
+    pub(crate) fn set_mode(&mut self, mode: Mode) {
+        if mode != self.mode {
+            self.mode = mode;
+            self.playback = None;
+            self.active = None;
+            self.noise_shown = None;
+            self.refresh();
+        }
+    }
+
+    /// In the noise playground: re-renders when a parameter or the zoom rule's factor
+    /// changed.
+    fn follow_noise(&mut self) {
+        if self.mode != Mode::Noise {
+            return;
+        }
+        let now = (self.noise.clone(), self.noise_zoom_factor());
+        if self.noise_shown.as_ref() != Some(&now) {
+            self.noise_shown = Some(now);
+            self.noise_analysis = None;
+            self.refresh();
+        }
+    }
+
+    /// Replaces the design's noise background and overlays (`what` for the status bar).
+    pub(crate) fn set_surface(&mut self, surface: Surface, what: &str) {
+        self.history.set_surface(surface);
+        self.set_mode(Mode::Marbling);
+        self.refresh();
+        self.autosave_pending = true;
+        self.info(format!("design surface: {what}"));
     }
 
     /// Appends ops made by a tool, then autosaves.
@@ -223,6 +283,7 @@ impl MarblingApp {
 
     /// Replaces the design (New, Open, link, gallery) and fits it on the canvas.
     pub(crate) fn load(&mut self, design: Design, from: &str) {
+        self.mode = Mode::Marbling;
         self.playback = None;
         self.active = None;
         self.history.replace(design);
@@ -314,7 +375,10 @@ impl MarblingApp {
             self.error("Export PNG needs the GPU renderer, which is not available");
             return;
         };
-        let design = self.history.design();
+        let design: &Design = match self.mode {
+            Mode::Noise => &self.shown,
+            Mode::Marbling => self.history.design(),
+        };
         let scale = self.export_size.scale(design);
         match PngExport::start(&rs.device, &rs.queue, design, scale, self.antialias) {
             Ok(export) => {
@@ -531,6 +595,7 @@ impl eframe::App for MarblingApp {
         self.handle_shortcuts(&ctx);
         self.advance_playback(&ctx);
         self.advance_export(frame, &ctx);
+        self.follow_noise();
         self.controls.clear();
         egui::Panel::left("marbling_tools")
             .resizable(true)

@@ -28,7 +28,9 @@ impl MarblingApp {
 
         self.navigate(ui, &response, rect, ppp);
         let view = self.view.unwrap_or(view);
-        self.drive_tool(ui, &response, rect, &view);
+        if self.mode == crate::noise_panel::Mode::Marbling {
+            self.drive_tool(ui, &response, rect, &view);
+        }
 
         // The design's rectangle on screen, clipped to the canvas.
         let tl = view.to_screen(Point::ZERO);
@@ -65,7 +67,9 @@ impl MarblingApp {
             f64::from(rect.min.y) * ppp + tl[1] * ppp,
             view.zoom * ppp,
         ]);
-        overlay::draw(&painter, rect, &view, self, design_pointer);
+        if self.mode == crate::noise_panel::Mode::Marbling {
+            overlay::draw(&painter, rect, &view, self, design_pointer);
+        }
     }
 
     /// Pan (middle drag, space + drag, two fingers) and zoom (wheel, pinch).

@@ -22,7 +22,7 @@ macro_rules! example {
 }
 
 /// Every example, in gallery order.
-pub const EXAMPLES: [Example; 7] = [
+pub const EXAMPLES: [Example; 10] = [
     example!("stone"),
     example!("gel-git"),
     example!("chevron"),
@@ -30,6 +30,9 @@ pub const EXAMPLES: [Example; 7] = [
     example!("serpentine"),
     example!("bouquet"),
     example!("vortex"),
+    example!("fbm-marbled"),
+    example!("worley-pigment"),
+    example!("on-paper"),
 ];
 
 #[cfg(test)]

@@ -97,11 +97,33 @@ impl History {
         *self = Self::new(design);
     }
 
-    /// Changes the background colour of the current design.
+    /// Changes the background colour of the current design (a plain colour replaces a
+    /// noise background).
     pub fn set_background(&mut self, c: marbling_core::Rgb8) {
+        self.design.background_noise = None;
         self.design.background = c;
     }
+
+    /// The design's noise background and grain overlays (schema v2).
+    pub fn surface(&self) -> Surface {
+        (
+            self.design.background_noise.clone(),
+            self.design.overlays.clone(),
+        )
+    }
+
+    /// Replaces the design's noise background and grain overlays; the ops stay.
+    pub fn set_surface(&mut self, (background, overlays): Surface) {
+        self.design.set_background_noise(background);
+        self.design.overlays = overlays;
+    }
 }
+
+/// A design's noise background and grain overlays.
+pub type Surface = (
+    Option<marbling_core::NoiseBackground>,
+    Vec<marbling_core::Overlay>,
+);
 
 #[cfg(test)]
 mod tests {

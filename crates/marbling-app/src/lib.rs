@@ -9,6 +9,8 @@ pub mod canvas_gpu;
 pub mod export;
 pub mod gallery;
 pub mod history;
+mod noise_panel;
+pub mod noise_settings;
 mod overlay;
 pub mod palettes;
 mod panel;

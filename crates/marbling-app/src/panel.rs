@@ -5,6 +5,7 @@ use crate::PALETTES;
 use crate::app::MarblingApp;
 use crate::export::ExportSize;
 use crate::gallery::EXAMPLES;
+use crate::noise_panel::Mode;
 use crate::platform;
 use crate::playback::Playback;
 use crate::tools::ToolKind;
@@ -17,11 +18,27 @@ fn color32(c: Rgb8) -> Color32 {
 
 impl MarblingApp {
     pub(crate) fn side_panel(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
-        ui.heading("Marbling");
+        ui.horizontal(|ui| {
+            let mut mode = self.mode;
+            let m = ui.selectable_value(
+                &mut mode,
+                Mode::Marbling,
+                RichText::new("Marbling").heading(),
+            );
+            self.control("mode-marbling", &m);
+            let n = ui.selectable_value(&mut mode, Mode::Noise, RichText::new("Noise").heading());
+            self.control("mode-noise", &n);
+            self.set_mode(mode);
+        });
         self.file_section(ui);
         ui.separator();
         self.export_section(ui, _frame);
         ui.separator();
+        if self.mode == Mode::Noise {
+            self.noise_section(ui);
+            return;
+        }
+        self.surface_section(ui);
         self.tool_section(ui);
         ui.separator();
         self.ink_section(ui);

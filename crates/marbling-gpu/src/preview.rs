@@ -41,6 +41,8 @@ pub struct PreviewCache {
     bind_group: wgpu::BindGroup,
     design_size: [f64; 2],
     cache_scale: f64,
+    /// The largest cache scale the device's texture side allows for this design.
+    max_scale: f64,
     encode_srgb: bool,
 }
 
@@ -133,7 +135,8 @@ impl PreviewRenderer {
     ) -> Result<PreviewCache, GpuError> {
         let max_side = f64::from(device.limits().max_texture_dimension_2d);
         let longest = f64::from(committed.width.max(committed.height));
-        let cache_scale = (CACHE_FACTOR * view_scale).min(max_side / longest);
+        let max_scale = max_side / longest;
+        let cache_scale = (CACHE_FACTOR * view_scale).min(max_scale);
         let (w, h) = output_size(committed, cache_scale)?;
         let cache = RenderTarget::new(device, w, h, CACHE_FORMAT);
         let mut prepared = self.cache_renderer.prepare(device, queue, committed)?;
@@ -182,6 +185,7 @@ impl PreviewRenderer {
             bind_group,
             design_size: [f64::from(committed.width), f64::from(committed.height)],
             cache_scale,
+            max_scale,
             encode_srgb: !self.format.is_srgb(),
         };
         out.set_frame(queue, None, [0.0; 2], view_scale, antialias);
@@ -232,8 +236,9 @@ impl PreviewCache {
     }
 
     /// True while the cache is at least [`CACHE_FACTOR`] times finer than a view of
-    /// `view_scale` (zooming in further calls for a new cache).
+    /// `view_scale`, or as fine as the device's textures allow (zooming in further calls
+    /// for a new cache; at the texture limit a rebuild would give the same cache).
     pub fn covers(&self, view_scale: f64) -> bool {
-        self.cache_scale >= CACHE_FACTOR * view_scale
+        self.cache_scale >= (CACHE_FACTOR * view_scale).min(self.max_scale)
     }
 }

@@ -98,3 +98,36 @@ fn preview_frames_approximate_the_exact_render() {
         assert!(gross.fraction() < 0.01, "preview moved ink: {gross:?}");
     }
 }
+
+/// At the device's texture limit the cache is as fine as it can get: it must count as
+/// covering the view, or the app would rebuild it on every frame of a drag.
+#[test]
+fn a_cache_at_the_texture_limit_covers_its_view() {
+    let Some(ctx) = common::or_skip(marbling_gpu::GpuContext::new_headless_with_limits(
+        wgpu::Limits::downlevel_webgl2_defaults(),
+    )) else {
+        return;
+    };
+    let design = random_design(3, 1024, 768, 20, Mix::Mixed);
+    let preview = PreviewRenderer::new(&ctx.device, OUTPUT_FORMAT);
+    let cache = preview
+        .build_cache(&ctx.device, &ctx.queue, &design, 1.2, Antialias::None)
+        .expect("cache");
+    assert_eq!(
+        cache.cache_size(),
+        (2048, 1536),
+        "capped at WebGL2's 2048 px"
+    );
+    assert!(
+        cache.covers(1.2),
+        "a capped cache must cover the view it was built for"
+    );
+    assert!(cache.covers(1.0));
+    let small = preview
+        .build_cache(&ctx.device, &ctx.queue, &design, 0.5, Antialias::None)
+        .expect("cache");
+    assert!(
+        !small.covers(0.8),
+        "zooming in past the cache needs a new one"
+    );
+}

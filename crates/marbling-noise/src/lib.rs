@@ -13,6 +13,7 @@
 //! mean and unit variance (analytically where a formula exists, else by constants
 //! measured once and checked by tests).
 
+pub mod analysis;
 mod curl;
 mod fbm;
 mod fibers;

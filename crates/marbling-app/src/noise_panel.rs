@@ -1,0 +1,332 @@
+//! The noise playground's side panel: pick a noise, set its parameters, read its value
+//! statistics, histogram and radially averaged power spectrum, and put it to use as the
+//! design's marbled background or as paper or pigment grain. The canvas shows the noise
+//! itself (drawn by the GPU renderer as a design with a noise background and no ops).
+
+use crate::app::MarblingApp;
+use crate::noise_settings::{
+    CURL_COMPONENTS, GABOR_KINDS, NoiseKind, NoiseSettings, WORLEY_FEATURES, WORLEY_METRICS,
+};
+use egui::{RichText, Slider};
+use egui_plot::{Bar, BarChart, Line, Plot};
+use marbling_core::{GrainKind, NoiseBackground, NoiseLayer, Overlay, Palette};
+use marbling_noise::analysis::{Stats, histogram, radial_spectrum, stats};
+
+/// Side of the sample grid the statistics and spectrum are computed on, design pixels.
+pub const ANALYSIS_SIDE: usize = 128;
+/// Histogram bins over n ∈ [−4, 4] (unit-variance noise).
+pub const HISTOGRAM_BINS: usize = 48;
+
+/// What the panel shows about the current noise.
+#[derive(Clone, Debug)]
+pub struct NoiseAnalysis {
+    /// Statistics of the unit-variance noise values.
+    pub stats: Stats,
+    /// Counts per bin over [−4, 4].
+    pub histogram: Vec<u32>,
+    /// (cycles per design pixel, share of the power).
+    pub spectrum: Vec<(f64, f64)>,
+}
+
+impl NoiseAnalysis {
+    /// Samples `layer` over the top-left `ANALYSIS_SIDE`² design pixels (paper and
+    /// canvas, whose fibers are slow on the CPU, over a quarter of that).
+    pub fn of(layer: &NoiseLayer) -> Option<Self> {
+        let side = if matches!(layer.type_name(), "paper" | "canvas") {
+            ANALYSIS_SIDE / 2
+        } else {
+            ANALYSIS_SIDE
+        };
+        let values = marbling_noise::sample_grid(layer.spec(), side as u32)?;
+        Some(Self {
+            stats: stats(&values)?,
+            histogram: histogram(&values, HISTOGRAM_BINS, -4.0, 4.0),
+            spectrum: radial_spectrum(&values, side),
+        })
+    }
+}
+
+/// Which side of the playground is open.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Mode {
+    /// Marbling: the design and its tools.
+    Marbling,
+    /// The noise playground.
+    Noise,
+}
+
+impl MarblingApp {
+    /// The zoom factor the zoom-independent rule applies now (1 when it is off).
+    pub(crate) fn noise_zoom_factor(&self) -> f64 {
+        let s = &self.noise;
+        if !s.zoom_independent || !s.kind.has_frequency() {
+            return 1.0;
+        }
+        let feature_frequency = match s.kind {
+            NoiseKind::Paper | NoiseKind::Canvas => 1.0 / s.fiber_length,
+            _ => s.frequency,
+        };
+        let zoom = self.view.map_or(1.0, |v| v.zoom);
+        crate::noise_settings::zoom_octave_factor(feature_frequency, zoom)
+    }
+
+    /// The noise panel.
+    pub(crate) fn noise_section(&mut self, ui: &mut egui::Ui) {
+        ui.label(RichText::new("Noise").strong());
+        let s = &mut self.noise;
+        egui::ComboBox::from_label("noise")
+            .selected_text(s.kind.type_name())
+            .show_ui(ui, |ui| {
+                for k in NoiseKind::ALL {
+                    ui.selectable_value(&mut s.kind, k, k.type_name());
+                }
+            });
+        noise_parameters(ui, s);
+        egui::ComboBox::from_label("palette")
+            .selected_text(s.palette_name())
+            .show_ui(ui, |ui| {
+                for (i, name) in marbling_noise::PALETTES.iter().enumerate() {
+                    ui.selectable_value(&mut s.palette, i, *name);
+                }
+            });
+        let zoom_box = ui
+            .checkbox(&mut s.zoom_independent, "zoom-independent")
+            .on_hover_text("Keep features 4–40 screen pixels wide while zooming (octave steps)");
+        self.control("noise-zoom-independent", &zoom_box);
+        let factor = self.noise_zoom_factor();
+        if factor != 1.0 {
+            ui.label(RichText::new(format!("frequency × {factor} at this zoom")).weak());
+        }
+        self.noise_readout(ui);
+        ui.separator();
+        self.noise_uses(ui, factor);
+    }
+
+    /// Min/max/mean, the histogram and the spectrum.
+    fn noise_readout(&mut self, ui: &mut egui::Ui) {
+        if self.noise_analysis.is_none() {
+            let layer = self.noise.layer(self.noise_zoom_factor());
+            self.noise_analysis = Some(layer.ok().and_then(|l| NoiseAnalysis::of(&l)));
+        }
+        let Some(Some(a)) = &self.noise_analysis else {
+            ui.label("no statistics for this noise");
+            return;
+        };
+        ui.label(format!(
+            "min {:.2}  max {:.2}  mean {:.3}  σ {:.3}",
+            a.stats.min, a.stats.max, a.stats.mean, a.stats.std_dev
+        ))
+        .on_hover_text("Of the unit-variance noise over a 128 px square (before the palette)");
+        let width = 8.0 / HISTOGRAM_BINS as f64;
+        let bars: Vec<Bar> = a
+            .histogram
+            .iter()
+            .enumerate()
+            .map(|(i, &c)| Bar::new(-4.0 + (i as f64 + 0.5) * width, f64::from(c)).width(width))
+            .collect();
+        Plot::new("noise_histogram")
+            .height(80.0)
+            .allow_zoom(false)
+            .allow_drag(false)
+            .allow_scroll(false)
+            .show_axes([true, false])
+            .x_axis_label("value")
+            .show(ui, |p| p.bar_chart(BarChart::new("histogram", bars)));
+        let points: Vec<[f64; 2]> = a
+            .spectrum
+            .iter()
+            .map(|&(f, power)| [f, (power.max(1e-12)).log10()])
+            .collect();
+        Plot::new("noise_spectrum")
+            .height(80.0)
+            .allow_zoom(false)
+            .allow_drag(false)
+            .allow_scroll(false)
+            .x_axis_label("cycles / px")
+            .show(ui, |p| p.line(Line::new("log₁₀ power", points)));
+    }
+
+    /// Export, link, and putting the noise on the design.
+    fn noise_uses(&mut self, ui: &mut egui::Ui, factor: f64) {
+        ui.horizontal_wrapped(|ui| {
+            let link = ui
+                .button("Copy noise link")
+                .on_hover_text("A link that opens this noise as a design");
+            self.control("noise-copy-link", &link);
+            if link.clicked() {
+                let link = format!(
+                    "{}#{}",
+                    crate::platform::base_url(),
+                    marbling_core::share_fragment(&self.shown)
+                );
+                ui.ctx().copy_text(link.clone());
+                self.info(format!("noise link copied ({} characters)", link.len()));
+            }
+        });
+        ui.label(RichText::new("Use on the design").strong());
+        let layer = match self.noise.layer(factor) {
+            Ok(l) => l,
+            Err(e) => {
+                ui.label(RichText::new(e).color(egui::Color32::from_rgb(255, 110, 110)));
+                return;
+            }
+        };
+        ui.horizontal_wrapped(|ui| {
+            let bg = ui
+                .button("Marble it")
+                .on_hover_text("The design's background becomes this noise, marbled like ink");
+            self.control("noise-background", &bg);
+            if bg.clicked() {
+                match Palette::named(self.noise.palette_name()) {
+                    Ok(p) => {
+                        let mut surface = self.history.surface();
+                        surface.0 = Some(NoiseBackground::new(layer.clone(), p));
+                        self.set_surface(surface, "noise background");
+                    }
+                    Err(e) => self.error(e.to_string()),
+                }
+            }
+        });
+        ui.add(Slider::new(&mut self.noise.grain_strength, 0.0..=1.0).text("grain strength"));
+        ui.horizontal_wrapped(|ui| {
+            let paper = ui
+                .button("Paper grain")
+                .on_hover_text("Fixed to the paper: it stays put while the ink moves");
+            self.control("noise-paper-grain", &paper);
+            let pigment = ui
+                .button("Pigment grain")
+                .on_hover_text("Flows with the ink: combs drag it along");
+            self.control("noise-pigment-grain", &pigment);
+            let kind = if paper.clicked() {
+                Some(GrainKind::Paper)
+            } else if pigment.clicked() {
+                Some(GrainKind::Pigment)
+            } else {
+                None
+            };
+            if let Some(kind) = kind {
+                let strength = self.noise.grain_strength;
+                let overlay = match kind {
+                    GrainKind::Paper => Overlay::paper_grain(layer.clone(), strength),
+                    GrainKind::Pigment => Overlay::pigment_grain(layer.clone(), strength),
+                };
+                let mut surface = self.history.surface();
+                surface.1.retain(|o| o.kind != kind);
+                surface.1.push(overlay);
+                self.set_surface(surface, kind.name());
+            }
+        });
+    }
+
+    /// The design's noise background and overlays, with a way to remove them.
+    pub(crate) fn surface_section(&mut self, ui: &mut egui::Ui) {
+        let (background, overlays) = self.history.surface();
+        if background.is_none() && overlays.is_empty() {
+            return;
+        }
+        ui.label(RichText::new("Surface").strong());
+        if let Some(b) = &background {
+            ui.horizontal(|ui| {
+                ui.label(format!("background: {} noise", b.noise.type_name()));
+                let remove = ui.small_button("remove");
+                self.control("remove-background-noise", &remove);
+                if remove.clicked() {
+                    self.set_surface((None, overlays.clone()), "plain background");
+                }
+            });
+        }
+        for o in &overlays {
+            ui.horizontal(|ui| {
+                ui.label(format!(
+                    "{}: {} at {:.2}",
+                    o.kind.name(),
+                    o.noise.type_name(),
+                    o.strength
+                ));
+                if ui.small_button("remove").clicked() {
+                    let kept = overlays
+                        .iter()
+                        .filter(|x| x.kind != o.kind)
+                        .cloned()
+                        .collect();
+                    self.set_surface((background.clone(), kept), "overlay removed");
+                }
+            });
+        }
+    }
+}
+
+/// The sliders of the selected noise.
+fn noise_parameters(ui: &mut egui::Ui, s: &mut NoiseSettings) {
+    let choice = |ui: &mut egui::Ui, label: &str, options: &[&str], i: &mut usize| {
+        ui.horizontal_wrapped(|ui| {
+            ui.label(label);
+            for (k, name) in options.iter().enumerate() {
+                ui.selectable_value(i, k, *name);
+            }
+        });
+    };
+    let frequency = |ui: &mut egui::Ui, f: &mut f64, max: f64| {
+        ui.add(
+            Slider::new(f, 0.001..=max)
+                .text("frequency (cycles/px)")
+                .logarithmic(true),
+        );
+    };
+    let fbm = |ui: &mut egui::Ui, s: &mut NoiseSettings| {
+        ui.add(Slider::new(&mut s.octaves, 1..=12).text("octaves"));
+        ui.add(Slider::new(&mut s.lacunarity, 1.0..=8.0).text("lacunarity"));
+        ui.add(Slider::new(&mut s.persistence, 0.0..=1.0).text("persistence"));
+    };
+    match s.kind {
+        NoiseKind::Gabor => {
+            choice(ui, "kind", &GABOR_KINDS, &mut s.gabor_kind);
+            frequency(ui, &mut s.frequency, 0.5);
+            if s.gabor_kind != 1 {
+                ui.add(
+                    Slider::new(&mut s.orientation, 0.0..=std::f64::consts::PI)
+                        .text("orientation (rad)"),
+                );
+            }
+            ui.add(
+                Slider::new(&mut s.bandwidth, 0.002..=1.0)
+                    .text("bandwidth a (1/px)")
+                    .logarithmic(true),
+            );
+            ui.add(Slider::new(&mut s.impulses, 1..=256).text("impulses"));
+        }
+        NoiseKind::Perlin | NoiseKind::Value => {
+            frequency(ui, &mut s.frequency, 1.0);
+            fbm(ui, s);
+        }
+        NoiseKind::Curl => {
+            frequency(ui, &mut s.frequency, 1.0);
+            fbm(ui, s);
+            choice(ui, "component", &CURL_COMPONENTS, &mut s.component);
+        }
+        NoiseKind::Worley => {
+            frequency(ui, &mut s.frequency, 1.0);
+            choice(ui, "feature", &WORLEY_FEATURES, &mut s.feature);
+            choice(ui, "metric", &WORLEY_METRICS, &mut s.metric);
+        }
+        NoiseKind::White => {}
+        NoiseKind::Paper | NoiseKind::Canvas => {
+            ui.add(
+                Slider::new(&mut s.fiber_length, 1.0..=256.0)
+                    .text("fiber length (px)")
+                    .logarithmic(true),
+            );
+            ui.add(Slider::new(&mut s.fiber_width, 1.0..=32.0).text("fiber width (px)"));
+            ui.add(
+                Slider::new(&mut s.fiber_density, 0.01..=4.0)
+                    .text("density (/px²)")
+                    .logarithmic(true),
+            );
+            if s.kind == NoiseKind::Canvas {
+                ui.add(Slider::new(&mut s.weights[0], 0.0..=4.0).text("horizontal threads"));
+                ui.add(Slider::new(&mut s.weights[1], 0.0..=4.0).text("vertical threads"));
+            }
+        }
+    }
+    ui.add(egui::DragValue::new(&mut s.seed).prefix("seed "));
+}
