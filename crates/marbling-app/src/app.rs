@@ -69,6 +69,8 @@ pub struct MarblingApp {
     pub(crate) sheet_on_page: Option<[f64; 3]>,
     /// Recent frame intervals, seconds (for `data-frame-ms`).
     pub(crate) frame_times: std::collections::VecDeque<f64>,
+    /// Frames drawn since start (for `data-frames`).
+    pub(crate) frames: u64,
     /// The size Export PNG renders at.
     pub(crate) export_size: ExportSize,
     /// A PNG export in progress and the file name it will get.
@@ -160,6 +162,7 @@ impl MarblingApp {
             new_size: NEW_SIZE,
             sheet_on_page: None,
             frame_times: std::collections::VecDeque::new(),
+            frames: 0,
             export_size: ExportSize::Screen,
             export: None,
             controls: Vec::new(),
@@ -515,15 +518,20 @@ impl MarblingApp {
                 && self.playback.is_none()
                 && drawn == Some((self.key, true))
         };
-        let preview_ready = self
+        let (preview_ready, work) = self
             .status
             .lock()
             .ok()
-            .is_some_and(|s| s.cache_ready == Some(self.key));
-        if ready && !preview_ready {
-            // One more frame builds the live-preview cache.
-            ctx.request_repaint();
-        }
+            .map(|s| {
+                let asked = s.cache_ready == Some(self.key);
+                if ready && !asked {
+                    // One more frame builds the live-preview cache.
+                    ctx.request_repaint();
+                }
+                let done = s.cache_done.load(std::sync::atomic::Ordering::SeqCst) == self.key;
+                (asked && done, s.work)
+            })
+            .unwrap_or_default();
         let error = self
             .message
             .as_ref()
@@ -563,7 +571,15 @@ impl MarblingApp {
             ("data-error", error),
             ("data-view", view),
             ("data-frame-ms", frame_ms),
+            ("data-frames", Some(self.frames.to_string())),
             ("data-preview-ready", preview_ready.then(|| "1".to_owned())),
+            (
+                "data-gpu-work",
+                Some(format!(
+                    "exact={},preview={},caches={}",
+                    work.exact, work.preview, work.caches
+                )),
+            ),
             ("data-controls", Some(controls)),
             ("data-exporting", exporting),
             (
@@ -589,6 +605,7 @@ impl eframe::App for MarblingApp {
             self.frame_times.pop_front();
         }
         self.frame_times.push_back(dt);
+        self.frames += 1;
         self.check_device_lost();
         self.poll_picked_file();
         self.check_fragment();

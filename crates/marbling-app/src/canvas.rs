@@ -226,6 +226,7 @@ impl MarblingApp {
             design,
             request,
             status: self.status.clone(),
+            ctx: ui.ctx().clone(),
         };
         ui.painter()
             .add(egui_wgpu::Callback::new_paint_callback(rect, callback));

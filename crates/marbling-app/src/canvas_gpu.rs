@@ -40,6 +40,23 @@ pub struct CanvasStatus {
     /// The design key whose live-preview cache is built (it is built in the frame after
     /// the exact frame, so the first drag frame does not have to wait for it).
     pub cache_ready: Option<u64>,
+    /// The design key whose preview cache the GPU has finished rendering (set from the
+    /// queue's work-done callback; 0 = none).
+    pub cache_done: Arc<std::sync::atomic::AtomicU64>,
+    /// How much GPU work the canvas has recorded: exact frames, preview frames and
+    /// preview caches (for `data-gpu-work`: hovering must not add to any of them).
+    pub work: GpuWork,
+}
+
+/// Counts of the canvas's GPU passes since start.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct GpuWork {
+    /// Exact renders of the design.
+    pub exact: u64,
+    /// Live-preview frames.
+    pub preview: u64,
+    /// Preview caches built.
+    pub caches: u64,
 }
 
 /// GPU resources kept in egui-wgpu's callback resources between frames.
@@ -50,6 +67,7 @@ pub struct CanvasGpu {
     texture_id: Option<egui::TextureId>,
     prepared: Option<(u64, PreparedDesign)>,
     cache: Option<(u64, PreviewCache)>,
+    caches_built: u64,
 }
 
 impl CanvasGpu {
@@ -62,6 +80,7 @@ impl CanvasGpu {
             texture_id: None,
             prepared: None,
             cache: None,
+            caches_built: 0,
         }
     }
 
@@ -120,6 +139,7 @@ impl CanvasGpu {
             .as_ref()
             .is_none_or(|(k, c)| *k != req.design_key || !c.covers(req.scale));
         if stale {
+            self.caches_built += 1;
             self.cache = None;
             let cache = self
                 .preview
@@ -203,6 +223,8 @@ pub struct CanvasCallback {
     pub request: FrameRequest,
     /// Where the outcome is reported.
     pub status: Arc<Mutex<CanvasStatus>>,
+    /// Woken when GPU work the UI waits for has finished.
+    pub ctx: egui::Context,
 }
 
 impl egui_wgpu::CallbackTrait for CanvasCallback {
@@ -227,13 +249,30 @@ impl egui_wgpu::CallbackTrait for CanvasCallback {
                 && status.error.is_none()
             {
                 match gpu.ensure_cache(device, queue, &self.design, &self.request) {
-                    Ok(()) => status.cache_ready = Some(self.request.design_key),
+                    Ok(()) => {
+                        status.cache_ready = Some(self.request.design_key);
+                        let done = status.cache_done.clone();
+                        let key = self.request.design_key;
+                        let ctx = self.ctx.clone();
+                        queue.on_submitted_work_done(move || {
+                            done.store(key, std::sync::atomic::Ordering::SeqCst);
+                            ctx.request_repaint();
+                        });
+                    }
                     Err(e) => status.error = Some(e),
                 }
+                status.work.caches = gpu.caches_built;
             }
             return Vec::new();
         }
-        match gpu.draw(device, queue, encoder, &self.design, &self.request) {
+        let outcome = gpu.draw(device, queue, encoder, &self.design, &self.request);
+        if self.request.pending.is_some() {
+            status.work.preview += 1;
+        } else {
+            status.work.exact += 1;
+        }
+        status.work.caches = gpu.caches_built;
+        match outcome {
             Ok(()) => {
                 status.drawn = Some(self.request.clone());
                 status.error = None;
