@@ -529,6 +529,11 @@ impl MarblingApp {
                     ctx.request_repaint();
                 }
                 let done = s.cache_done.load(std::sync::atomic::Ordering::SeqCst) == self.key;
+                if asked && !done {
+                    // Backends that report finished work only when polled (wgpu's GL)
+                    // hear of it in a later frame: look again soon.
+                    ctx.request_repaint_after(std::time::Duration::from_millis(250));
+                }
                 (asked && done, s.work)
             })
             .unwrap_or_default();

@@ -117,9 +117,10 @@ pub struct NoiseSettings {
 impl Default for NoiseSettings {
     fn default() -> Self {
         Self {
-            kind: NoiseKind::Gabor,
+            // Perlin fBm first: cheap enough for any GPU (Gabor costs ~100× more per pixel).
+            kind: NoiseKind::Perlin,
             gabor_kind: 0,
-            frequency: 0.05,
+            frequency: 0.02,
             orientation: 0.6,
             bandwidth: 0.04,
             impulses: 64,
@@ -302,7 +303,11 @@ mod tests {
 
     #[test]
     fn zooming_scales_frequency_and_kernel_together() {
-        let s = NoiseSettings::default();
+        let s = NoiseSettings {
+            kind: NoiseKind::Gabor,
+            frequency: 0.05,
+            ..NoiseSettings::default()
+        };
         let spec = s.spec_json(4.0);
         assert!((spec["frequency"].as_f64().unwrap_or(0.0) - 0.2).abs() < 1e-12);
         assert!((spec["bandwidth"].as_f64().unwrap_or(0.0) - 0.16).abs() < 1e-12);
