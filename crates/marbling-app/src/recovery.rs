@@ -68,7 +68,7 @@ pub fn recoveries() -> u32 {
     RECOVERIES.load(Ordering::SeqCst)
 }
 
-/// A flag raised when the device is lost, with what is known about why.
+/// A flag raised when the device is lost (the reason is logged, not kept).
 #[derive(Clone, Debug, Default)]
 pub struct LostFlag(Arc<AtomicBool>);
 
