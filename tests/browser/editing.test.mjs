@@ -58,11 +58,6 @@ for (const backend of Object.keys(BACKENDS)) {
     // (its own read-back path) besides the load, tool, link, autosave, device-loss and
     // drag tests of the other files.
     const webgl2Only = backend === 'webgpu' ? { skip: 'UI features are tested on webgl2' } : {};
-    // Known bug (issue #6, open): the noise-surface pipeline fails in the browser — on
-    // WebGL2 ANGLE refuses its uniform (struct nesting deeper than 4), on WebGPU the
-    // frame never becomes ready — so schema v2 designs do not render in the web app yet.
-    // Remove this skip with the fix.
-    const knownV2Bug = { skip: 'schema v2 surfaces do not render in the browser yet (#6)' };
 
     test('Save JSON downloads the design; Open loads a file; a bad file keeps the design', webgl2Only, async () => {
       const { page, context, errors } = await openPage(browser, site);
@@ -182,7 +177,7 @@ for (const backend of Object.keys(BACKENDS)) {
       await context.close();
     });
 
-    test('the Noise panel shows the noise on the canvas and marbles it into the design', knownV2Bug, async () => {
+    test('the Noise panel shows the noise on the canvas and marbles it into the design', async () => {
       const { page, context, errors } = await openPage(browser, site);
       const n = STONE.design.ops.length;
       const before = await shootSheet(page, STONE.design.width, STONE.design.height);

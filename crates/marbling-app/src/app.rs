@@ -2,8 +2,10 @@
 
 use crate::canvas_gpu::{CanvasGpu, CanvasStatus};
 use crate::export::{ExportSize, ExportStep, PngExport, export_file_name};
+use crate::gpu_errors::GpuErrors;
 use crate::history::Surface;
-use crate::noise_panel::{Mode, NoiseAnalysis};
+use crate::mode::Mode;
+use crate::noise_panel::NoiseAnalysis;
 use crate::noise_settings::NoiseSettings;
 use crate::platform::{self, PickSlot};
 use crate::playback::Playback;
@@ -79,6 +81,8 @@ pub struct MarblingApp {
     pub(crate) controls: Vec<(&'static str, egui::Rect)>,
     /// Raised when the GPU device is lost.
     pub(crate) lost: LostFlag,
+    /// GPU errors no error scope caught (shown instead of wgpu's panic).
+    pub(crate) gpu_errors: GpuErrors,
     /// True once the state is parked for the renderer's restart.
     pub(crate) parked: bool,
     /// Marbling or the noise playground.
@@ -99,11 +103,13 @@ impl MarblingApp {
     /// autosave, else the first gallery example.
     pub fn new(cc: &eframe::CreationContext<'_>) -> Self {
         let lost = LostFlag::default();
+        let gpu_errors = GpuErrors::default();
         let (gpu, backend) = match &cc.wgpu_render_state {
             Some(rs) => {
                 let gpu = CanvasGpu::new(&rs.device);
                 rs.renderer.write().callback_resources.insert(gpu);
                 lost.watch(&rs.device, &cc.egui_ctx);
+                gpu_errors.watch(&rs.device, &cc.egui_ctx);
                 platform::expose_device_loss(&rs.device);
                 (true, backend_name(rs.adapter.get_info().backend))
             }
@@ -113,6 +119,7 @@ impl MarblingApp {
             Design::from_json(crate::gallery::EXAMPLES[0].json).unwrap_or_else(|_| blank(NEW_SIZE));
         let mut app = Self::with_design(fallback, backend, gpu);
         app.lost = lost;
+        app.gpu_errors = gpu_errors;
         if let Some(parked) = recovery::take_parked() {
             app.unpark(parked);
             app.refresh();
@@ -167,6 +174,7 @@ impl MarblingApp {
             export: None,
             controls: Vec::new(),
             lost: LostFlag::default(),
+            gpu_errors: GpuErrors::default(),
             parked: false,
             mode: Mode::Marbling,
             noise: NoiseSettings::default(),
@@ -587,6 +595,7 @@ impl MarblingApp {
             ),
             ("data-controls", Some(controls)),
             ("data-exporting", exporting),
+            ("data-mode", Some(self.mode.name().to_owned())),
             (
                 "data-recovered",
                 (recovery::recoveries() > 0).then(|| recovery::recoveries().to_string()),
@@ -631,6 +640,9 @@ impl eframe::App for MarblingApp {
         if let Some(e) = self.status.lock().ok().and_then(|s| s.error.clone())
             && self.message.as_ref().is_none_or(|m| m.text != e)
         {
+            self.error(e);
+        }
+        for e in self.gpu_errors.take() {
             self.error(e);
         }
         self.autosave(frame);

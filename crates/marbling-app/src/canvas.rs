@@ -28,7 +28,7 @@ impl MarblingApp {
 
         self.navigate(ui, &response, rect, ppp);
         let view = self.view.unwrap_or(view);
-        if self.mode == crate::noise_panel::Mode::Marbling {
+        if self.mode == crate::mode::Mode::Marbling {
             self.drive_tool(ui, &response, rect, &view);
         }
 
@@ -67,7 +67,7 @@ impl MarblingApp {
             f64::from(rect.min.y) * ppp + tl[1] * ppp,
             view.zoom * ppp,
         ]);
-        if self.mode == crate::noise_panel::Mode::Marbling {
+        if self.mode == crate::mode::Mode::Marbling {
             overlay::draw(&painter, rect, &view, self, design_pointer);
         }
     }

@@ -46,15 +46,6 @@ impl NoiseAnalysis {
     }
 }
 
-/// Which side of the playground is open.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Mode {
-    /// Marbling: the design and its tools.
-    Marbling,
-    /// The noise playground.
-    Noise,
-}
-
 impl MarblingApp {
     /// The zoom factor the zoom-independent rule applies now (1 when it is off).
     pub(crate) fn noise_zoom_factor(&self) -> f64 {

@@ -5,7 +5,7 @@ use crate::PALETTES;
 use crate::app::MarblingApp;
 use crate::export::ExportSize;
 use crate::gallery::EXAMPLES;
-use crate::noise_panel::Mode;
+use crate::mode::Mode;
 use crate::platform;
 use crate::playback::Playback;
 use crate::tools::ToolKind;

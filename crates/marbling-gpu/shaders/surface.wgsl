@@ -12,9 +12,10 @@ const SURFACE_BACKGROUND: u32 = 1u;
 const SURFACE_PIGMENT: u32 = 2u;
 const SURFACE_PAPER: u32 = 4u;
 
-// One noise turned into an intensity in [0, 1] (keep in sync with `LayerParams`).
+// How layer i's noise (`SurfaceParams::noises[i]`) becomes an intensity in [0, 1]
+// (keep in sync with `LayerParams`). The noise is not a member: WebGL2 (GLSL ES, as
+// ANGLE enforces it) allows structs nested at most 4 deep, and NoiseUniform is 3 deep.
 struct SurfaceLayer {
-    noise: NoiseUniform,
     // Threshold transfer: centre and width (noise units).
     threshold: f32,
     width: f32,
@@ -38,11 +39,13 @@ struct SurfaceParams {
     stops: array<vec4<f32>, 8>,
     // 0: background noise (at the back-traced point), 1: pigment grain (where the walk
     // ended), 2: paper grain (at the output design point).
+    noises: array<NoiseUniform, 3>,
+    // The transfer and strength of each of `noises`.
     layers: array<SurfaceLayer, 3>,
 }
 
 fn surface_intensity(p: vec2<f32>, i: u32) -> f32 {
-    let n = sample_noise(p, surface.layers[i].noise);
+    let n = sample_noise(p, surface.noises[i]);
     let transfer = surface.layers[i].transfer;
     if transfer == 0u {
         return noise_to_grey(n);

@@ -19,13 +19,12 @@ pub const LAYER_PIGMENT: usize = 1;
 /// Index in [`SurfaceParams::layers`] of paper grain.
 pub const LAYER_PAPER: usize = 2;
 
-/// One noise turned into an intensity. Keep in sync with `struct SurfaceLayer` in
-/// shaders/surface.wgsl.
+/// How one layer's noise becomes an intensity. Keep in sync with `struct SurfaceLayer`
+/// in shaders/surface.wgsl. The noise itself lives in [`SurfaceParams::noises`]: WebGL2
+/// rejects structs nested more than 4 deep, and [`NoiseGpu`] is already 3 deep.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
 pub struct LayerParams {
-    /// The noise (marbling-noise's uniform; evaluated at design pixels).
-    pub noise: NoiseGpu,
     /// Threshold transfer centre, noise units.
     pub threshold: f32,
     /// Threshold transfer width, noise units.
@@ -53,24 +52,26 @@ pub struct SurfaceParams {
     /// Palette stops, sRGB in [0, 1] (w unused).
     pub stops: [[f32; 4]; MAX_PALETTE_STOPS],
     /// Background noise, pigment grain (sampled where the walk ended), paper grain
-    /// (sampled at the output design point): see `LAYER_*`.
+    /// (sampled at the output design point), evaluated at design pixels: see `LAYER_*`.
+    pub noises: [NoiseGpu; 3],
+    /// The transfer and strength of each of `noises`.
     pub layers: [LayerParams; 3],
 }
 
-fn layer(noise: &NoiseLayer, strength: f64) -> LayerParams {
+fn layer(noise: &NoiseLayer, strength: f64) -> (NoiseGpu, LayerParams) {
     // Parsing a NoiseLayer already checked that its spec has a WGSL form.
     let gpu = NoiseGpu::from_spec(noise.spec(), 1).unwrap_or_default();
     let (threshold, width, transfer) = match noise.threshold() {
         None => (0.0, 0.0, 0),
         Some(t) => (t.threshold, t.width, if t.invert { 2 } else { 1 }),
     };
-    LayerParams {
-        noise: gpu,
+    let params = LayerParams {
         threshold,
         width,
         transfer,
         strength: strength as f32,
-    }
+    };
+    (gpu, params)
 }
 
 impl SurfaceParams {
@@ -83,11 +84,12 @@ impl SurfaceParams {
             layer_count: 3,
             _pad: 0,
             stops: [[0.0; 4]; MAX_PALETTE_STOPS],
+            noises: [NoiseGpu::default(); 3],
             layers: [LayerParams::default(); 3],
         };
         if let Some(bg) = &design.background_noise {
             p.flags |= SURFACE_BACKGROUND;
-            p.layers[LAYER_BACKGROUND] = layer(&bg.noise, 0.0);
+            (p.noises[LAYER_BACKGROUND], p.layers[LAYER_BACKGROUND]) = layer(&bg.noise, 0.0);
             let stops = bg.palette.srgb_stops();
             p.stop_count = stops.len().clamp(2, MAX_PALETTE_STOPS) as u32;
             for (slot, s) in p.stops.iter_mut().zip(&stops) {
@@ -98,11 +100,12 @@ impl SurfaceParams {
             match o.kind {
                 GrainKind::Paper => {
                     p.flags |= SURFACE_PAPER;
-                    p.layers[LAYER_PAPER] = layer(&o.noise, o.strength);
+                    (p.noises[LAYER_PAPER], p.layers[LAYER_PAPER]) = layer(&o.noise, o.strength);
                 }
                 GrainKind::Pigment => {
                     p.flags |= SURFACE_PIGMENT;
-                    p.layers[LAYER_PIGMENT] = layer(&o.noise, o.strength);
+                    (p.noises[LAYER_PIGMENT], p.layers[LAYER_PIGMENT]) =
+                        layer(&o.noise, o.strength);
                 }
             }
         }

@@ -90,7 +90,6 @@ fn surface_params_match_wgsl() {
         &source,
         "SurfaceLayer",
         &[
-            ("noise", offset_of!(LayerParams, noise)),
             ("threshold", offset_of!(LayerParams, threshold)),
             ("width", offset_of!(LayerParams, width)),
             ("transfer", offset_of!(LayerParams, transfer)),
@@ -107,8 +106,85 @@ fn surface_params_match_wgsl() {
             ("layer_count", offset_of!(SurfaceParams, layer_count)),
             ("_pad", offset_of!(SurfaceParams, _pad)),
             ("stops", offset_of!(SurfaceParams, stops)),
+            ("noises", offset_of!(SurfaceParams, noises)),
             ("layers", offset_of!(SurfaceParams, layers)),
         ],
         size_of::<SurfaceParams>(),
     );
+}
+
+/// How deeply struct `ty` nests structs (a struct of scalars is 1; arrays add nothing),
+/// the way ANGLE counts for WebGL's limit.
+fn struct_depth(module: &naga::Module, ty: naga::Handle<naga::Type>) -> u32 {
+    match &module.types[ty].inner {
+        naga::TypeInner::Struct { members, .. } => {
+            1 + members
+                .iter()
+                .map(|m| struct_depth(module, m.ty))
+                .max()
+                .unwrap_or(0)
+        }
+        naga::TypeInner::Array { base, .. } | naga::TypeInner::BindingArray { base, .. } => {
+            struct_depth(module, *base)
+        }
+        _ => 0,
+    }
+}
+
+/// WebGL2 (GLSL ES through ANGLE) rejects structs nested more than 4 deep ("exceeds
+/// maximum allowed nesting level of 4"), and counts a uniform block as one level: a
+/// uniform's type may nest at most 3 deep. Every shader the app runs must stay within it.
+#[test]
+fn structs_nest_within_webgl2_limits() {
+    let render = render_wgsl();
+    for (name, source) in [
+        ("render.wgsl (surface)", render.as_str()),
+        (
+            "render.wgsl (plain)",
+            marbling_gpu::shaders::RENDER_PLAIN_WGSL,
+        ),
+        ("preview.wgsl", PREVIEW_WGSL),
+    ] {
+        let module = naga::front::wgsl::parse_str(source).expect("parses");
+        for (handle, ty) in module.types.iter() {
+            let depth = struct_depth(&module, handle);
+            assert!(
+                depth <= 4,
+                "{name}: struct {:?} nests {depth} deep (WebGL2 allows 4)",
+                ty.name
+            );
+        }
+        for (_, var) in module.global_variables.iter() {
+            if var.space != naga::AddressSpace::Uniform {
+                continue;
+            }
+            let depth = struct_depth(&module, var.ty);
+            assert!(
+                depth <= 3,
+                "{name}: uniform {:?} nests structs {depth} deep; with its block that is \
+                 {} levels (WebGL2 allows 4)",
+                var.name,
+                depth + 1
+            );
+        }
+    }
+}
+
+/// The depth measure itself: a 5-deep chain is caught.
+#[test]
+fn struct_depth_counts_nested_structs_through_arrays() {
+    let source = "struct A { x: f32 } struct B { a: array<A, 2> } struct C { b: B } \
+                  struct D { c: C } struct E { d: array<D, 3>, y: f32 }";
+    let module = naga::front::wgsl::parse_str(source).expect("parses");
+    let depth = |n: &str| {
+        let (h, _) = module
+            .types
+            .iter()
+            .find(|(_, t)| t.name.as_deref() == Some(n))
+            .expect("declared");
+        struct_depth(&module, h)
+    };
+    assert_eq!(depth("A"), 1);
+    assert_eq!(depth("C"), 3);
+    assert_eq!(depth("E"), 5);
 }

@@ -93,3 +93,66 @@ fn every_entry_point_translates_to_webgl2_glsl() {
         }
     }
 }
+
+/// Decimal float literals in the code of `source` (digits with a `.` and/or an exponent;
+/// `//` comments skipped), as written.
+fn float_literals(source: &str) -> Vec<String> {
+    let code: String = source
+        .lines()
+        .map(|l| l.split("//").next().unwrap_or(""))
+        .collect::<Vec<_>>()
+        .join("\n");
+    let source = code.as_str();
+    let mut out = Vec::new();
+    let bytes = source.as_bytes();
+    let mut i = 0;
+    while i < bytes.len() {
+        let starts = bytes[i].is_ascii_digit()
+            && (i == 0 || !(bytes[i - 1].is_ascii_alphanumeric() || bytes[i - 1] == b'_'));
+        if !starts {
+            i += 1;
+            continue;
+        }
+        let start = i;
+        while i < bytes.len()
+            && (bytes[i].is_ascii_alphanumeric()
+                || bytes[i] == b'.'
+                || ((bytes[i] == b'-' || bytes[i] == b'+') && matches!(bytes[i - 1], b'e' | b'E')))
+        {
+            i += 1;
+        }
+        let token = &source[start..i];
+        let is_float = !token.starts_with("0x")
+            && (token.contains('.') || token.contains('e') || token.contains('E'));
+        if is_float {
+            out.push(token.trim_end_matches(['f', 'h']).to_owned());
+        }
+    }
+    out
+}
+
+/// Chrome's WGSL compiler (Tint) rejects a literal above f32::MAX ("cannot be represented
+/// as 'f32'") even where naga rounds it to f32::MAX, so no shader may contain one.
+#[test]
+fn float_literals_are_representable_as_f32() {
+    for (name, source) in all() {
+        for literal in float_literals(&source) {
+            let value: f64 = literal
+                .parse()
+                .unwrap_or_else(|e| panic!("{name}: literal {literal}: {e}"));
+            assert!(
+                value.abs() <= f64::from(f32::MAX),
+                "{name}: literal {literal} is beyond f32::MAX; Tint refuses it"
+            );
+        }
+    }
+}
+
+#[test]
+fn float_literal_scan_finds_what_tint_would_refuse() {
+    let found = float_literals(
+        "var a = 3.4028235e38; // 9.9e99 in a comment\nlet b = 1.5e-3 + x2.0; let c = 0x1p4; 2u",
+    );
+    assert_eq!(found, ["3.4028235e38", "1.5e-3"]);
+    assert!("3.4028235e38".parse::<f64>().unwrap() > f64::from(f32::MAX));
+}

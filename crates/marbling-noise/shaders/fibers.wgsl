@@ -17,7 +17,9 @@ struct FiberGrid {
     _pad2: u32,
 }
 
-// Keep in sync with `FibersGpu` in crates/marbling-noise/src/wgsl.rs (112 bytes).
+// Keep in sync with `FibersGpu` in crates/marbling-noise/src/wgsl.rs (48 bytes). The
+// fiber and speck grids are separate arguments (in `NoiseUniform`, next to this struct):
+// WebGL2 allows a uniform's structs to nest only 3 deep below the block.
 struct FiberParams {
     fiber_layout: u32,
     seed: u32,
@@ -31,13 +33,10 @@ struct FiberParams {
     speck_radius: f32,
     speck_strength: f32,
     _pad1: f32,
-    fibers: FiberGrid,
-    specks: FiberGrid,
 }
 
 // Antialiased count of fibers covering p.
-fn fibers_height(p: vec2<f32>, fp: FiberParams) -> f32 {
-    let g = fp.fibers;
+fn fibers_height(p: vec2<f32>, fp: FiberParams, g: FiberGrid) -> f32 {
     let half_l = 0.5 * fp.length + 0.5;
     let half_w = 0.5 * fp.width + 0.5;
     let ix = floor_i32(p.x / g.cell);
@@ -70,8 +69,7 @@ fn fibers_height(p: vec2<f32>, fp: FiberParams) -> f32 {
 }
 
 // Total impurity speck coverage at p.
-fn fibers_specks(p: vec2<f32>, fp: FiberParams) -> f32 {
-    let g = fp.specks;
+fn fibers_specks(p: vec2<f32>, fp: FiberParams, g: FiberGrid) -> f32 {
     let ix = floor_i32(p.x / g.cell);
     let iy = floor_i32(p.y / g.cell);
     var cover = 0.0;
@@ -91,10 +89,10 @@ fn fibers_specks(p: vec2<f32>, fp: FiberParams) -> f32 {
 }
 
 // Normalised height (zero mean, unit variance) minus impurities.
-fn fibers(p: vec2<f32>, fp: FiberParams) -> f32 {
-    let n = (fibers_height(p, fp) - fp.mean) * fp.inv_std;
+fn fibers(p: vec2<f32>, fp: FiberParams, grid: FiberGrid, specks: FiberGrid) -> f32 {
+    let n = (fibers_height(p, fp, grid) - fp.mean) * fp.inv_std;
     if fp.has_impurities != 0u {
-        return n - fp.speck_strength * fibers_specks(p, fp);
+        return n - fp.speck_strength * fibers_specks(p, fp, specks);
     }
     return n;
 }

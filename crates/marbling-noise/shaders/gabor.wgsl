@@ -5,7 +5,9 @@
 
 const GABOR_TAU: f32 = 6.2831855;
 
-// Keep in sync with `GaborGpu` in crates/marbling-noise/src/wgsl.rs (128 bytes).
+// Keep in sync with `GaborGpu` in crates/marbling-noise/src/wgsl.rs (64 bytes). The
+// driving fBms are separate arguments (in `NoiseUniform`, next to this struct): WebGL2
+// allows a uniform's structs to nest only 3 deep below the block.
 struct GaborParams {
     kind: u32,
     seed: u32,
@@ -23,12 +25,10 @@ struct GaborParams {
     poisson_parts: u32,       // the Poisson draw is split into this many parts
     reach_cells: i32,         // cells searched each way, ceil(R / cell)
     _pad2: u32,
-    orientation_drive: FbmParams,
-    frequency_drive: FbmParams,
 }
 
 // The un-normalised sum at p (output pixels).
-fn gabor_raw(p: vec2<f32>, g: GaborParams) -> f32 {
+fn gabor_raw(p: vec2<f32>, g: GaborParams, orientation_drive: FbmParams, frequency_drive: FbmParams) -> f32 {
     let u = p.x / g.cell;
     let v = p.y / g.cell;
     let ix = floor_i32(u);
@@ -71,13 +71,13 @@ fn gabor_raw(p: vec2<f32>, g: GaborParams) -> f32 {
                         phase = GABOR_TAU * extra;
                     }
                     if (g.drives & 1u) != 0u {
-                        let a = g.orientation + g.orientation_amount * fbm(ip, g.orientation_drive);
+                        let a = g.orientation + g.orientation_amount * fbm(ip, orientation_drive);
                         dir = vec2<f32>(cos(a), sin(a));
                     }
                 }
                 var f = g.frequency;
                 if (g.drives & 2u) != 0u {
-                    f = g.frequency * exp2(g.frequency_amount * fbm(ip, g.frequency_drive));
+                    f = g.frequency * exp2(g.frequency_amount * fbm(ip, frequency_drive));
                 }
                 sum = sum + w * exp(-g.pi_a2 * r2) * cos(GABOR_TAU * f * (dx * dir.x + dy * dir.y) + phase);
             }
@@ -86,7 +86,8 @@ fn gabor_raw(p: vec2<f32>, g: GaborParams) -> f32 {
     return sum;
 }
 
-// Gabor noise at p, zero mean and unit variance.
-fn gabor(p: vec2<f32>, g: GaborParams) -> f32 {
-    return gabor_raw(p, g) * g.inv_std;
+// Gabor noise at p, zero mean and unit variance; the drives are read only when
+// `g.drives` says so.
+fn gabor(p: vec2<f32>, g: GaborParams, orientation_drive: FbmParams, frequency_drive: FbmParams) -> f32 {
+    return gabor_raw(p, g, orientation_drive, frequency_drive) * g.inv_std;
 }

@@ -9,7 +9,9 @@ const NOISE_WHITE: u32 = 3u;
 const NOISE_CURL: u32 = 4u;
 const NOISE_FIBERS: u32 = 5u;
 
-// Keep in sync with `NoiseGpu` in crates/marbling-noise/src/wgsl.rs (304 bytes).
+// Keep in sync with `NoiseGpu` in crates/marbling-noise/src/wgsl.rs (304 bytes). Structs
+// nest at most 2 deep here, so that a uniform holding this struct stays within WebGL2's
+// limit (ANGLE counts the block too: 4 levels in all).
 struct NoiseUniform {
     noise_type: u32,
     seed: u32,            // worley, white
@@ -20,13 +22,17 @@ struct NoiseUniform {
     _pad: u32,
     fbm: FbmParams,       // perlin/value fBm, curl potential
     gabor: GaborParams,
+    gabor_orientation_drive: FbmParams,
+    gabor_frequency_drive: FbmParams,
     fibers: FiberParams,
+    fiber_grid: FiberGrid,
+    speck_grid: FiberGrid,
 }
 
 fn sample_noise(p: vec2<f32>, u: NoiseUniform) -> f32 {
     switch u.noise_type {
         case 0u: {
-            return gabor(p, u.gabor);
+            return gabor(p, u.gabor, u.gabor_orientation_drive, u.gabor_frequency_drive);
         }
         case 1u: {
             return fbm(p, u.fbm);
@@ -41,7 +47,7 @@ fn sample_noise(p: vec2<f32>, u: NoiseUniform) -> f32 {
             return curl_component(p, u.fbm, u.feature);
         }
         case 5u: {
-            return fibers(p, u.fibers);
+            return fibers(p, u.fibers, u.fiber_grid, u.speck_grid);
         }
         default: {
             return 0.0;

@@ -25,8 +25,8 @@ fn worley2(p: vec2<f32>, seed: u32, metric: u32, period: vec2<i32>) -> vec2<f32>
     let iy = floor_i32(p.y);
     let fx = p.x - f32(ix);
     let fy = p.y - f32(iy);
-    var f1 = 3.4028235e38;
-    var f2 = 3.4028235e38;
+    var f1 = 3.4028234e38;
+    var f2 = 3.4028234e38;
     for (var dj = -1; dj <= 1; dj = dj + 1) {
         for (var di = -1; di <= 1; di = di + 1) {
             var rng = cell_hash(wrap_cell(ix + di, period.x), wrap_cell(iy + dj, period.y), seed);

@@ -123,7 +123,8 @@ impl From<&FbmParams> for FbmGpu {
     }
 }
 
-/// Host mirror of WGSL `GaborParams` (gabor.wgsl). Keep in sync.
+/// Host mirror of WGSL `GaborParams` (gabor.wgsl). Keep in sync. Its driving fBms are
+/// [`NoiseGpu::gabor_orientation_drive`] and [`NoiseGpu::gabor_frequency_drive`].
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Pod, Zeroable)]
 pub struct GaborGpu {
@@ -159,10 +160,6 @@ pub struct GaborGpu {
     pub reach_cells: i32,
     /// Padding.
     pub _pad: u32,
-    /// The fBm driving the orientation.
-    pub orientation_drive: FbmGpu,
-    /// The fBm driving the frequency.
-    pub frequency_drive: FbmGpu,
 }
 
 /// Host mirror of WGSL `FiberGrid` (fibers.wgsl). Keep in sync.
@@ -183,7 +180,8 @@ pub struct FiberGridGpu {
     pub _pad: [u32; 3],
 }
 
-/// Host mirror of WGSL `FiberParams` (fibers.wgsl). Keep in sync.
+/// Host mirror of WGSL `FiberParams` (fibers.wgsl). Keep in sync. Its grids are
+/// [`NoiseGpu::fiber_grid`] and [`NoiseGpu::speck_grid`].
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Pod, Zeroable)]
 pub struct FibersGpu {
@@ -211,14 +209,12 @@ pub struct FibersGpu {
     pub speck_strength: f32,
     /// Padding.
     pub _pad1: f32,
-    /// Fiber grid.
-    pub fibers: FiberGridGpu,
-    /// Speck grid.
-    pub specks: FiberGridGpu,
 }
 
 /// Host mirror of WGSL `NoiseUniform` (noise.wgsl), the uniform read by `sample_noise`.
-/// Keep in sync.
+/// Keep in sync. Structs nest at most 2 deep in it (the Gabor drives and fiber grids sit
+/// here, not inside their parameters), so a uniform that holds it stays within WebGL2's
+/// nesting limit.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Pod, Zeroable)]
 pub struct NoiseGpu {
@@ -240,8 +236,16 @@ pub struct NoiseGpu {
     pub fbm: FbmGpu,
     /// Gabor parameters.
     pub gabor: GaborGpu,
+    /// The fBm driving the Gabor orientation (read when `gabor.drives` bit 0 is set).
+    pub gabor_orientation_drive: FbmGpu,
+    /// The fBm driving the Gabor frequency (read when `gabor.drives` bit 1 is set).
+    pub gabor_frequency_drive: FbmGpu,
     /// Fiber parameters.
     pub fibers: FibersGpu,
+    /// Fiber grid.
+    pub fiber_grid: FiberGridGpu,
+    /// Impurity speck grid.
+    pub speck_grid: FiberGridGpu,
 }
 
 /// Why a spec has no GPU form.
@@ -270,16 +274,13 @@ fn drive_fbm(
 }
 
 impl GaborGpu {
-    /// The uniform of a CPU Gabor (its drives must be given as fBm separately).
+    /// The uniform of a CPU Gabor, with the amounts of the orientation and frequency
+    /// drives when they are on (the driving fBms go in [`NoiseGpu`]).
     #[must_use]
-    pub fn new(
-        g: &Gabor,
-        orientation: Option<(FbmGpu, f32)>,
-        frequency: Option<(FbmGpu, f32)>,
-    ) -> Self {
+    pub fn new(g: &Gabor, orientation: Option<f32>, frequency: Option<f32>) -> Self {
         let p = g.params();
-        let (od, oa) = orientation.unwrap_or_default();
-        let (fd, fa) = frequency.unwrap_or_default();
+        let oa = orientation.unwrap_or_default();
+        let fa = frequency.unwrap_or_default();
         Self {
             kind: p.kind.index(),
             seed: p.seed,
@@ -297,23 +298,25 @@ impl GaborGpu {
             poisson_parts: g.poisson_parts,
             reach_cells: g.reach_cells,
             _pad: 0,
-            orientation_drive: od,
-            frequency_drive: fd,
         }
+    }
+}
+
+/// The uniform of one of a [`Fibers`]' generation grids.
+fn grid_gpu(g: &crate::fibers::Grid) -> FiberGridGpu {
+    FiberGridGpu {
+        cell: g.cell,
+        reach_cells: g.reach_cells,
+        period_cells: g.period_cells,
+        exp_neg_part: g.exp_neg_part,
+        poisson_parts: g.poisson_parts,
+        _pad: [0; 3],
     }
 }
 
 impl From<&Fibers> for FibersGpu {
     fn from(f: &Fibers) -> Self {
         let p = f.params();
-        let grid = |g: &crate::fibers::Grid| FiberGridGpu {
-            cell: g.cell,
-            reach_cells: g.reach_cells,
-            period_cells: g.period_cells,
-            exp_neg_part: g.exp_neg_part,
-            poisson_parts: g.poisson_parts,
-            _pad: [0; 3],
-        };
         let imp = p.impurities;
         Self {
             fiber_layout: match p.layout {
@@ -331,8 +334,6 @@ impl From<&Fibers> for FibersGpu {
             speck_radius: imp.map_or(0.0, |i| i.radius),
             speck_strength: imp.map_or(0.0, |i| i.strength),
             _pad1: 0.0,
-            fibers: grid(&f.fibers),
-            specks: f.specks.as_ref().map(grid).unwrap_or_default(),
         }
     }
 }
@@ -368,7 +369,9 @@ impl NoiseGpu {
                     frequency_drive: None,
                 });
                 u.noise_type = 0;
-                u.gabor = GaborGpu::new(&g, o_on.then_some((od, oa)), f_on.then_some((fd, fa)));
+                u.gabor = GaborGpu::new(&g, o_on.then_some(oa), f_on.then_some(fa));
+                u.gabor_orientation_drive = od;
+                u.gabor_frequency_drive = fd;
             }
             Source::Fbm(p) => {
                 u.noise_type = 1;
@@ -407,7 +410,10 @@ impl NoiseGpu {
             }
             Source::Fibers(p) => {
                 u.noise_type = 5;
-                u.fibers = FibersGpu::from(&Fibers::new(FiberParams { period, ..*p }));
+                let f = Fibers::new(FiberParams { period, ..*p });
+                u.fibers = FibersGpu::from(&f);
+                u.fiber_grid = grid_gpu(&f.fibers);
+                u.speck_grid = f.specks.as_ref().map(grid_gpu).unwrap_or_default();
             }
             Source::Product(_) => return Err(GpuUnsupported::Product),
         }

@@ -76,8 +76,7 @@ fn host_structs_match_wgsl_layout() {
             ("inv_std", offset_of!(GaborGpu, inv_std)),
             ("poisson_parts", offset_of!(GaborGpu, poisson_parts)),
             ("frequency_amount", offset_of!(GaborGpu, frequency_amount)),
-            ("orientation_drive", offset_of!(GaborGpu, orientation_drive)),
-            ("frequency_drive", offset_of!(GaborGpu, frequency_drive)),
+            ("reach_cells", offset_of!(GaborGpu, reach_cells)),
         ],
     );
     check(
@@ -94,8 +93,6 @@ fn host_structs_match_wgsl_layout() {
         &[
             ("mean", offset_of!(FibersGpu, mean)),
             ("speck_strength", offset_of!(FibersGpu, speck_strength)),
-            ("fibers", offset_of!(FibersGpu, fibers)),
-            ("specks", offset_of!(FibersGpu, specks)),
         ],
     );
     check(
@@ -106,7 +103,17 @@ fn host_structs_match_wgsl_layout() {
             ("frequency", offset_of!(NoiseGpu, frequency)),
             ("fbm", offset_of!(NoiseGpu, fbm)),
             ("gabor", offset_of!(NoiseGpu, gabor)),
+            (
+                "gabor_orientation_drive",
+                offset_of!(NoiseGpu, gabor_orientation_drive),
+            ),
+            (
+                "gabor_frequency_drive",
+                offset_of!(NoiseGpu, gabor_frequency_drive),
+            ),
             ("fibers", offset_of!(NoiseGpu, fibers)),
+            ("fiber_grid", offset_of!(NoiseGpu, fiber_grid)),
+            ("speck_grid", offset_of!(NoiseGpu, speck_grid)),
         ],
     );
 }
