@@ -42,6 +42,10 @@ pub struct BenchArgs {
     /// With `--pending`: preview frames to average.
     #[arg(long, default_value_t = 200)]
     pub frames: u32,
+    /// GPU only: draw exact frames with the fragment pipeline (the app's path, and the
+    /// only one on WebGL2) instead of the compute pass headless renders use.
+    #[arg(long)]
+    pub fragment: bool,
 }
 
 /// A synthetic design mix.

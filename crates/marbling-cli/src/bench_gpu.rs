@@ -9,13 +9,24 @@ use crate::bench::BenchArgs;
 use anyhow::Result;
 use marbling_core::synth::{Mix, random_design};
 use marbling_core::{Antialias, Op, Point, Tine, Vec2};
-use marbling_gpu::{GpuRenderer, OUTPUT_FORMAT, PreviewRenderer, RenderTarget, View};
+use marbling_gpu::{GpuRenderer, OUTPUT_FORMAT, PreviewRenderer, View};
 use std::time::Instant;
+
+/// The renderer `args` ask for (`--fragment`: the fragment pipeline).
+fn renderer(args: &BenchArgs) -> Result<GpuRenderer> {
+    let gpu = gpu_renderer()?;
+    Ok(if args.fragment {
+        gpu.with_fragment_path()
+    } else {
+        gpu
+    })
+}
 
 fn header(gpu: &GpuRenderer, args: &BenchArgs, what: &str) {
     let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
     println!(
-        "backend gpu ({what}), adapter {}, {threads} CPU threads, {} px, aa {} ({} samples/px)",
+        "backend gpu ({what}, {} path), adapter {}, {threads} CPU threads, {} px, aa {} ({} samples/px)",
+        gpu.path(),
         gpu.context().describe(),
         args.size,
         args.aa,
@@ -37,16 +48,15 @@ fn best_of(repeat: u32, mut f: impl FnMut() -> Result<()>) -> Result<f64> {
 
 /// Exact frames: op-samples/s and frames/s per design.
 pub fn exact(args: &BenchArgs) -> Result<()> {
-    let gpu = gpu_renderer()?;
+    let gpu = renderer(args)?;
     header(&gpu, args, "exact frames");
     println!(
         "{:<12} {:>7} {:>10} {:>9} {:>18}",
         "design", "ops", "seconds", "fps", "op-samples/s"
     );
     let (w, h) = (args.size.width, args.size.height);
-    let device = &gpu.context().device;
-    let target = RenderTarget::new(device, w, h, OUTPUT_FORMAT);
-    let warm = RenderTarget::new(device, 8, 8, OUTPUT_FORMAT);
+    let target = gpu.target(w, h);
+    let warm = gpu.target(8, 8);
     for &m in &args.mix {
         let (name, mix) = m.mix();
         for &n in &args.ops {
@@ -88,7 +98,7 @@ fn dragged_tine(i: u32, w: f64, h: f64) -> Op {
 /// Live-editing frames per committed history length: the one-off cache build, the
 /// mean preview frame over `--frames` frames, and the exact frame it stands in for.
 pub fn pending(args: &BenchArgs) -> Result<()> {
-    let gpu = gpu_renderer()?;
+    let gpu = renderer(args)?;
     header(&gpu, args, "live editing: cached history + one pending op");
     println!(
         "{:>7} {:>11} {:>10} {:>12} {:>11} {:>14} {:>10}",
@@ -98,7 +108,7 @@ pub fn pending(args: &BenchArgs) -> Result<()> {
     let (device, queue) = (&ctx.device, &ctx.queue);
     let (w, h) = (args.size.width, args.size.height);
     let preview = PreviewRenderer::new(device, OUTPUT_FORMAT);
-    let target = RenderTarget::new(device, w, h, OUTPUT_FORMAT);
+    let target = gpu.target(w, h);
     let mix = args.mix.first().map_or(Mix::Mixed, |m| m.mix().1);
     for &n in &args.ops {
         let committed = random_design(7, w, h, n, mix);

@@ -2,6 +2,7 @@
 // the design, newest → oldest, in one fragment-shader pass (common.wgsl, marbling-noise's
 // noise module and surface.wgsl are prepended; see src/shaders.rs).
 // Vertex + fragment only, uniforms + a float texture: runs on WebGPU and WebGL2 alike.
+// render_compute.wgsl adds a compute entry point drawing the same `shade`.
 
 // Keep in sync with `RenderParams` in src/params.rs (checked by tests/layout.rs).
 struct RenderParams {
@@ -101,7 +102,14 @@ fn average(pixel: vec2<f32>, start: u32, count: u32) -> vec4<f32> {
 
 @fragment
 fn fs_main(@builtin(position) position: vec4<f32>) -> @location(0) vec4<f32> {
-    let pixel = floor(position.xy) + params.offset;
+    return shade(floor(position.xy));
+}
+
+// The colour of the target's pixel (column, row) = `target_pixel` (whole numbers), as
+// written to the target (sRGB-encoded or linear, see `encode_srgb`). The fragment entry
+// above and the compute entry of render_compute.wgsl both draw with it.
+fn shade(target_pixel: vec2<f32>) -> vec4<f32> {
+    let pixel = target_pixel + params.offset;
     var r = average(pixel, 0u, params.first_count);
     if r.w < 0.0 && params.refine_count > 0u {
         r = average(pixel, params.first_count, params.refine_count);

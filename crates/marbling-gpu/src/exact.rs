@@ -59,12 +59,18 @@ impl ExactRenderer {
             label: Some("marbling render.wgsl (plain)"),
             source: wgpu::ShaderSource::Wgsl(RENDER_PLAIN_WGSL.into()),
         });
+        // The compute variant (crate::compute) shares this group where it can run.
+        let visibility = if crate::compute::ComputeExact::supported(device) {
+            wgpu::ShaderStages::FRAGMENT | wgpu::ShaderStages::COMPUTE
+        } else {
+            wgpu::ShaderStages::FRAGMENT
+        };
         let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("marbling render"),
             entries: &[
                 wgpu::BindGroupLayoutEntry {
                     binding: 0,
-                    visibility: wgpu::ShaderStages::FRAGMENT,
+                    visibility,
                     ty: wgpu::BindingType::Buffer {
                         ty: wgpu::BufferBindingType::Uniform,
                         has_dynamic_offset: false,
@@ -76,7 +82,7 @@ impl ExactRenderer {
                 },
                 wgpu::BindGroupLayoutEntry {
                     binding: 1,
-                    visibility: wgpu::ShaderStages::FRAGMENT,
+                    visibility,
                     ty: wgpu::BindingType::Texture {
                         sample_type: wgpu::TextureSampleType::Float { filterable: false },
                         view_dimension: wgpu::TextureViewDimension::D2,
@@ -86,7 +92,7 @@ impl ExactRenderer {
                 },
                 wgpu::BindGroupLayoutEntry {
                     binding: 2,
-                    visibility: wgpu::ShaderStages::FRAGMENT,
+                    visibility,
                     ty: wgpu::BindingType::Buffer {
                         ty: wgpu::BufferBindingType::Uniform,
                         has_dynamic_offset: false,
@@ -134,6 +140,12 @@ impl ExactRenderer {
                 self.format,
             )
         })
+    }
+
+    /// The layout of bind group 0 (params, ops, surface), shared with the compute
+    /// variant.
+    pub(crate) fn bind_group_layout(&self) -> &wgpu::BindGroupLayout {
+        &self.layout
     }
 
     /// The target format this pipeline draws into.
@@ -281,5 +293,15 @@ impl PreparedDesign {
     /// Number of ops uploaded.
     pub fn op_count(&self) -> usize {
         self.op_count
+    }
+
+    /// Whether the design needs the surface (schema v2) variant.
+    pub(crate) fn textured(&self) -> bool {
+        self.textured
+    }
+
+    /// Bind group 0 of the exact pipelines.
+    pub(crate) fn bind_group(&self) -> &wgpu::BindGroup {
+        &self.bind_group
     }
 }

@@ -1,6 +1,7 @@
 //! Headless exact renders to an [`RgbaImage`], tiled when the output is larger than one
 //! tile (at most the device's texture side), with progress per tile. Native only.
 
+use crate::compute::ComputeExact;
 use crate::exact::{ExactRenderer, PreparedDesign, View};
 use crate::target::{RenderTarget, copy_to_buffer, read_buffer};
 use crate::tile_grid;
@@ -20,6 +21,8 @@ pub const OUTPUT_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8Unorm;
 pub struct GpuRenderer {
     ctx: GpuContext,
     exact: ExactRenderer,
+    /// The compute path, where the device has one (else the fragment pipeline draws).
+    compute: Option<ComputeExact>,
     tile_side: u32,
 }
 
@@ -27,11 +30,57 @@ impl GpuRenderer {
     /// A renderer on `ctx` producing RGBA8 sRGB images.
     pub fn new(ctx: GpuContext) -> Self {
         let exact = ExactRenderer::new(&ctx.device, OUTPUT_FORMAT);
+        let compute =
+            ComputeExact::supported(&ctx.device).then(|| ComputeExact::new(&ctx.device, &exact));
         let tile_side = DEFAULT_TILE_SIDE.min(ctx.max_texture_side());
         Self {
             ctx,
             exact,
+            compute,
             tile_side,
+        }
+    }
+
+    /// Draws with the fragment pipeline even where compute exists (the path the app and
+    /// WebGL2 use; for comparisons and benchmarks).
+    pub fn with_fragment_path(mut self) -> Self {
+        self.compute = None;
+        self
+    }
+
+    /// `"compute"` or `"fragment"`: how exact frames are drawn.
+    pub fn path(&self) -> &'static str {
+        if self.compute.is_some() {
+            "compute"
+        } else {
+            "fragment"
+        }
+    }
+
+    /// A `width × height` target of [`OUTPUT_FORMAT`] that [`GpuRenderer::draw`] can draw
+    /// into on this renderer's path.
+    pub fn target(&self, width: u32, height: u32) -> RenderTarget {
+        let extra = if self.compute.is_some() {
+            wgpu::TextureUsages::STORAGE_BINDING
+        } else {
+            wgpu::TextureUsages::empty()
+        };
+        RenderTarget::with_usage(&self.ctx.device, width, height, OUTPUT_FORMAT, extra)
+    }
+
+    /// Records the exact render of `design` into `target` on this renderer's path.
+    fn record(
+        &self,
+        encoder: &mut wgpu::CommandEncoder,
+        design: &PreparedDesign,
+        target: &RenderTarget,
+    ) {
+        match &self.compute {
+            Some(c) => c.dispatch(&self.ctx.device, encoder, design, target),
+            None => {
+                let mut pass = target.begin_pass(encoder);
+                self.exact.draw(&mut pass, design);
+            }
         }
     }
 
@@ -64,18 +113,15 @@ impl GpuRenderer {
         })?
     }
 
-    /// Draws `design` into `target` (format [`OUTPUT_FORMAT`]) with `view` and submits;
-    /// call [`GpuRenderer::wait`] to wait for the GPU.
+    /// Draws `design` into `target` (made by [`GpuRenderer::target`]) with `view` and
+    /// submits; call [`GpuRenderer::wait`] to wait for the GPU.
     pub fn draw(&self, design: &mut PreparedDesign, target: &RenderTarget, view: &View) {
         design.set_view(&self.ctx.queue, view);
         let mut encoder = self
             .ctx
             .device
             .create_command_encoder(&wgpu::CommandEncoderDescriptor { label: None });
-        {
-            let mut pass = target.begin_pass(&mut encoder);
-            self.exact.draw(&mut pass, design);
-        }
+        self.record(&mut encoder, design, target);
         self.ctx.queue.submit([encoder.finish()]);
     }
 
@@ -112,16 +158,13 @@ impl GpuRenderer {
                 antialias: opts.antialias,
             };
             self.ctx.checked(|| -> Result<(), GpuError> {
-                let target = RenderTarget::new(&self.ctx.device, w, h, OUTPUT_FORMAT);
+                let target = self.target(w, h);
                 prepared.set_view(&self.ctx.queue, &view);
                 let mut encoder = self
                     .ctx
                     .device
                     .create_command_encoder(&wgpu::CommandEncoderDescriptor { label: None });
-                {
-                    let mut pass = target.begin_pass(&mut encoder);
-                    self.exact.draw(&mut pass, &prepared);
-                }
+                self.record(&mut encoder, &prepared, &target);
                 let (buffer, padded) = copy_to_buffer(&self.ctx.device, &mut encoder, &target);
                 self.ctx.queue.submit([encoder.finish()]);
                 let row_bytes = width as usize * 4;

@@ -15,8 +15,11 @@
 //! - Everything the CPU walker precomputes (unit vectors, αλ, r², 2π/wavelength, linear
 //!   ink colours) is computed on the host in f64 and rounded once ([`encode`]).
 //!
-//! Only vertex and fragment shaders are used (a full-screen triangle), so the same WGSL
-//! runs on Vulkan/Metal/DX12, WebGPU and WebGL2.
+//! The app draws with vertex and fragment shaders only (a full-screen triangle), so the
+//! same WGSL runs on Vulkan/Metal/DX12, WebGPU and WebGL2. Headless renders
+//! ([`GpuRenderer`]) run the same per-pixel function as a compute pass where the device
+//! has compute ([`ComputeExact`]): datacenter GPUs such as the H100 run fragment shaders
+//! on a few SMs only, and the bytes are the same.
 //!
 //! # Colours and sampling
 //! The same antialiasing patterns as the CPU ([`marbling_core::Antialias`]; positions
@@ -50,6 +53,7 @@
 //! - [`PreviewRenderer`] + [`PreviewCache`]: live-editing frames (cached committed design
 //!   + one pending op), an approximation shown only while dragging.
 
+mod compute;
 mod context;
 pub mod encode;
 mod error;
@@ -64,6 +68,7 @@ pub mod surface;
 mod target;
 mod tiles;
 
+pub use compute::ComputeExact;
 pub use context::GpuContext;
 pub use error::GpuError;
 pub use exact::{ExactRenderer, PreparedDesign, View};

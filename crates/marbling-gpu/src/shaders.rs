@@ -23,6 +23,20 @@ pub const RENDER_PLAIN_WGSL: &str = concat!(
     include_str!("../shaders/render.wgsl")
 );
 
+/// `shaders/render_compute.wgsl`: the exact renderer's compute entry point (appended to a
+/// render module).
+pub const RENDER_COMPUTE: &str = include_str!("../shaders/render_compute.wgsl");
+
+/// [`RENDER_PLAIN_WGSL`] with the compute entry point.
+pub fn render_plain_compute_wgsl() -> String {
+    [RENDER_PLAIN_WGSL, RENDER_COMPUTE].join("\n")
+}
+
+/// [`render_wgsl`] with the compute entry point.
+pub fn render_compute_wgsl() -> String {
+    [render_wgsl(), RENDER_COMPUTE.to_owned()].join("\n")
+}
+
 /// The live preview (cache + one pending op): `shaders/common.wgsl` + `shaders/preview.wgsl`.
 pub const PREVIEW_WGSL: &str = concat!(
     include_str!("../shaders/common.wgsl"),
@@ -39,11 +53,21 @@ pub fn render_wgsl() -> String {
     [COMMON, &noise, SURFACE, RENDER].join("\n")
 }
 
-/// Every shader module as (name, source), for validation.
+/// Every render-pipeline module (vertex + fragment; WebGPU and WebGL2) as (name,
+/// source), for validation.
 pub fn all() -> [(&'static str, String); 3] {
     [
         ("render", render_wgsl()),
         ("render-plain", RENDER_PLAIN_WGSL.to_owned()),
         ("preview", PREVIEW_WGSL.to_owned()),
+    ]
+}
+
+/// The modules with the exact renderer's compute entry point (native and WebGPU only),
+/// as (name, source), for validation.
+pub fn compute_modules() -> [(&'static str, String); 2] {
+    [
+        ("render-compute", render_compute_wgsl()),
+        ("render-plain-compute", render_plain_compute_wgsl()),
     ]
 }

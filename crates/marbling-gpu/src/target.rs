@@ -28,6 +28,18 @@ impl RenderTarget {
         height: u32,
         format: wgpu::TextureFormat,
     ) -> Self {
+        Self::with_usage(device, width, height, format, wgpu::TextureUsages::empty())
+    }
+
+    /// [`RenderTarget::new`] with `extra` usages (e.g. `STORAGE_BINDING` for the compute
+    /// path).
+    pub fn with_usage(
+        device: &wgpu::Device,
+        width: u32,
+        height: u32,
+        format: wgpu::TextureFormat,
+        extra: wgpu::TextureUsages,
+    ) -> Self {
         let texture = device.create_texture(&wgpu::TextureDescriptor {
             label: Some("marbling target"),
             size: wgpu::Extent3d {
@@ -41,7 +53,8 @@ impl RenderTarget {
             format,
             usage: wgpu::TextureUsages::RENDER_ATTACHMENT
                 | wgpu::TextureUsages::COPY_SRC
-                | wgpu::TextureUsages::TEXTURE_BINDING,
+                | wgpu::TextureUsages::TEXTURE_BINDING
+                | extra,
             view_formats: &[],
         });
         let view = texture.create_view(&wgpu::TextureViewDescriptor::default());

@@ -1,6 +1,6 @@
 //! Every WGSL module parses and validates with naga: no GPU needed.
 
-use marbling_gpu::shaders::all;
+use marbling_gpu::shaders::{all, compute_modules};
 
 fn validate(name: &str, source: &str) -> naga::Module {
     let module = naga::front::wgsl::parse_str(source)
@@ -29,6 +29,15 @@ fn every_shader_parses_and_validates() {
             .map(|e| e.name.as_str())
             .collect();
         assert_eq!(entries, ["vs_main", "fs_main"], "{name}");
+    }
+    for (name, source) in compute_modules() {
+        let module = validate(name, &source);
+        let entries: Vec<&str> = module
+            .entry_points
+            .iter()
+            .map(|e| e.name.as_str())
+            .collect();
+        assert_eq!(entries, ["vs_main", "fs_main", "cs_main"], "{name}");
     }
 }
 
