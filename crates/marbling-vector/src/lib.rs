@@ -35,7 +35,7 @@
 //!    narrower than w on average.
 //! 5. **Vertex budget.** Whenever more than `max_live`/min(T, 1) vertices (default
 //!    60 000, 240 000 at T = 0.25) are held after an op, `deviation`, `thin` and
-//!    `epsilon` double for the rest of the design (at most 3 times: w ≤ T/2, deviation and ε ≤ 0.32·T), every region is
+//!    `epsilon` double for the rest of the design (at most 4 times: w ≤ T, deviation and ε ≤ 0.64·T), every region is
 //!    thinned at once, and any two neighbouring segments within half the limits may
 //!    merge (their source becomes the quadratic through their three points).
 //!    [`TraceStats::level`] says how often this happened; 0 for every design of the
@@ -84,7 +84,7 @@
 //!   it keeps its area, so the error does not grow in area, but it adds up over
 //!   re-anchorings (measured: at most 0.15 percentage points of mismatch on the
 //!   agreement designs).
-//! * *Budget.* Past `max_live` vertices the limits above double up to three times, so a
+//! * *Budget.* Past `max_live` vertices the limits above double up to four times, so a
 //!   design with a nonzero [`TraceStats::level`] meets the contract at T·2^level only.
 //!
 //! The agreement test measures the whole at T = 1: 21 random designs (mixed and

@@ -37,7 +37,7 @@ pub struct TraceOptions {
     pub thin: f64,
     /// Vertex budget at T ≥ 1, divided by T below (default 60 000: 240 000 at
     /// T = 0.25): whenever more vertices than that are held after an op, `deviation`,
-    /// `thin` and `epsilon` double for the rest of the design (at most three times; [`crate::TraceStats::level`] says how often), and every region
+    /// `thin` and `epsilon` double for the rest of the design (at most four times; [`crate::TraceStats::level`] says how often), and every region
     /// is thinned again at once.
     pub max_live: usize,
     /// Most refined vertices in the whole design before it is refused (default 50 M).

@@ -226,7 +226,7 @@ pub fn trace_with_progress(
 }
 
 /// Most doublings of the lossy limits when a design holds too many vertices.
-const MAX_LEVEL: i32 = 3;
+const MAX_LEVEL: i32 = 4;
 
 /// Refuses a design once its rings hold more than `opts.max_vertices` vertices.
 fn check_total(total: usize, opts: &TraceOptions) -> Result<(), VectorError> {
