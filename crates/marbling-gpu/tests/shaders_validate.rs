@@ -19,25 +19,28 @@ fn validate(name: &str, source: &str) -> naga::Module {
     module
 }
 
+/// The names of `module`'s entry points, in order.
+fn entry_points(module: &naga::Module) -> Vec<&str> {
+    module
+        .entry_points
+        .iter()
+        .map(|e| e.name.as_str())
+        .collect()
+}
+
 #[test]
 fn every_shader_parses_and_validates() {
     for (name, source) in all() {
         let module = validate(name, &source);
-        let entries: Vec<&str> = module
-            .entry_points
-            .iter()
-            .map(|e| e.name.as_str())
-            .collect();
-        assert_eq!(entries, ["vs_main", "fs_main"], "{name}");
+        assert_eq!(entry_points(&module), ["vs_main", "fs_main"], "{name}");
     }
     for (name, source) in compute_modules() {
         let module = validate(name, &source);
-        let entries: Vec<&str> = module
-            .entry_points
-            .iter()
-            .map(|e| e.name.as_str())
-            .collect();
-        assert_eq!(entries, ["vs_main", "fs_main", "cs_main"], "{name}");
+        assert_eq!(
+            entry_points(&module),
+            ["vs_main", "fs_main", "cs_main"],
+            "{name}"
+        );
     }
 }
 
