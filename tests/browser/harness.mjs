@@ -93,11 +93,11 @@ export async function shootSheet(page, w, h) {
 }
 
 
-/** Chromium with the flags of `backend`, and the site served from dist/. */
-export async function launch(backend) {
+/** Chromium with the flags of `backend` (and `extra` flags), and the site served from dist/. */
+export async function launch(backend, extra = []) {
   assert.ok(fs.existsSync(path.join(DIST, 'index.html')), 'dist/ is missing: run trunk build --release first');
   const site = await serve(DIST);
-  const browser = await chromium.launch({ executablePath: CHROMIUM, headless: true, args: [...COMMON, ...BACKENDS[backend]] });
+  const browser = await chromium.launch({ executablePath: CHROMIUM, headless: true, args: [...COMMON, ...BACKENDS[backend], ...extra] });
   return { site, browser };
 }
 
