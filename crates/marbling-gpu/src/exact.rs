@@ -3,6 +3,7 @@
 //! their own op texture and uniform buffer, so an app can keep several.
 
 use crate::GpuError;
+use crate::bindings;
 use crate::encode::layout_ops;
 use crate::params::RenderParams;
 use crate::shaders::{RENDER_PLAIN_WGSL, render_wgsl};
@@ -68,40 +69,9 @@ impl ExactRenderer {
         let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("marbling render"),
             entries: &[
-                wgpu::BindGroupLayoutEntry {
-                    binding: 0,
-                    visibility,
-                    ty: wgpu::BindingType::Buffer {
-                        ty: wgpu::BufferBindingType::Uniform,
-                        has_dynamic_offset: false,
-                        min_binding_size: wgpu::BufferSize::new(
-                            std::mem::size_of::<RenderParams>() as u64,
-                        ),
-                    },
-                    count: None,
-                },
-                wgpu::BindGroupLayoutEntry {
-                    binding: 1,
-                    visibility,
-                    ty: wgpu::BindingType::Texture {
-                        sample_type: wgpu::TextureSampleType::Float { filterable: false },
-                        view_dimension: wgpu::TextureViewDimension::D2,
-                        multisampled: false,
-                    },
-                    count: None,
-                },
-                wgpu::BindGroupLayoutEntry {
-                    binding: 2,
-                    visibility,
-                    ty: wgpu::BindingType::Buffer {
-                        ty: wgpu::BufferBindingType::Uniform,
-                        has_dynamic_offset: false,
-                        min_binding_size: wgpu::BufferSize::new(
-                            std::mem::size_of::<SurfaceParams>() as u64,
-                        ),
-                    },
-                    count: None,
-                },
+                bindings::uniform::<RenderParams>(0, visibility),
+                bindings::texture_2d(1, visibility, false),
+                bindings::uniform::<SurfaceParams>(2, visibility),
             ],
         });
         let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {

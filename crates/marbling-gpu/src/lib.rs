@@ -53,6 +53,7 @@
 //! - [`PreviewRenderer`] + [`PreviewCache`]: live-editing frames (cached committed design
 //!   + one pending op), an approximation shown only while dragging.
 
+mod bindings;
 mod compute;
 mod context;
 pub mod encode;

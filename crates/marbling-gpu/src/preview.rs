@@ -10,6 +10,7 @@
 //! [`PreviewCache::covers`]).
 
 use crate::GpuError;
+use crate::bindings;
 use crate::encode::encode_op;
 use crate::exact::{ExactRenderer, View};
 use crate::params::PreviewParams;
@@ -57,28 +58,8 @@ impl PreviewRenderer {
         let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("marbling preview"),
             entries: &[
-                wgpu::BindGroupLayoutEntry {
-                    binding: 0,
-                    visibility: fragment,
-                    ty: wgpu::BindingType::Buffer {
-                        ty: wgpu::BufferBindingType::Uniform,
-                        has_dynamic_offset: false,
-                        min_binding_size: wgpu::BufferSize::new(
-                            std::mem::size_of::<PreviewParams>() as u64,
-                        ),
-                    },
-                    count: None,
-                },
-                wgpu::BindGroupLayoutEntry {
-                    binding: 1,
-                    visibility: fragment,
-                    ty: wgpu::BindingType::Texture {
-                        sample_type: wgpu::TextureSampleType::Float { filterable: true },
-                        view_dimension: wgpu::TextureViewDimension::D2,
-                        multisampled: false,
-                    },
-                    count: None,
-                },
+                bindings::uniform::<PreviewParams>(0, fragment),
+                bindings::texture_2d(1, fragment, true),
                 wgpu::BindGroupLayoutEntry {
                     binding: 2,
                     visibility: fragment,
