@@ -106,7 +106,7 @@ impl MarblingApp {
         let gpu_errors = GpuErrors::default();
         let (gpu, backend) = match &cc.wgpu_render_state {
             Some(rs) => {
-                let gpu = CanvasGpu::new(&rs.device);
+                let gpu = CanvasGpu::new(&rs.device, rs.target_format);
                 rs.renderer.write().callback_resources.insert(gpu);
                 lost.watch(&rs.device, &cc.egui_ctx);
                 gpu_errors.watch(&rs.device, &cc.egui_ctx);
@@ -611,6 +611,11 @@ impl MarblingApp {
 }
 
 impl eframe::App for MarblingApp {
+    /// The panels' colour: the panels themselves are drawn unfilled over it.
+    fn clear_color(&self, visuals: &egui::Visuals) -> [f32; 4] {
+        visuals.panel_fill.to_normalized_gamma_f32()
+    }
+
     fn ui(&mut self, ui: &mut egui::Ui, frame: &mut eframe::Frame) {
         let ctx = ui.ctx().clone();
         // Mean interval of the last 60 frames, for the `data-frame-ms` hook.
@@ -628,15 +633,23 @@ impl eframe::App for MarblingApp {
         self.advance_export(frame, &ctx);
         self.follow_noise();
         self.controls.clear();
+        // The panels have no fills: `clear_color` paints them. On a software GPU each
+        // full-window fill costs milliseconds a frame (docs/BENCHMARKS.md).
+        let unfilled = |f: egui::Frame| f.fill(egui::Color32::TRANSPARENT);
         egui::Panel::left("marbling_tools")
+            .frame(unfilled(egui::Frame::side_top_panel(ui.style())))
             .resizable(true)
             .default_size(300.0)
             .size_range(240.0..=360.0)
             .show(ui, |ui| {
                 egui::ScrollArea::vertical().show(ui, |ui| self.side_panel(ui, frame));
             });
-        egui::Panel::bottom("marbling_status").show(ui, |ui| self.status_bar(ui));
-        egui::CentralPanel::default().show(ui, |ui| self.canvas(ui, frame));
+        egui::Panel::bottom("marbling_status")
+            .frame(unfilled(egui::Frame::side_top_panel(ui.style())))
+            .show(ui, |ui| self.status_bar(ui));
+        egui::CentralPanel::default()
+            .frame(unfilled(egui::Frame::central_panel(ui.style())))
+            .show(ui, |ui| self.canvas(ui, frame));
         if let Some(e) = self.status.lock().ok().and_then(|s| s.error.clone())
             && self.message.as_ref().is_none_or(|m| m.text != e)
         {

@@ -2,7 +2,7 @@
 //! their footprints.
 
 use crate::app::{ActiveGesture, MarblingApp};
-use crate::canvas_gpu::{CanvasCallback, CanvasGpu, FrameRequest};
+use crate::canvas_gpu::{CanvasCallback, CanvasPlacement, FrameRequest};
 use crate::overlay;
 use crate::tools::{Gesture, ops_for};
 use crate::view::ViewState;
@@ -17,7 +17,6 @@ impl MarblingApp {
         let (rect, response) = ui.allocate_exact_size(ui.available_size(), Sense::click_and_drag());
         self.control("canvas", &response);
         let painter = ui.painter_at(rect);
-        painter.rect_filled(rect, 0.0, Color32::from_gray(48));
         let size = [f64::from(rect.width()), f64::from(rect.height())];
         let ppp = f64::from(ui.ctx().pixels_per_point());
         let view = *self
@@ -42,8 +41,9 @@ impl MarblingApp {
             rect.min + Vec2::new(tl[0] as f32, tl[1] as f32),
             rect.min + Vec2::new(br[0] as f32, br[1] as f32),
         );
+        let placement = CanvasPlacement::new(rect, sheet, ppp);
         if self.gpu {
-            self.paint_design(ui, frame, rect, sheet, &view);
+            self.paint_design(ui, frame, rect, placement, &view);
         } else {
             painter.text(
                 rect.center(),
@@ -63,8 +63,8 @@ impl MarblingApp {
         // For automation: the sheet's top-left in CSS/physical pixels of the page, and
         // physical pixels per design pixel.
         self.sheet_on_page = Some([
-            f64::from(rect.min.x) * ppp + tl[0] * ppp,
-            f64::from(rect.min.y) * ppp + tl[1] * ppp,
+            placement.sheet_px[0],
+            placement.sheet_px[1],
             view.zoom * ppp,
         ]);
         if self.mode == crate::mode::Mode::Marbling {
@@ -170,32 +170,24 @@ impl MarblingApp {
         }
     }
 
-    /// Asks the GPU for the frame (exact, or live preview while dragging) and shows it.
+    /// Asks the GPU for the frame (exact, or live preview while dragging) and shows it,
+    /// with the grey around the sheet, in one paint callback covering the canvas.
     fn paint_design(
         &mut self,
         ui: &egui::Ui,
         frame: &mut eframe::Frame,
         rect: Rect,
-        sheet: Rect,
+        placement: CanvasPlacement,
         view: &ViewState,
     ) {
-        let Some(rs) = frame.wgpu_render_state() else {
+        if frame.wgpu_render_state().is_none() {
             return;
-        };
+        }
         let ppp = f64::from(ui.ctx().pixels_per_point());
         let size = [
             ((f64::from(rect.width()) * ppp).round() as u32).max(1),
             ((f64::from(rect.height()) * ppp).round() as u32).max(1),
         ];
-        let texture = {
-            let mut renderer = rs.renderer.write();
-            let Some(mut gpu) = renderer.callback_resources.remove::<CanvasGpu>() else {
-                return;
-            };
-            let id = gpu.texture_for(&rs.device, &mut renderer, size);
-            renderer.callback_resources.insert(gpu);
-            id
-        };
         let pending = self.pending_ops();
         let (design, design_key, single) = match pending.as_slice() {
             [] => (self.shown.clone(), self.key, None),
@@ -225,26 +217,12 @@ impl MarblingApp {
         let callback = CanvasCallback {
             design,
             request,
+            placement,
             status: self.status.clone(),
             ctx: ui.ctx().clone(),
         };
         ui.painter()
             .add(egui_wgpu::Callback::new_paint_callback(rect, callback));
-        // Show only the sheet's part of the texture: uv = position within the canvas.
-        let visible = sheet.intersect(rect);
-        if visible.is_positive() {
-            let uv = Rect::from_min_max(
-                Pos2::new(
-                    (visible.min.x - rect.min.x) / rect.width(),
-                    (visible.min.y - rect.min.y) / rect.height(),
-                ),
-                Pos2::new(
-                    (visible.max.x - rect.min.x) / rect.width(),
-                    (visible.max.y - rect.min.y) / rect.height(),
-                ),
-            );
-            ui.painter().image(texture, visible, uv, Color32::WHITE);
-        }
     }
 }
 

@@ -1,17 +1,25 @@
-//! The canvas's GPU side: the exact render (or, while a tool is dragged, the live
-//! preview) is drawn into an offscreen texture only when the design or the view changes;
-//! egui then shows that texture like any image, so hovering never re-walks the ops.
+//! The canvas's GPU side. The exact render is drawn into an offscreen texture only when
+//! the design or the view changes, and every frame copies that texture 1:1 into egui's
+//! pass (with the grey around the sheet) in one cheap draw, so hovering never re-walks
+//! the ops. While a tool is dragged, the live preview is drawn straight into egui's pass
+//! over the sheet instead: one pass per frame, not two.
 
+use crate::margins::margins;
 use eframe::egui_wgpu;
+use egui::{Pos2, Rect};
 use marbling_core::{Antialias, Design, Op};
 use marbling_gpu::{
-    ExactRenderer, PreparedDesign, PreviewCache, PreviewRenderer, RenderTarget, View,
+    ExactRenderer, Placement, PreparedDesign, PresentSource, Presenter, PreviewCache,
+    PreviewRenderer, RenderTarget, View,
 };
 use std::sync::{Arc, Mutex};
 
-/// The canvas texture's format (what egui-wgpu expects of native textures); the renderer
-/// sRGB-encodes into it itself, exactly as the CPU reference does.
+/// The canvas texture's format; the renderer sRGB-encodes into it itself, exactly as the
+/// CPU reference does.
 pub const CANVAS_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8Unorm;
+
+/// The colour around the sheet (sRGB bytes).
+pub const SURROUND: [u8; 3] = [48, 48, 48];
 
 /// What the next canvas frame must show.
 #[derive(Clone, Debug, PartialEq)]
@@ -62,63 +70,40 @@ pub struct GpuWork {
 /// GPU resources kept in egui-wgpu's callback resources between frames.
 pub struct CanvasGpu {
     exact: ExactRenderer,
+    /// Draws into egui's target (format of the window's surface).
     preview: PreviewRenderer,
-    target: Option<RenderTarget>,
-    texture_id: Option<egui::TextureId>,
+    presenter: Presenter,
+    /// The exact frame, and its binding for the present draw.
+    target: Option<(RenderTarget, PresentSource)>,
     prepared: Option<(u64, PreparedDesign)>,
     cache: Option<(u64, PreviewCache)>,
     caches_built: u64,
 }
 
 impl CanvasGpu {
-    /// Builds the pipelines for `device`.
-    pub fn new(device: &wgpu::Device) -> Self {
+    /// Builds the pipelines for `device`; egui draws into targets of `surface_format`.
+    pub fn new(device: &wgpu::Device, surface_format: wgpu::TextureFormat) -> Self {
         Self {
             exact: ExactRenderer::new(device, CANVAS_FORMAT),
-            preview: PreviewRenderer::new(device, CANVAS_FORMAT),
+            preview: PreviewRenderer::new(device, surface_format),
+            presenter: Presenter::new(device, surface_format),
             target: None,
-            texture_id: None,
             prepared: None,
             cache: None,
             caches_built: 0,
         }
     }
 
-    /// The egui texture showing the canvas, (re)created at `size` physical pixels.
-    pub fn texture_for(
-        &mut self,
-        device: &wgpu::Device,
-        renderer: &mut egui_wgpu::Renderer,
-        size: [u32; 2],
-    ) -> egui::TextureId {
+    /// (Re)creates the canvas texture at `size` physical pixels unless it has that size.
+    fn ensure_target(&mut self, device: &wgpu::Device, size: [u32; 2]) {
         let fits = self
             .target
             .as_ref()
-            .is_some_and(|t| [t.width, t.height] == size);
-        match (fits, self.texture_id) {
-            (true, Some(id)) => id,
-            (_, old) => {
-                let target = RenderTarget::new(device, size[0], size[1], CANVAS_FORMAT);
-                let id = match old {
-                    Some(id) => {
-                        renderer.update_egui_texture_from_wgpu_texture(
-                            device,
-                            &target.view,
-                            wgpu::FilterMode::Nearest,
-                            id,
-                        );
-                        id
-                    }
-                    None => renderer.register_native_texture(
-                        device,
-                        &target.view,
-                        wgpu::FilterMode::Nearest,
-                    ),
-                };
-                self.texture_id = Some(id);
-                self.target = Some(target);
-                id
-            }
+            .is_some_and(|(t, _)| [t.width, t.height] == size);
+        if !fits {
+            let target = RenderTarget::new(device, size[0], size[1], CANVAS_FORMAT);
+            let source = self.presenter.source(device, &target.view);
+            self.target = Some((target, source));
         }
     }
 
@@ -150,8 +135,9 @@ impl CanvasGpu {
         Ok(())
     }
 
-    /// Draws `req` into the canvas texture, recording into `encoder`.
-    fn draw(
+    /// Draws the exact frame of `req` (no pending op) into the canvas texture,
+    /// recording into `encoder`.
+    fn draw_exact(
         &mut self,
         device: &wgpu::Device,
         queue: &wgpu::Queue,
@@ -159,17 +145,8 @@ impl CanvasGpu {
         design: &Design,
         req: &FrameRequest,
     ) -> Result<(), String> {
-        if self
-            .target
-            .as_ref()
-            .is_none_or(|t| [t.width, t.height] != req.size)
-        {
-            return Ok(());
-        }
-        if req.pending.is_some() {
-            self.ensure_cache(device, queue, design, req)?;
-        }
-        let Some(target) = &self.target else {
+        self.ensure_target(device, req.size);
+        let Some((target, _)) = &self.target else {
             return Ok(());
         };
         if self
@@ -184,33 +161,88 @@ impl CanvasGpu {
                 .map_err(|e| e.to_string())?;
             self.prepared = Some((req.design_key, prepared));
         }
-        match &req.pending {
-            None => {
-                let Some((_, prepared)) = &mut self.prepared else {
-                    return Ok(());
-                };
-                let offset = [req.origin[0] * req.scale, req.origin[1] * req.scale];
-                prepared.set_view(
-                    queue,
-                    &View {
-                        scale: req.scale,
-                        offset,
-                        antialias: req.antialias,
-                    },
-                );
-                let mut pass = target.begin_pass(encoder);
-                self.exact.draw(&mut pass, prepared);
-            }
-            Some(op) => {
-                let Some((_, cache)) = &mut self.cache else {
-                    return Ok(());
-                };
-                cache.set_frame(queue, Some(op), req.origin, req.scale, req.antialias);
-                let mut pass = target.begin_pass(encoder);
-                self.preview.draw(&mut pass, cache);
-            }
+        let Some((_, prepared)) = &mut self.prepared else {
+            return Ok(());
+        };
+        let offset = [req.origin[0] * req.scale, req.origin[1] * req.scale];
+        prepared.set_view(
+            queue,
+            &View {
+                scale: req.scale,
+                offset,
+                antialias: req.antialias,
+            },
+        );
+        let mut pass = target.begin_pass(encoder);
+        self.exact.draw(&mut pass, prepared);
+        Ok(())
+    }
+
+    /// Sets up the live preview of `op` over `design`'s cache for `req`, drawn straight
+    /// into egui's target with the canvas texture's top-left at `canvas_px`.
+    fn set_preview(
+        &mut self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        design: &Design,
+        req: &FrameRequest,
+        op: &Op,
+        canvas_px: [f64; 2],
+    ) -> Result<(), String> {
+        self.ensure_cache(device, queue, design, req)?;
+        if let Some((_, cache)) = &mut self.cache {
+            // Target pixel (X, Y) shows the design point the texture's pixel
+            // (X, Y) − canvas_px would: the same samples as a render into the texture.
+            let origin = [
+                req.origin[0] - canvas_px[0] / req.scale,
+                req.origin[1] - canvas_px[1] / req.scale,
+            ];
+            cache.set_frame(queue, Some(op), origin, req.scale, req.antialias);
         }
         Ok(())
+    }
+}
+
+/// Where the canvas lies in egui's target, physical pixels.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CanvasPlacement {
+    /// Target pixel of the canvas texture's top-left pixel (whole pixels).
+    pub canvas_px: [f64; 2],
+    /// The sheet: min x, min y, max x, max y (may extend beyond the canvas).
+    pub sheet_px: [f64; 4],
+}
+
+impl CanvasPlacement {
+    /// Where a canvas at `rect` (points) with the sheet at `sheet` (points) is drawn at
+    /// `ppp` physical pixels per point: the canvas corner rounded as egui rounds its
+    /// viewport, the sheet relative to it.
+    pub fn new(rect: Rect, sheet: Rect, ppp: f64) -> Self {
+        let corner = |p: Pos2| [f64::from(p.x) * ppp, f64::from(p.y) * ppp];
+        let canvas_px = corner(rect.min).map(f64::round);
+        let [x0, y0] = corner(sheet.min);
+        let [x1, y1] = corner(sheet.max);
+        let [rx, ry] = corner(rect.min);
+        let (dx, dy) = (canvas_px[0] - rx, canvas_px[1] - ry);
+        Self {
+            canvas_px,
+            sheet_px: [x0 + dx, y0 + dy, x1 + dx, y1 + dy],
+        }
+    }
+
+    /// The sheet's pixels (those whose centres lie inside it), as a rectangle of whole
+    /// pixels: the pixels the present shader fills from the texture.
+    pub fn sheet_pixels(&self) -> Rect {
+        let edge = |v: f64| (v - 0.5).ceil() as f32;
+        let [x0, y0, x1, y1] = self.sheet_px;
+        Rect::from_min_max(Pos2::new(edge(x0), edge(y0)), Pos2::new(edge(x1), edge(y1)))
+    }
+
+    fn placement(&self) -> Placement {
+        Placement {
+            origin: self.canvas_px.map(|v| v as f32),
+            sheet: self.sheet_px.map(|v| v as f32),
+            background: SURROUND,
+        }
     }
 }
 
@@ -221,6 +253,8 @@ pub struct CanvasCallback {
     pub design: Arc<Design>,
     /// What to draw.
     pub request: FrameRequest,
+    /// Where it goes in egui's target.
+    pub placement: CanvasPlacement,
     /// Where the outcome is reported.
     pub status: Arc<Mutex<CanvasStatus>>,
     /// Woken when GPU work the UI waits for has finished.
@@ -242,17 +276,29 @@ impl egui_wgpu::CallbackTrait for CanvasCallback {
         let Some(gpu) = resources.get_mut::<CanvasGpu>() else {
             return Vec::new();
         };
-        if status.drawn.as_ref() == Some(&self.request) {
+        let req = &self.request;
+        if let Some(op) = &req.pending {
+            // Live preview: drawn in `paint`; the texture keeps the last exact frame.
+            status.error = gpu
+                .set_preview(
+                    device,
+                    queue,
+                    &self.design,
+                    req,
+                    op,
+                    self.placement.canvas_px,
+                )
+                .err();
+            status.work.preview += 1;
+            status.work.caches = gpu.caches_built;
+        } else if status.drawn.as_ref() == Some(req) {
             // The exact frame is on screen: use the idle frame to get the preview ready.
-            if self.request.pending.is_none()
-                && status.cache_ready != Some(self.request.design_key)
-                && status.error.is_none()
-            {
-                match gpu.ensure_cache(device, queue, &self.design, &self.request) {
+            if status.cache_ready != Some(req.design_key) && status.error.is_none() {
+                match gpu.ensure_cache(device, queue, &self.design, req) {
                     Ok(()) => {
-                        status.cache_ready = Some(self.request.design_key);
+                        status.cache_ready = Some(req.design_key);
                         let done = status.cache_done.clone();
-                        let key = self.request.design_key;
+                        let key = req.design_key;
                         let ctx = self.ctx.clone();
                         queue.on_submitted_work_done(move || {
                             done.store(key, std::sync::atomic::Ordering::SeqCst);
@@ -263,33 +309,62 @@ impl egui_wgpu::CallbackTrait for CanvasCallback {
                 }
                 status.work.caches = gpu.caches_built;
             }
-            return Vec::new();
-        }
-        let outcome = gpu.draw(device, queue, encoder, &self.design, &self.request);
-        if self.request.pending.is_some() {
-            status.work.preview += 1;
         } else {
+            let outcome = gpu.draw_exact(device, queue, encoder, &self.design, req);
             status.work.exact += 1;
+            status.work.caches = gpu.caches_built;
+            status.error = outcome.err();
+            status.drawn = Some(req.clone());
         }
-        status.work.caches = gpu.caches_built;
-        match outcome {
-            Ok(()) => {
-                status.drawn = Some(self.request.clone());
-                status.error = None;
-            }
-            Err(e) => {
-                status.drawn = Some(self.request.clone());
-                status.error = Some(e);
-            }
+        if let Some((_, source)) = &gpu.target {
+            source.place(queue, &self.placement.placement());
         }
         Vec::new()
     }
 
     fn paint(
         &self,
-        _info: egui::PaintCallbackInfo,
-        _pass: &mut wgpu::RenderPass<'static>,
-        _resources: &egui_wgpu::CallbackResources,
+        info: egui::PaintCallbackInfo,
+        pass: &mut wgpu::RenderPass<'static>,
+        resources: &egui_wgpu::CallbackResources,
     ) {
+        let Some(gpu) = resources.get::<CanvasGpu>() else {
+            return;
+        };
+        let Some((_, source)) = &gpu.target else {
+            return;
+        };
+        let preview = gpu
+            .cache
+            .as_ref()
+            .filter(|(key, _)| self.request.pending.is_some() && *key == self.request.design_key);
+        let Some((_, cache)) = preview else {
+            gpu.presenter.draw(pass, source);
+            return;
+        };
+        // The grey around the sheet from the present pipeline, the sheet from the preview
+        // pipeline: each pixel of the canvas is drawn once.
+        let clip = info.clip_rect_in_pixels();
+        let clip = Rect::from_min_size(
+            Pos2::new(clip.left_px as f32, clip.top_px as f32),
+            egui::vec2(clip.width_px as f32, clip.height_px as f32),
+        );
+        let sheet = self.placement.sheet_pixels().intersect(clip);
+        let scissor = |pass: &mut wgpu::RenderPass<'static>, r: Rect| {
+            pass.set_scissor_rect(
+                r.min.x as u32,
+                r.min.y as u32,
+                r.width() as u32,
+                r.height() as u32,
+            );
+        };
+        for margin in margins(clip, sheet) {
+            scissor(pass, margin);
+            gpu.presenter.draw(pass, source);
+        }
+        if sheet.is_positive() {
+            scissor(pass, sheet);
+            gpu.preview.draw(pass, cache);
+        }
     }
 }

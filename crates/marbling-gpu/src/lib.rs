@@ -52,6 +52,8 @@
 //!   beyond the device's texture limit, with progress.
 //! - [`PreviewRenderer`] + [`PreviewCache`]: live-editing frames (cached committed design
 //!   + one pending op), an approximation shown only while dragging.
+//! - [`Presenter`] + [`PresentSource`]: a rendered texture shown 1:1 in another pass
+//!   (the app's canvas), with a flat background around the sheet.
 
 mod bindings;
 mod compute;
@@ -63,6 +65,7 @@ mod fullscreen;
 #[cfg(not(target_arch = "wasm32"))]
 mod headless;
 pub mod params;
+mod present;
 mod preview;
 pub mod shaders;
 pub mod surface;
@@ -75,6 +78,7 @@ pub use error::GpuError;
 pub use exact::{ExactRenderer, PreparedDesign, View};
 #[cfg(not(target_arch = "wasm32"))]
 pub use headless::{DEFAULT_TILE_SIDE, GpuRenderer, OUTPUT_FORMAT};
+pub use present::{Placement, PresentSource, Presenter};
 pub use preview::{CACHE_FACTOR, CACHE_FORMAT, PreviewCache, PreviewRenderer};
 #[cfg(not(target_arch = "wasm32"))]
 pub use target::read_buffer;

@@ -44,6 +44,13 @@ pub const PREVIEW_WGSL: &str = concat!(
     include_str!("../shaders/preview.wgsl")
 );
 
+/// Showing a rendered texture 1:1 in a pass: `shaders/common.wgsl` + `shaders/present.wgsl`.
+pub const PRESENT_WGSL: &str = concat!(
+    include_str!("../shaders/common.wgsl"),
+    "\n",
+    include_str!("../shaders/present.wgsl")
+);
+
 /// The exact renderer: `common.wgsl`, marbling-noise's noise module, `surface.wgsl`,
 /// `render.wgsl`.
 pub fn render_wgsl() -> String {
@@ -55,11 +62,12 @@ pub fn render_wgsl() -> String {
 
 /// Every render-pipeline module (vertex + fragment; WebGPU and WebGL2) as (name,
 /// source), for validation.
-pub fn all() -> [(&'static str, String); 3] {
+pub fn all() -> [(&'static str, String); 4] {
     [
         ("render", render_wgsl()),
         ("render-plain", RENDER_PLAIN_WGSL.to_owned()),
         ("preview", PREVIEW_WGSL.to_owned()),
+        ("present", PRESENT_WGSL.to_owned()),
     ]
 }
 

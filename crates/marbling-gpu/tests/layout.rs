@@ -1,8 +1,8 @@
 //! The host mirrors of the WGSL uniform structs have the same member offsets and size
 //! as naga computes for the shaders (keep src/params.rs and shaders/*.wgsl in sync).
 
-use marbling_gpu::params::{PreviewParams, RenderParams};
-use marbling_gpu::shaders::{PREVIEW_WGSL, render_wgsl};
+use marbling_gpu::params::{PresentParams, PreviewParams, RenderParams};
+use marbling_gpu::shaders::{PRESENT_WGSL, PREVIEW_WGSL, render_wgsl};
 use marbling_gpu::surface::{LayerParams, SurfaceParams};
 use std::mem::{offset_of, size_of};
 
@@ -84,6 +84,22 @@ fn preview_params_match_wgsl() {
 }
 
 #[test]
+fn present_params_match_wgsl() {
+    check(
+        PRESENT_WGSL,
+        "PresentParams",
+        &[
+            ("origin", offset_of!(PresentParams, origin)),
+            ("linear_target", offset_of!(PresentParams, linear_target)),
+            ("_pad", offset_of!(PresentParams, _pad)),
+            ("sheet", offset_of!(PresentParams, sheet)),
+            ("background", offset_of!(PresentParams, background)),
+        ],
+        size_of::<PresentParams>(),
+    );
+}
+
+#[test]
 fn surface_params_match_wgsl() {
     let source = render_wgsl();
     check(
@@ -144,6 +160,7 @@ fn structs_nest_within_webgl2_limits() {
             marbling_gpu::shaders::RENDER_PLAIN_WGSL,
         ),
         ("preview.wgsl", PREVIEW_WGSL),
+        ("present.wgsl", PRESENT_WGSL),
     ] {
         let module = naga::front::wgsl::parse_str(source).expect("parses");
         for (handle, ty) in module.types.iter() {

@@ -1,0 +1,50 @@
+// Shows a rendered texture 1:1 in part of a render pass (the app's canvas): each target
+// pixel inside the sheet copies one texel (textureLoad: no filtering), pixels outside it
+// get a flat background colour, and nothing is blended. On a software GPU this costs a
+// fraction of a general textured, blended quad. `common.wgsl` is prepended.
+
+// Keep in sync with `PresentParams` in src/params.rs (checked by tests/layout.rs).
+struct PresentParams {
+    // Target pixel (x, y) of the texture's texel (0, 0), whole pixels.
+    origin: vec2<f32>,
+    // 1: the target is …UnormSrgb, so the sRGB-encoded texels are decoded to linear
+    // light first (the hardware encodes them again); 0: texels are written as they are.
+    linear_target: u32,
+    _pad: u32,
+    // The sheet in target pixels: (min x, min y, max x, max y). A pixel is inside when
+    // its centre is.
+    sheet: vec4<f32>,
+    // The colour outside the sheet, as written to the target.
+    background: vec4<f32>,
+}
+
+@group(0) @binding(0) var<uniform> params: PresentParams;
+@group(0) @binding(1) var image: texture_2d<f32>;
+
+@vertex
+fn vs_main(@builtin(vertex_index) vertex: u32) -> @builtin(position) vec4<f32> {
+    return fullscreen_position(vertex);
+}
+
+// sRGB-encoded value (0..=1) → linear light (IEC 61966-2-1), per channel.
+fn srgb_to_linear(s: vec3<f32>) -> vec3<f32> {
+    let lo = s / 12.92;
+    let hi = pow((s + 0.055) / 1.055, vec3<f32>(2.4));
+    return select(hi, lo, s <= vec3<f32>(0.04045));
+}
+
+@fragment
+fn fs_main(@builtin(position) position: vec4<f32>) -> @location(0) vec4<f32> {
+    let p = position.xy;
+    let s = params.sheet;
+    if p.x < s.x || p.y < s.y || p.x >= s.z || p.y >= s.w {
+        return params.background;
+    }
+    let last = vec2<i32>(textureDimensions(image)) - vec2<i32>(1);
+    let texel = clamp(vec2<i32>(floor(p - params.origin)), vec2<i32>(0), last);
+    let c = textureLoad(image, texel, 0);
+    if params.linear_target != 0u {
+        return vec4<f32>(srgb_to_linear(c.rgb), c.a);
+    }
+    return c;
+}

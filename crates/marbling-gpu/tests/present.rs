@@ -1,0 +1,128 @@
+//! The present pass copies texels 1:1 inside the sheet, paints the background outside
+//! it, and touches nothing outside the pass's viewport and scissor rectangle (the way
+//! the app draws its canvas inside egui's pass).
+
+mod common;
+
+use marbling_gpu::{GpuContext, Placement, Presenter, RenderTarget, copy_to_buffer, read_buffer};
+
+const SRC: (u32, u32) = (37, 23);
+const DST: (u32, u32) = (64, 48);
+/// The canvas rectangle (viewport and scissor): x, y, width, height.
+const CANVAS: [u32; 4] = [5, 3, 55, 42];
+const ORIGIN: [u32; 2] = [9, 6];
+/// The sheet: min x, min y, max x, max y (whole pixels; smaller than the source).
+const SHEET: [u32; 4] = [9, 6, 39, 26];
+const BACKGROUND: [u8; 3] = [48, 50, 52];
+
+fn source_byte(x: u32, y: u32, c: u32) -> u8 {
+    ((x * 7 + y * 13 + c * 61) % 256) as u8
+}
+
+/// Presents the test pattern into a cleared-to-black `format` target and reads it back.
+fn present(ctx: &GpuContext, format: wgpu::TextureFormat) -> Vec<u8> {
+    let (device, queue) = (&ctx.device, &ctx.queue);
+    let source = RenderTarget::with_usage(
+        device,
+        SRC.0,
+        SRC.1,
+        wgpu::TextureFormat::Rgba8Unorm,
+        wgpu::TextureUsages::COPY_DST,
+    );
+    let bytes: Vec<u8> = (0..SRC.1)
+        .flat_map(|y| (0..SRC.0).flat_map(move |x| (0..4).map(move |c| source_byte(x, y, c))))
+        .collect();
+    queue.write_texture(
+        source.texture.as_image_copy(),
+        &bytes,
+        wgpu::TexelCopyBufferLayout {
+            offset: 0,
+            bytes_per_row: Some(SRC.0 * 4),
+            rows_per_image: None,
+        },
+        source.texture.size(),
+    );
+    let presenter = Presenter::new(device, format);
+    let bound = presenter.source(device, &source.view);
+    bound.place(
+        queue,
+        &Placement {
+            origin: ORIGIN.map(|v| v as f32),
+            sheet: SHEET.map(|v| v as f32),
+            background: BACKGROUND,
+        },
+    );
+    let target = RenderTarget::new(device, DST.0, DST.1, format);
+    let mut encoder =
+        device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: None });
+    {
+        let mut pass = target.begin_pass(&mut encoder);
+        let [x, y, w, h] = CANVAS;
+        pass.set_viewport(x as f32, y as f32, w as f32, h as f32, 0.0, 1.0);
+        pass.set_scissor_rect(x, y, w, h);
+        presenter.draw(&mut pass, &bound);
+    }
+    let (buffer, padded) = copy_to_buffer(device, &mut encoder, &target);
+    queue.submit([encoder.finish()]);
+    let mut out = vec![0; (DST.0 * DST.1 * 4) as usize];
+    let row = DST.0 as usize * 4;
+    read_buffer(ctx, &buffer, padded, DST.0, DST.1, |y, b| {
+        out[y as usize * row..(y as usize + 1) * row].copy_from_slice(b);
+    })
+    .expect("readback");
+    out
+}
+
+/// What each target pixel must hold (RGB).
+fn expected(x: u32, y: u32) -> [u8; 3] {
+    let [cx, cy, cw, ch] = CANVAS;
+    if x < cx || y < cy || x >= cx + cw || y >= cy + ch {
+        return [0, 0, 0];
+    }
+    let [sx0, sy0, sx1, sy1] = SHEET;
+    if x < sx0 || y < sy0 || x >= sx1 || y >= sy1 {
+        return BACKGROUND;
+    }
+    let (u, v) = (x - ORIGIN[0], y - ORIGIN[1]);
+    [0, 1, 2].map(|c| source_byte(u, v, c))
+}
+
+/// Pixels whose RGB differs from [`expected`] by more than `tolerance`.
+fn wrong_pixels(image: &[u8], tolerance: u8) -> Vec<(u32, u32)> {
+    let mut wrong = Vec::new();
+    for y in 0..DST.1 {
+        for x in 0..DST.0 {
+            let i = ((y * DST.0 + x) * 4) as usize;
+            let want = expected(x, y);
+            if (0..3).any(|c| image[i + c].abs_diff(want[c]) > tolerance) {
+                wrong.push((x, y));
+            }
+        }
+    }
+    wrong
+}
+
+#[test]
+fn texels_inside_the_sheet_background_around_it_nothing_beyond_the_canvas() {
+    let Some(ctx) = common::or_skip(GpuContext::new_headless()) else {
+        return;
+    };
+    let image = present(&ctx, wgpu::TextureFormat::Rgba8Unorm);
+    assert_eq!(wrong_pixels(&image, 0), Vec::<(u32, u32)>::new());
+    // The comparison can fail: one changed byte is found.
+    let mut perturbed = image.clone();
+    let i = ((10 * DST.0 + 12) * 4) as usize;
+    perturbed[i] ^= 1;
+    assert_eq!(wrong_pixels(&perturbed, 0), vec![(12, 10)]);
+}
+
+#[test]
+fn srgb_targets_show_the_same_colours() {
+    let Some(ctx) = common::or_skip(GpuContext::new_headless()) else {
+        return;
+    };
+    // Decoded to linear light by the shader and encoded again by the hardware: at most
+    // one step of rounding.
+    let image = present(&ctx, wgpu::TextureFormat::Rgba8UnormSrgb);
+    assert_eq!(wrong_pixels(&image, 1), Vec::<(u32, u32)>::new());
+}
