@@ -1,20 +1,23 @@
 // Frames while dragging a tool over a 1,000-op 1024×768 design, in headless Chromium on
 // SwiftShader (a CPU-emulated GPU), read from the app's own frame timings
-// (data-frames: frames drawn) and GPU work counters
-// (data-gpu-work). What is asserted: a drag draws only live-preview frames (no exact
-// render, no new preview cache), and it keeps at least 40 % of the frame rate of merely
-// hovering over the same design (the preview pass is one full-canvas draw; an exact
-// re-render of 1,000 ops per frame would be ~20× slower here). The
-// absolute frame rates are printed for docs/BENCHMARKS.md (on this 2-core machine
-// SwiftShader needs ~200 ms for any eframe frame of this size, so 30 frames/s is out of
-// its reach whatever the design).
+// (data-frames: frames drawn) and GPU work counters (data-gpu-work). Three set-ups:
+// WebGPU and WebGL2 with Chromium's default GPU compositing (the page's frames are
+// composited by SwiftShader too), and WebGPU with --disable-gpu-compositing (how
+// Chromium runs where it cannot use the GPU: software compositing, WebGPU still on
+// SwiftShader). What is asserted: a drag draws only live-preview frames (no exact
+// render, no new preview cache); it keeps at least 40 % of the frame rate of merely
+// hovering over the same design (the preview is one draw over the sheet; an exact
+// re-render of 1,000 ops per frame would be ~20× slower here); and when the preview
+// still takes several samples per pixel, the drag keeps up (≥ 25 frames/s), otherwise
+// it has dropped to one sample (src/preview_quality.rs). The frame rates are printed
+// for docs/BENCHMARKS.md.
 import { after, before, describe, test } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
-import { BACKENDS, MARBLING, READY_MS, attr, launch, openPage, sheet } from './harness.mjs';
+import { MARBLING, READY_MS, attr, launch, openPage, sheet } from './harness.mjs';
 
 const design = path.join(os.tmpdir(), `marbling-perf-${process.pid}.json`);
 
@@ -40,13 +43,19 @@ async function wiggle(page, x, y, ms) {
   return (1000 * frames) / (Date.now() - t0);
 }
 
-for (const backend of Object.keys(BACKENDS)) {
-  describe(`drag frames on ${backend}`, () => {
+const SETUPS = [
+  { name: 'webgpu', backend: 'webgpu', flags: [] },
+  { name: 'webgl2', backend: 'webgl2', flags: [] },
+  { name: 'webgpu, software compositing', backend: 'webgpu', flags: ['--disable-gpu-compositing'] },
+];
+
+for (const { name, backend, flags } of SETUPS) {
+  describe(`drag frames on ${name}`, () => {
     let browser;
     let site;
     before(async () => {
       execFileSync(MARBLING, ['random', '--ops', '1000', '--size', '1024x768', '--seed', '11', '--mix', 'mixed', '-o', design]);
-      ({ browser, site } = await launch(backend));
+      ({ browser, site } = await launch(backend, flags));
     });
     after(async () => {
       await browser?.close();
@@ -71,11 +80,13 @@ for (const backend of Object.keys(BACKENDS)) {
       const dragFps = await wiggle(page, x, y, 8_000);
       const during = await work(page);
       await page.mouse.up();
-      console.log(`${backend}: 1,000 ops at 1024×768 (scale ${s.scale.toFixed(3)}): hover ${hoverFps.toFixed(1)} frames/s, tine drag ${dragFps.toFixed(1)} frames/s, ${during.preview - before.preview} preview frames`);
+      console.log(`${name}: 1,000 ops at 1024×768 (scale ${s.scale.toFixed(3)}): hover ${hoverFps.toFixed(1)} frames/s, tine drag ${dragFps.toFixed(1)} frames/s, ${during.preview - before.preview} preview frames, preview ${during.preview_samples} sample(s)/px`);
       assert.equal(during.exact, before.exact, 'the drag re-rendered the design exactly');
       assert.equal(during.caches, before.caches, 'the drag rebuilt the preview cache');
       assert.ok(during.preview - before.preview >= 10, `only ${during.preview - before.preview} preview frames were drawn`);
       assert.ok(dragFps >= hoverFps / 2.5, `dragging (${dragFps.toFixed(1)} frames/s) is slower than hovering (${hoverFps.toFixed(1)} frames/s)`);
+      assert.ok(during.preview_samples === 1 || dragFps >= 25,
+        `the drag ran at ${dragFps.toFixed(1)} frames/s with ${during.preview_samples} preview samples per pixel`);
       assert.deepEqual(errors, []);
       await context.close();
     });

@@ -69,6 +69,8 @@ pub struct MarblingApp {
     pub(crate) new_size: [u32; 2],
     /// The sheet's top-left corner on the page (physical pixels) and the scale.
     pub(crate) sheet_on_page: Option<[f64; 3]>,
+    /// Samples per pixel of the live preview, from how fast its frames come.
+    pub(crate) preview_quality: crate::preview_quality::PreviewQuality,
     /// Recent frame intervals, seconds (for `data-frame-ms`).
     pub(crate) frame_times: std::collections::VecDeque<f64>,
     /// Frames drawn since start (for `data-frames`).
@@ -168,6 +170,7 @@ impl MarblingApp {
             hooks: Vec::new(),
             new_size: NEW_SIZE,
             sheet_on_page: None,
+            preview_quality: Default::default(),
             frame_times: std::collections::VecDeque::new(),
             frames: 0,
             export_size: ExportSize::Screen,
@@ -545,6 +548,12 @@ impl MarblingApp {
                 (asked && done, s.work)
             })
             .unwrap_or_default();
+        let preview_samples = self
+            .preview_quality
+            .antialias(self.antialias)
+            .samples()
+            .len()
+            .min(marbling_gpu::params::MAX_PREVIEW_SAMPLES);
         let error = self
             .message
             .as_ref()
@@ -589,8 +598,8 @@ impl MarblingApp {
             (
                 "data-gpu-work",
                 Some(format!(
-                    "exact={},preview={},caches={}",
-                    work.exact, work.preview, work.caches
+                    "exact={},preview={},caches={},preview_samples={}",
+                    work.exact, work.preview, work.caches, preview_samples
                 )),
             ),
             ("data-controls", Some(controls)),

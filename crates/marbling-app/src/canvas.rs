@@ -206,12 +206,21 @@ impl MarblingApp {
                 )
             }
         };
+        let antialias = if single.is_some() {
+            let dt = f64::from(ui.input(|i| i.unstable_dt));
+            let samples = self.antialias.samples().len();
+            self.preview_quality.record(dt, samples);
+            self.preview_quality.antialias(self.antialias)
+        } else {
+            self.preview_quality.end_drag();
+            self.antialias
+        };
         let request = FrameRequest {
             design_key,
             size,
             scale: view.zoom * ppp,
             origin: [view.origin.x, view.origin.y],
-            antialias: self.antialias,
+            antialias,
             pending: single,
         };
         let callback = CanvasCallback {

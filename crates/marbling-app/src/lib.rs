@@ -19,6 +19,7 @@ pub mod palettes;
 mod panel;
 pub mod platform;
 pub mod playback;
+pub mod preview_quality;
 pub mod recovery;
 pub mod tools;
 pub mod view;

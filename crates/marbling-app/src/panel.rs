@@ -423,6 +423,13 @@ impl MarblingApp {
                 d.ops.len(),
                 self.backend
             ));
+            if self.preview_quality.reduced() {
+                ui.label("· preview 1 sample/px").on_hover_text(
+                    "Frames came slower than 30 per second while dragging, so the live \
+                     preview takes one sample per pixel; released ops are still rendered \
+                     exactly with the chosen antialiasing.",
+                );
+            }
             if let Some(v) = &self.view {
                 ui.label(format!("zoom {:.0} %", v.zoom * 100.0));
                 if ui.small_button("fit").clicked() {
