@@ -1,5 +1,6 @@
-//! Bind group layout entries the pipelines share: a uniform block of a host struct and
-//! a 2D float texture.
+//! What the pipelines share in binding their resources: layout entries for a uniform
+//! block of a host struct and a 2D float texture, a uniform buffer for a host struct,
+//! and a pipeline layout of one bind group.
 
 /// Entry `binding`: a uniform buffer holding one `T` (its size is the minimum binding
 /// size), seen by `visibility`.
@@ -36,4 +37,27 @@ pub(crate) fn texture_2d(
         },
         count: None,
     }
+}
+
+/// A uniform buffer sized for one `T`, written with `Queue::write_buffer`.
+pub(crate) fn uniform_buffer<T>(device: &wgpu::Device, label: &str) -> wgpu::Buffer {
+    device.create_buffer(&wgpu::BufferDescriptor {
+        label: Some(label),
+        size: std::mem::size_of::<T>() as u64,
+        usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+        mapped_at_creation: false,
+    })
+}
+
+/// A pipeline layout of the one bind group `layout` (group 0), no immediates.
+pub(crate) fn pipeline_layout(
+    device: &wgpu::Device,
+    label: &str,
+    layout: &wgpu::BindGroupLayout,
+) -> wgpu::PipelineLayout {
+    device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+        label: Some(label),
+        bind_group_layouts: &[Some(layout)],
+        immediate_size: 0,
+    })
 }

@@ -74,11 +74,7 @@ impl ExactRenderer {
                 bindings::uniform::<SurfaceParams>(2, visibility),
             ],
         });
-        let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
-            label: Some("marbling render"),
-            bind_group_layouts: &[Some(&layout)],
-            immediate_size: 0,
-        });
+        let pipeline_layout = bindings::pipeline_layout(device, "marbling render", &layout);
         let pipeline = crate::fullscreen::pipeline(
             device,
             "marbling render",
@@ -174,23 +170,13 @@ impl ExactRenderer {
             [0.0; 2],
             !self.format.is_srgb(),
         );
-        let uniform = device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some("marbling render params"),
-            size: std::mem::size_of::<RenderParams>() as u64,
-            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
-            mapped_at_creation: false,
-        });
+        let uniform = bindings::uniform_buffer::<RenderParams>(device, "marbling render params");
         queue.write_buffer(&uniform, 0, bytemuck::bytes_of(&params));
         let surface_params = SurfaceParams::new(design);
         if surface_params.flags != 0 {
             self.surface_pipeline(device);
         }
-        let surface = device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some("marbling surface params"),
-            size: std::mem::size_of::<SurfaceParams>() as u64,
-            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
-            mapped_at_creation: false,
-        });
+        let surface = bindings::uniform_buffer::<SurfaceParams>(device, "marbling surface params");
         queue.write_buffer(&surface, 0, bytemuck::bytes_of(&surface_params));
         let view = ops.create_view(&wgpu::TextureViewDescriptor::default());
         let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {

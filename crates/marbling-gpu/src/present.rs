@@ -52,11 +52,7 @@ impl Presenter {
                 bindings::texture_2d(1, fragment, false),
             ],
         });
-        let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
-            label: Some("marbling present"),
-            bind_group_layouts: &[Some(&layout)],
-            immediate_size: 0,
-        });
+        let pipeline_layout = bindings::pipeline_layout(device, "marbling present", &layout);
         let pipeline = crate::fullscreen::pipeline(
             device,
             "marbling present",
@@ -74,12 +70,7 @@ impl Presenter {
     /// Binds `view` (a texture holding sRGB-encoded values in a `…Unorm` format, such as
     /// a render of [`crate::ExactRenderer`] into an `Rgba8Unorm` target) for presenting.
     pub fn source(&self, device: &wgpu::Device, view: &wgpu::TextureView) -> PresentSource {
-        let uniform = device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some("marbling present params"),
-            size: std::mem::size_of::<PresentParams>() as u64,
-            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
-            mapped_at_creation: false,
-        });
+        let uniform = bindings::uniform_buffer::<PresentParams>(device, "marbling present params");
         let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("marbling present"),
             layout: &self.layout,

@@ -68,11 +68,7 @@ impl PreviewRenderer {
                 },
             ],
         });
-        let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
-            label: Some("marbling preview"),
-            bind_group_layouts: &[Some(&layout)],
-            immediate_size: 0,
-        });
+        let pipeline_layout = bindings::pipeline_layout(device, "marbling preview", &layout);
         let pipeline = crate::fullscreen::pipeline(
             device,
             "marbling preview",
@@ -136,12 +132,7 @@ impl PreviewRenderer {
             self.cache_renderer.draw(&mut pass, &prepared);
         }
         queue.submit([encoder.finish()]);
-        let uniform = device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some("marbling preview params"),
-            size: std::mem::size_of::<PreviewParams>() as u64,
-            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
-            mapped_at_creation: false,
-        });
+        let uniform = bindings::uniform_buffer::<PreviewParams>(device, "marbling preview params");
         let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("marbling preview"),
             layout: &self.layout,
