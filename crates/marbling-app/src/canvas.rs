@@ -45,6 +45,8 @@ impl MarblingApp {
         if self.gpu {
             self.paint_design(ui, frame, rect, placement, &view);
         } else {
+            let [r, g, b] = crate::canvas_gpu::SURROUND;
+            painter.rect_filled(rect, 0.0, Color32::from_rgb(r, g, b));
             painter.text(
                 rect.center(),
                 egui::Align2::CENTER_CENTER,

@@ -368,3 +368,35 @@ impl egui_wgpu::CallbackTrait for CanvasCallback {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn rect(x0: f32, y0: f32, x1: f32, y1: f32) -> Rect {
+        Rect::from_min_max(Pos2::new(x0, y0), Pos2::new(x1, y1))
+    }
+
+    #[test]
+    fn the_canvas_corner_is_rounded_and_the_sheet_moves_with_it() {
+        // At 1.5 physical pixels per point the canvas corner lands on 100.5 px → 101
+        // (as egui rounds its viewport); the sheet keeps its place relative to it.
+        let p = CanvasPlacement::new(
+            rect(67.0, 10.0, 400.0, 300.0),
+            rect(77.0, 20.0, 177.0, 80.0),
+            1.5,
+        );
+        assert_eq!(p.canvas_px, [101.0, 15.0]);
+        assert_eq!(p.sheet_px, [116.0, 30.0, 266.0, 120.0]);
+    }
+
+    #[test]
+    fn sheet_pixels_are_those_whose_centres_lie_inside_the_sheet() {
+        let p = CanvasPlacement {
+            canvas_px: [0.0, 0.0],
+            sheet_px: [10.4, 10.6, 20.5, 20.6],
+        };
+        // x: centres 10.5 … 19.5 are inside [10.4, 20.5); y: 11.5 … 20.5 inside [10.6, 20.6).
+        assert_eq!(p.sheet_pixels(), rect(10.0, 11.0, 20.0, 21.0));
+    }
+}
