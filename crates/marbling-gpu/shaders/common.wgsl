@@ -20,51 +20,70 @@ const KIND_VORTEX: u32 = 5u;
 // covered = 1.0 when `p` lies in the op's ink (the walk stops there with colour `b`),
 // else (x, y) is where `p` was before the op. Same formulas as marbling-core's walk.rs.
 fn op_back(a: vec4<f32>, b: vec4<f32>, p: vec2<f32>) -> vec3<f32> {
-    let kind = u32(a.x);
-    switch kind {
+    switch u32(a.x) {
         case 0u, 1u: {
-            let d = p - a.yz;
-            let d2 = dot(d, d);
-            if d2 < a.w {
-                return vec3<f32>(p, 1.0);
-            }
-            if kind == KIND_DROP {
-                return vec3<f32>(a.yz + d * sqrt(1.0 - a.w / d2), 0.0);
-            }
-            return vec3<f32>(p, 0.0);
+            return drop_back(a, b, p);
         }
         case 2u: {
-            let m = vec2<f32>(a.w, b.x);
-            let n = vec2<f32>(-m.y, m.x);
-            var d = abs(dot(p - a.yz, n));
-            if b.w > 0.0 {
-                let fr = fract(d / b.w);
-                d = b.w * (0.5 - abs(fr - 0.5));
-            }
-            return vec3<f32>(p - (b.y / (d + b.z)) * m, 0.0);
+            return comb_back(a, b, p);
         }
         case 3u: {
-            let m = a.yz;
-            let n = vec2<f32>(m.y, -m.x);
-            let f = a.w * sin(b.x * dot(p, n) + b.y);
-            return vec3<f32>(p - f * m, 0.0);
+            return wave_back(a, b, p);
         }
         default: {
-            let d = p - a.yz;
-            let rho = sqrt(dot(d, d));
-            if rho == 0.0 {
-                return vec3<f32>(p, 0.0);
-            }
-            var dist = rho;
-            if kind == KIND_CIRCULAR {
-                dist = abs(rho - a.w);
-            }
-            let theta = b.x / (dist + b.y) / rho;
-            let s = sin(-theta);
-            let c = cos(theta);
-            return vec3<f32>(a.yz + vec2<f32>(d.x * c - d.y * s, d.x * s + d.y * c), 0.0);
+            return swirl_back(a, b, p);
         }
     }
+}
+
+// op_back for KIND_DROP and KIND_SPRAY (a spray droplet leaves the rest in place).
+fn drop_back(a: vec4<f32>, b: vec4<f32>, p: vec2<f32>) -> vec3<f32> {
+    let d = p - a.yz;
+    let d2 = dot(d, d);
+    if d2 < a.w {
+        return vec3<f32>(p, 1.0);
+    }
+    if u32(a.x) == KIND_DROP {
+        return vec3<f32>(a.yz + d * sqrt(1.0 - a.w / d2), 0.0);
+    }
+    return vec3<f32>(p, 0.0);
+}
+
+// op_back for KIND_COMB (tine, or rake when b.w, the spacing, is > 0).
+fn comb_back(a: vec4<f32>, b: vec4<f32>, p: vec2<f32>) -> vec3<f32> {
+    let m = vec2<f32>(a.w, b.x);
+    let n = vec2<f32>(-m.y, m.x);
+    var d = abs(dot(p - a.yz, n));
+    if b.w > 0.0 {
+        let fr = fract(d / b.w);
+        d = b.w * (0.5 - abs(fr - 0.5));
+    }
+    return vec3<f32>(p - (b.y / (d + b.z)) * m, 0.0);
+}
+
+// op_back for KIND_WAVE.
+fn wave_back(a: vec4<f32>, b: vec4<f32>, p: vec2<f32>) -> vec3<f32> {
+    let m = a.yz;
+    let n = vec2<f32>(m.y, -m.x);
+    let f = a.w * sin(b.x * dot(p, n) + b.y);
+    return vec3<f32>(p - f * m, 0.0);
+}
+
+// op_back for KIND_CIRCULAR and KIND_VORTEX (a rotation about the centre).
+fn swirl_back(a: vec4<f32>, b: vec4<f32>, p: vec2<f32>) -> vec3<f32> {
+    let d = p - a.yz;
+    let rho = sqrt(dot(d, d));
+    if rho == 0.0 {
+        return vec3<f32>(p, 0.0);
+    }
+    var dist = rho;
+    if u32(a.x) == KIND_CIRCULAR {
+        dist = abs(rho - a.w);
+    }
+    let theta = b.x / (dist + b.y) / rho;
+    let s = sin(-theta);
+    let c = cos(theta);
+    return vec3<f32>(a.yz + vec2<f32>(d.x * c - d.y * s, d.x * s + d.y * c), 0.0);
 }
 
 // The sRGB bytes packed as r·65536 + g·256 + b, as floats in 0..=1 (exact byte/255).

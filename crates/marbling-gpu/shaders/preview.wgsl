@@ -2,6 +2,10 @@
 // texture (rendered exactly by render.wgsl at ≥ 2× the view resolution, stored as
 // Rgba8UnormSrgb so bilinear filtering happens in linear light); only the pending op
 // is walked here (common.wgsl is prepended). An approximation, used only while dragging.
+//
+// `pending_back(a, b, p)` is appended by the host (src/preview_kind.rs): one pipeline per
+// op kind, each calling only that kind's inverse from common.wgsl. A software GPU runs
+// every case of a switch for every pixel, even when all pixels take the same case.
 
 // Keep in sync with `PreviewParams` in src/params.rs (checked by tests/layout.rs).
 struct PreviewParams {
@@ -38,7 +42,7 @@ fn vs_main(@builtin(vertex_index) vertex: u32) -> @builtin(position) vec4<f32> {
 fn shade(p0: vec2<f32>) -> vec3<f32> {
     var p = p0;
     if params.has_pending != 0u {
-        let r = op_back(params.pending_a, params.pending_b, p);
+        let r = pending_back(params.pending_a, params.pending_b, p);
         if r.z > 0.0 {
             return params.pending_b.rgb;
         }

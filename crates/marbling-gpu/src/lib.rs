@@ -51,7 +51,8 @@
 //! - [`GpuRenderer`] (native): exact renders to an [`marbling_core::RgbaImage`], tiled
 //!   beyond the device's texture limit, with progress.
 //! - [`PreviewRenderer`] + [`PreviewCache`]: live-editing frames (cached committed design
-//!   + one pending op), an approximation shown only while dragging.
+//!   + one pending op), an approximation shown only while dragging; one pipeline per
+//!   [`PreviewKind`] of pending op.
 //! - [`Presenter`] + [`PresentSource`]: a rendered texture shown 1:1 in another pass
 //!   (the app's canvas), with a flat background around the sheet.
 
@@ -67,6 +68,7 @@ mod headless;
 pub mod params;
 mod present;
 mod preview;
+mod preview_kind;
 pub mod shaders;
 pub mod surface;
 mod target;
@@ -80,6 +82,7 @@ pub use exact::{ExactRenderer, PreparedDesign, View};
 pub use headless::{DEFAULT_TILE_SIDE, GpuRenderer, OUTPUT_FORMAT};
 pub use present::{Placement, PresentSource, Presenter};
 pub use preview::{CACHE_FACTOR, CACHE_FORMAT, PreviewCache, PreviewRenderer};
+pub use preview_kind::PreviewKind;
 #[cfg(not(target_arch = "wasm32"))]
 pub use target::read_buffer;
 pub use target::{RenderTarget, copy_to_buffer};

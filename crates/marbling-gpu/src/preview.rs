@@ -14,7 +14,8 @@ use crate::bindings;
 use crate::encode::encode_op;
 use crate::exact::{ExactRenderer, View};
 use crate::params::PreviewParams;
-use crate::shaders::PREVIEW_WGSL;
+use crate::preview_kind::PreviewKind;
+use crate::shaders::preview_wgsl;
 use crate::target::RenderTarget;
 use marbling_core::{Antialias, Design, Op, output_size};
 
@@ -24,11 +25,13 @@ pub const CACHE_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8UnormSrg
 /// How much finer than the view the cache is rendered, when the device allows.
 pub const CACHE_FACTOR: f64 = 2.0;
 
-/// The preview pipeline for one target format, and the exact pipeline that fills caches.
+/// The preview pipelines (one per [`PreviewKind`]) for one target format, and the exact
+/// pipeline that fills caches.
 #[derive(Debug)]
 pub struct PreviewRenderer {
     layout: wgpu::BindGroupLayout,
-    pipeline: wgpu::RenderPipeline,
+    /// Indexed by [`PreviewKind::index`].
+    pipelines: Vec<wgpu::RenderPipeline>,
     sampler: wgpu::Sampler,
     cache_renderer: ExactRenderer,
     format: wgpu::TextureFormat,
@@ -45,15 +48,13 @@ pub struct PreviewCache {
     /// The largest cache scale the device's texture side allows for this design.
     max_scale: f64,
     encode_srgb: bool,
+    /// The pipeline variant the next draw uses (the pending op's kind).
+    kind: PreviewKind,
 }
 
 impl PreviewRenderer {
     /// Builds the pipelines; previews are drawn into targets of `format`.
     pub fn new(device: &wgpu::Device, format: wgpu::TextureFormat) -> Self {
-        let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
-            label: Some("marbling preview.wgsl"),
-            source: wgpu::ShaderSource::Wgsl(PREVIEW_WGSL.into()),
-        });
         let fragment = wgpu::ShaderStages::FRAGMENT;
         let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("marbling preview"),
@@ -69,13 +70,22 @@ impl PreviewRenderer {
             ],
         });
         let pipeline_layout = bindings::pipeline_layout(device, "marbling preview", &layout);
-        let pipeline = crate::fullscreen::pipeline(
-            device,
-            "marbling preview",
-            &pipeline_layout,
-            &module,
-            format,
-        );
+        let pipelines = PreviewKind::ALL
+            .into_iter()
+            .map(|kind| {
+                let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+                    label: Some(&format!("marbling preview.wgsl ({})", kind.name())),
+                    source: wgpu::ShaderSource::Wgsl(preview_wgsl(kind).into()),
+                });
+                crate::fullscreen::pipeline(
+                    device,
+                    &format!("marbling preview ({})", kind.name()),
+                    &pipeline_layout,
+                    &module,
+                    format,
+                )
+            })
+            .collect();
         let sampler = device.create_sampler(&wgpu::SamplerDescriptor {
             label: Some("marbling preview cache"),
             address_mode_u: wgpu::AddressMode::ClampToEdge,
@@ -86,7 +96,7 @@ impl PreviewRenderer {
         });
         Self {
             layout,
-            pipeline,
+            pipelines,
             sampler,
             cache_renderer: ExactRenderer::new(device, CACHE_FORMAT),
             format,
@@ -159,6 +169,7 @@ impl PreviewRenderer {
             cache_scale,
             max_scale,
             encode_srgb: !self.format.is_srgb(),
+            kind: PreviewKind::Idle,
         };
         out.set_frame(queue, None, [0.0; 2], view_scale, antialias);
         Ok(out)
@@ -167,7 +178,7 @@ impl PreviewRenderer {
     /// Records a full-target preview draw of `cache` into `pass` (target of this
     /// renderer's format).
     pub fn draw(&self, pass: &mut wgpu::RenderPass<'_>, cache: &PreviewCache) {
-        pass.set_pipeline(&self.pipeline);
+        pass.set_pipeline(&self.pipelines[cache.kind.index()]);
         pass.set_bind_group(0, &cache.bind_group, &[]);
         pass.draw(0..3, 0..1);
     }
@@ -186,9 +197,11 @@ impl PreviewCache {
         view_scale: f64,
         antialias: Antialias,
     ) {
+        let encoded = pending.map(encode_op);
+        self.kind = PreviewKind::of(encoded.as_ref());
         let params = PreviewParams::new(
             self.design_size,
-            pending.map(encode_op),
+            encoded,
             view_origin,
             view_scale,
             antialias,

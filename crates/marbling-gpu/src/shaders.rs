@@ -3,6 +3,8 @@
 //! triangle), then for the exact renderer marbling-noise's `noise` module and
 //! `surface.wgsl` (schema v2 noise backgrounds and grain overlays), then its own file.
 
+use crate::preview_kind::PreviewKind;
+
 /// `shaders/common.wgsl`.
 pub const COMMON: &str = include_str!("../shaders/common.wgsl");
 /// `shaders/surface.wgsl`: noise background, pigment and paper grain.
@@ -37,12 +39,19 @@ pub fn render_compute_wgsl() -> String {
     [render_wgsl(), RENDER_COMPUTE.to_owned()].join("\n")
 }
 
-/// The live preview (cache + one pending op): `shaders/common.wgsl` + `shaders/preview.wgsl`.
+/// The live preview (cache + one pending op) without its `pending_back`:
+/// `shaders/common.wgsl` + `shaders/preview.wgsl`. See [`preview_wgsl`].
 pub const PREVIEW_WGSL: &str = concat!(
     include_str!("../shaders/common.wgsl"),
     "\n",
     include_str!("../shaders/preview.wgsl")
 );
+
+/// The live-preview module for pending ops of `kind`: [`PREVIEW_WGSL`] + that kind's
+/// `pending_back`.
+pub fn preview_wgsl(kind: PreviewKind) -> String {
+    [PREVIEW_WGSL, kind.pending_back()].join("\n")
+}
 
 /// Showing a rendered texture 1:1 in a pass: `shaders/common.wgsl` + `shaders/present.wgsl`.
 pub const PRESENT_WGSL: &str = concat!(
@@ -61,14 +70,17 @@ pub fn render_wgsl() -> String {
 }
 
 /// Every render-pipeline module (vertex + fragment; WebGPU and WebGL2) as (name,
-/// source), for validation.
-pub fn all() -> [(&'static str, String); 4] {
-    [
-        ("render", render_wgsl()),
-        ("render-plain", RENDER_PLAIN_WGSL.to_owned()),
-        ("preview", PREVIEW_WGSL.to_owned()),
-        ("present", PRESENT_WGSL.to_owned()),
-    ]
+/// source), for validation: the exact renderers, each live-preview variant, present.
+pub fn all() -> Vec<(String, String)> {
+    let mut out = vec![
+        ("render".to_owned(), render_wgsl()),
+        ("render-plain".to_owned(), RENDER_PLAIN_WGSL.to_owned()),
+    ];
+    for kind in PreviewKind::ALL {
+        out.push((format!("preview-{}", kind.name()), preview_wgsl(kind)));
+    }
+    out.push(("present".to_owned(), PRESENT_WGSL.to_owned()));
+    out
 }
 
 /// The modules with the exact renderer's compute entry point (native and WebGPU only),

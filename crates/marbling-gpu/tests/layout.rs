@@ -1,8 +1,9 @@
 //! The host mirrors of the WGSL uniform structs have the same member offsets and size
 //! as naga computes for the shaders (keep src/params.rs and shaders/*.wgsl in sync).
 
+use marbling_gpu::PreviewKind;
 use marbling_gpu::params::{PresentParams, PreviewParams, RenderParams};
-use marbling_gpu::shaders::{PRESENT_WGSL, PREVIEW_WGSL, render_wgsl};
+use marbling_gpu::shaders::{PRESENT_WGSL, preview_wgsl, render_wgsl};
 use marbling_gpu::surface::{LayerParams, SurfaceParams};
 use std::mem::{offset_of, size_of};
 
@@ -66,7 +67,7 @@ fn render_params_match_wgsl() {
 #[test]
 fn preview_params_match_wgsl() {
     check(
-        PREVIEW_WGSL,
+        &preview_wgsl(PreviewKind::Comb),
         "PreviewParams",
         &[
             ("pending_a", offset_of!(PreviewParams, pending_a)),
@@ -153,13 +154,14 @@ fn struct_depth(module: &naga::Module, ty: naga::Handle<naga::Type>) -> u32 {
 #[test]
 fn structs_nest_within_webgl2_limits() {
     let render = render_wgsl();
+    let preview = preview_wgsl(PreviewKind::Swirl);
     for (name, source) in [
         ("render.wgsl (surface)", render.as_str()),
         (
             "render.wgsl (plain)",
             marbling_gpu::shaders::RENDER_PLAIN_WGSL,
         ),
-        ("preview.wgsl", PREVIEW_WGSL),
+        ("preview.wgsl", preview.as_str()),
         ("present.wgsl", PRESENT_WGSL),
     ] {
         let module = naga::front::wgsl::parse_str(source).expect("parses");

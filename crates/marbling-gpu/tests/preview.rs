@@ -76,7 +76,21 @@ fn preview_frames_approximate_the_exact_render() {
         radius: 18.0,
         color: Rgb8::new(0xe6, 0x39, 0x46),
     });
-    for pending in [None, Some(tine), Some(drop)] {
+    // The other kinds, each drawn by its own preview pipeline (marbling_gpu::PreviewKind).
+    let others = marbling_core::Design::from_json(
+        r##"{"version":1,"width":160,"height":120,"background":"#ffffff","ops":[
+            {"type":"spray","center":[40,30],"radius":9,"color":"#2a9d8f"},
+            {"type":"rake","origin":[0,0],"direction":[0.2,1],"spacing":30,"alpha":12,"lambda":6},
+            {"type":"wavy","angle":0.4,"amplitude":6,"wavelength":50,"phase":0.5},
+            {"type":"circular","center":[80,60],"radius":35,"alpha":20,"lambda":10},
+            {"type":"vortex","center":[90,55],"alpha":30,"lambda":15}
+        ]}"##,
+    )
+    .expect("valid ops");
+    let pending_ops = [None, Some(tine), Some(drop)]
+        .into_iter()
+        .chain(others.ops.into_iter().map(Some));
+    for pending in pending_ops {
         let mut exact_design = committed.clone();
         exact_design.ops.extend(pending);
         let exact = render(&exact_design, &opts).expect("CPU render");
@@ -86,7 +100,7 @@ fn preview_frames_approximate_the_exact_render() {
         let soft = compare(&exact, &frame, 24).expect("size");
         let gross = compare(&exact, &frame, 96).expect("size");
         println!(
-            "pending {:<5}: {:.3} % of pixels differ by > 24/255, {:.3} % by > 96/255",
+            "pending {:<8}: {:.3} % of pixels differ by > 24/255, {:.3} % by > 96/255",
             pending.map_or("none", |o| o.type_name()),
             100.0 * soft.fraction(),
             100.0 * gross.fraction(),

@@ -31,11 +31,11 @@ fn entry_points(module: &naga::Module) -> Vec<&str> {
 #[test]
 fn every_shader_parses_and_validates() {
     for (name, source) in all() {
-        let module = validate(name, &source);
+        let module = validate(&name, &source);
         assert_eq!(entry_points(&module), ["vs_main", "fs_main"], "{name}");
     }
     for (name, source) in compute_modules() {
-        let module = validate(name, &source);
+        let module = validate(&name, &source);
         assert_eq!(
             entry_points(&module),
             ["vs_main", "fs_main", "cs_main"],

@@ -1,0 +1,132 @@
+//! The live preview's pipeline variants: one per kind of pending op, each compiled with
+//! only that kind's inverse (`pending_back` in `shaders/preview.wgsl`).
+//!
+//! Why: the exact renderer's `op_back` switches on the op kind per op. A GPU runs only
+//! the case the pixels take, but a software GPU (SwiftShader, which is what Chromium
+//! uses where there is no GPU) runs every case for every pixel, masked. The preview
+//! walks one op whose kind is known when the frame is recorded, so it need not switch:
+//! in headless Chromium on SwiftShader the specialised preview draws a tine drag frame
+//! over 1024×768 about 13 ms faster (docs/BENCHMARKS.md).
+
+use crate::encode::{
+    EncodedOp, KIND_CIRCULAR, KIND_COMB, KIND_DROP, KIND_SPRAY, KIND_VORTEX, KIND_WAVE,
+};
+
+/// Which inverse a preview pipeline walks for its pending op.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum PreviewKind {
+    /// No pending op: the cache alone.
+    Idle,
+    /// Drops and spray droplets (`drop_back`).
+    Drop,
+    /// Tines and rakes (`comb_back`).
+    Comb,
+    /// Wavy combs (`wave_back`).
+    Wave,
+    /// Circular combs and vortices (`swirl_back`).
+    Swirl,
+}
+
+impl PreviewKind {
+    /// Every variant, in the order of [`PreviewKind::index`].
+    pub const ALL: [PreviewKind; 5] = [
+        PreviewKind::Idle,
+        PreviewKind::Drop,
+        PreviewKind::Comb,
+        PreviewKind::Wave,
+        PreviewKind::Swirl,
+    ];
+
+    /// The variant that walks `pending` (an op encoded by [`crate::encode::encode_op`];
+    /// its kind code is `a.x`).
+    pub fn of(pending: Option<&EncodedOp>) -> Self {
+        let Some([a, _]) = pending else {
+            return PreviewKind::Idle;
+        };
+        match a[0] {
+            k if k == KIND_DROP || k == KIND_SPRAY => PreviewKind::Drop,
+            k if k == KIND_COMB => PreviewKind::Comb,
+            k if k == KIND_WAVE => PreviewKind::Wave,
+            k if k == KIND_CIRCULAR || k == KIND_VORTEX => PreviewKind::Swirl,
+            // Unknown codes are never encoded; the cache alone is the safe picture.
+            _ => PreviewKind::Idle,
+        }
+    }
+
+    /// Position in [`PreviewKind::ALL`].
+    pub fn index(self) -> usize {
+        self as usize
+    }
+
+    /// Short name, for pipeline labels and test messages.
+    pub fn name(self) -> &'static str {
+        match self {
+            PreviewKind::Idle => "idle",
+            PreviewKind::Drop => "drop",
+            PreviewKind::Comb => "comb",
+            PreviewKind::Wave => "wave",
+            PreviewKind::Swirl => "swirl",
+        }
+    }
+
+    /// The WGSL definition of `pending_back` for this variant (appended to preview.wgsl).
+    pub fn pending_back(self) -> &'static str {
+        match self {
+            PreviewKind::Idle => {
+                "fn pending_back(a: vec4<f32>, b: vec4<f32>, p: vec2<f32>) -> vec3<f32> {\n    return vec3<f32>(p, 0.0);\n}\n"
+            }
+            PreviewKind::Drop => {
+                "fn pending_back(a: vec4<f32>, b: vec4<f32>, p: vec2<f32>) -> vec3<f32> {\n    return drop_back(a, b, p);\n}\n"
+            }
+            PreviewKind::Comb => {
+                "fn pending_back(a: vec4<f32>, b: vec4<f32>, p: vec2<f32>) -> vec3<f32> {\n    return comb_back(a, b, p);\n}\n"
+            }
+            PreviewKind::Wave => {
+                "fn pending_back(a: vec4<f32>, b: vec4<f32>, p: vec2<f32>) -> vec3<f32> {\n    return wave_back(a, b, p);\n}\n"
+            }
+            PreviewKind::Swirl => {
+                "fn pending_back(a: vec4<f32>, b: vec4<f32>, p: vec2<f32>) -> vec3<f32> {\n    return swirl_back(a, b, p);\n}\n"
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::encode::encode_op;
+    use marbling_core::Design;
+
+    #[test]
+    fn every_op_kind_gets_the_variant_with_its_inverse() {
+        let json = r##"{"version":1,"width":100,"height":80,"background":"#ffffff","ops":[
+            {"type":"drop","center":[50,40],"radius":10,"color":"#112233"},
+            {"type":"spray","center":[20,30],"radius":3,"color":"#112233"},
+            {"type":"tine","origin":[0,40],"direction":[1,0],"alpha":10,"lambda":8},
+            {"type":"rake","origin":[0,40],"direction":[1,0],"alpha":10,"lambda":8,"spacing":20},
+            {"type":"wavy","angle":0.5,"amplitude":5,"wavelength":30,"phase":0},
+            {"type":"circular","center":[50,40],"radius":20,"alpha":10,"lambda":8},
+            {"type":"vortex","center":[50,40],"alpha":10,"lambda":8}
+        ]}"##;
+        let design = Design::from_json(json).expect("valid design");
+        let kinds: Vec<PreviewKind> = design
+            .ops
+            .iter()
+            .map(|op| PreviewKind::of(Some(&encode_op(op))))
+            .collect();
+        use PreviewKind::*;
+        assert_eq!(kinds, [Drop, Drop, Comb, Comb, Wave, Swirl, Swirl]);
+        assert_eq!(PreviewKind::of(None), Idle);
+        assert_eq!(
+            PreviewKind::of(Some(&[[9.0, 0.0, 0.0, 0.0], [0.0; 4]])),
+            Idle
+        );
+    }
+
+    #[test]
+    fn indices_follow_all() {
+        for (i, k) in PreviewKind::ALL.into_iter().enumerate() {
+            assert_eq!(k.index(), i, "{}", k.name());
+        }
+    }
+}
