@@ -50,9 +50,9 @@
 //!   target format, for apps drawing into their own render passes.
 //! - [`GpuRenderer`] (native): exact renders to an [`marbling_core::RgbaImage`], tiled
 //!   beyond the device's texture limit, with progress.
-//! - [`PreviewRenderer`] + [`PreviewCache`]: live-editing frames (cached committed design
-//!   + one pending op), an approximation shown only while dragging; one pipeline per
-//!   [`PreviewKind`] of pending op.
+//! - [`PreviewRenderer`] + [`PreviewCache`]: live-editing frames (a cached committed
+//!   design plus one pending op), an approximation shown only while dragging; one
+//!   pipeline per [`PreviewKind`] of pending op.
 //! - [`Presenter`] + [`PresentSource`]: a rendered texture shown 1:1 in another pass
 //!   (the app's canvas), with a flat background around the sheet.
 
