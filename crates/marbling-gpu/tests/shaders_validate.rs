@@ -35,7 +35,7 @@ fn every_shader_parses_and_validates() {
         assert_eq!(entry_points(&module), ["vs_main", "fs_main"], "{name}");
     }
     for (name, source) in compute_modules() {
-        let module = validate(&name, &source);
+        let module = validate(name, &source);
         assert_eq!(
             entry_points(&module),
             ["vs_main", "fs_main", "cs_main"],
