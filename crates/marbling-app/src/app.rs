@@ -59,7 +59,9 @@ pub struct MarblingApp {
     pub(crate) playback: Option<Playback>,
     /// Playback speed, ops per second.
     pub(crate) play_speed: f64,
-    pub(crate) thumbnails: Vec<egui::TextureHandle>,
+    /// The gallery's thumbnail atlas and each example's rectangle in it (see
+    /// src/thumbnails.rs), made on first show.
+    pub(crate) thumbnails: Option<(egui::TextureHandle, Vec<egui::Rect>)>,
     /// `webgpu`, `webgl2`, or the native backend's name.
     pub(crate) backend: String,
     /// False when no wgpu render state exists (the canvas then says so).
@@ -104,6 +106,7 @@ impl MarblingApp {
     /// Creates the app: GPU resources, then the design from a share link, else the
     /// autosave, else the first gallery example.
     pub fn new(cc: &eframe::CreationContext<'_>) -> Self {
+        crate::style::apply(&cc.egui_ctx);
         let lost = LostFlag::default();
         let gpu_errors = GpuErrors::default();
         let (gpu, backend) = match &cc.wgpu_render_state {
@@ -163,7 +166,7 @@ impl MarblingApp {
             last_fragment: None,
             playback: None,
             play_speed: 8.0,
-            thumbnails: Vec::new(),
+            thumbnails: None,
             backend,
             gpu,
             autosave_pending: false,
@@ -648,6 +651,8 @@ impl eframe::App for MarblingApp {
         egui::Panel::left("marbling_tools")
             .frame(unfilled(egui::Frame::side_top_panel(ui.style())))
             .resizable(true)
+            // The dark canvas marks the edge; a line would be one more draw call a frame.
+            .show_separator_line(false)
             .default_size(300.0)
             .size_range(240.0..=360.0)
             .show(ui, |ui| {
@@ -655,6 +660,7 @@ impl eframe::App for MarblingApp {
             });
         egui::Panel::bottom("marbling_status")
             .frame(unfilled(egui::Frame::side_top_panel(ui.style())))
+            .show_separator_line(false)
             .show(ui, |ui| self.status_bar(ui));
         egui::CentralPanel::default()
             .frame(unfilled(egui::Frame::central_panel(ui.style())))

@@ -21,6 +21,8 @@ pub mod platform;
 pub mod playback;
 pub mod preview_quality;
 pub mod recovery;
+pub mod style;
+pub mod thumbnails;
 pub mod tools;
 pub mod view;
 

@@ -369,40 +369,55 @@ impl MarblingApp {
 
     fn gallery_section(&mut self, ui: &mut egui::Ui) {
         ui.label(RichText::new("Gallery").strong());
-        if self.thumbnails.is_empty() {
-            for e in &EXAMPLES {
-                let Ok(img) = marbling_core::RgbaImage::from_png(e.thumbnail_png) else {
-                    continue;
-                };
-                let color = egui::ColorImage::from_rgba_unmultiplied(
-                    [img.width as usize, img.height as usize],
-                    &img.pixels,
-                );
-                self.thumbnails.push(ui.ctx().load_texture(
-                    e.name,
-                    color,
-                    egui::TextureOptions::LINEAR,
-                ));
+        if self.thumbnails.is_none() {
+            match crate::thumbnails::atlas(&EXAMPLES) {
+                Ok(atlas) => {
+                    let texture = ui.ctx().load_texture(
+                        "gallery thumbnails",
+                        atlas.image,
+                        egui::TextureOptions::LINEAR,
+                    );
+                    self.thumbnails = Some((texture, atlas.uv));
+                }
+                Err(e) => {
+                    ui.label(e);
+                    return;
+                }
             }
         }
+        let Some((texture, uvs)) = &self.thumbnails else {
+            return;
+        };
+        const THUMB: egui::Vec2 = egui::vec2(80.0, 50.0);
         let mut open = None;
-        for row in EXAMPLES
-            .iter()
-            .zip(&self.thumbnails)
-            .collect::<Vec<_>>()
-            .chunks(3)
-        {
+        let items: Vec<_> = EXAMPLES.iter().zip(uvs).collect();
+        for row in items.chunks(3) {
+            // All the row's thumbnails first, then its names: one draw call each (a
+            // texture change starts a new draw, see src/thumbnails.rs).
             ui.horizontal(|ui| {
-                for (e, tex) in row {
-                    ui.vertical(|ui| {
-                        let img = egui::Image::new(*tex).fit_to_exact_size(egui::vec2(80.0, 50.0));
-                        if ui
-                            .add(egui::Button::image(img))
-                            .on_hover_text(e.name)
-                            .clicked()
-                        {
-                            open = Some(*e);
-                        }
+                for (e, uv) in row {
+                    let image = egui::Image::new((texture.id(), THUMB))
+                        .uv(**uv)
+                        .fit_to_exact_size(THUMB)
+                        .sense(egui::Sense::click());
+                    let r = ui.add(image).on_hover_text(format!("Open {}", e.name));
+                    if r.hovered() {
+                        ui.painter().rect_stroke(
+                            r.rect.expand(1.0),
+                            2,
+                            ui.visuals().widgets.hovered.fg_stroke,
+                            egui::StrokeKind::Outside,
+                        );
+                    }
+                    if r.clicked() {
+                        open = Some(*e);
+                    }
+                }
+            });
+            ui.horizontal(|ui| {
+                for (e, _) in row {
+                    ui.allocate_ui(egui::vec2(THUMB.x, 16.0), |ui| {
+                        ui.set_width(THUMB.x);
                         ui.label(e.name);
                     });
                 }
