@@ -83,6 +83,21 @@ for (const backend of Object.keys(BACKENDS)) {
       await context.close();
     });
 
+    test('A gallery thumbnail opens its example', webgl2Only, async () => {
+      const { page, context, errors } = await openPage(browser, site);
+      const chevron = example('chevron');
+      const all = await controls(page);
+      // The thumbnails are drawn from one atlas texture (src/thumbnails.rs), in gallery order.
+      assert.ok(all['gallery-stone'] && all['gallery-chevron'], `no gallery controls in ${Object.keys(all).join(', ')}`);
+      assert.ok(all['gallery-chevron'].x > all['gallery-stone'].x, 'chevron is not right of stone');
+      await clickControl(page, 'gallery-chevron');
+      await waitOps(page, chevron.design.ops.length);
+      const saved = await download(page, 'save-json');
+      assert.deepEqual(JSON.parse(saved.bytes.toString('utf8')), chevron.design);
+      assert.deepEqual(errors, []);
+      await context.close();
+    });
+
     test('Export PNG at 2× equals `marbling render --scale 2`', async () => {
       const { page, context, errors } = await openPage(browser, site);
       await clickControl(page, 'export-size-2x');

@@ -82,7 +82,7 @@ pub struct MarblingApp {
     /// A PNG export in progress and the file name it will get.
     pub(crate) export: Option<(PngExport, String)>,
     /// Where this frame drew the panel's main controls (for `data-controls`).
-    pub(crate) controls: Vec<(&'static str, egui::Rect)>,
+    pub(crate) controls: Vec<(std::borrow::Cow<'static, str>, egui::Rect)>,
     /// Raised when the GPU device is lost.
     pub(crate) lost: LostFlag,
     /// GPU errors no error scope caught (shown instead of wgpu's panic).
@@ -450,8 +450,12 @@ impl MarblingApp {
     }
 
     /// Remembers where a named control was drawn (for the `data-controls` hook).
-    pub(crate) fn control(&mut self, name: &'static str, response: &egui::Response) {
-        self.controls.push((name, response.rect));
+    pub(crate) fn control(
+        &mut self,
+        name: impl Into<std::borrow::Cow<'static, str>>,
+        response: &egui::Response,
+    ) {
+        self.controls.push((name.into(), response.rect));
     }
 
     fn handle_shortcuts(&mut self, ctx: &egui::Context) {

@@ -390,6 +390,7 @@ impl MarblingApp {
         };
         const THUMB: egui::Vec2 = egui::vec2(80.0, 50.0);
         let mut open = None;
+        let mut drawn = Vec::new();
         let items: Vec<_> = EXAMPLES.iter().zip(uvs).collect();
         for row in items.chunks(3) {
             // All the row's thumbnails first, then its names: one draw call each (a
@@ -409,6 +410,7 @@ impl MarblingApp {
                             egui::StrokeKind::Outside,
                         );
                     }
+                    drawn.push((format!("gallery-{}", e.name), r.clone()));
                     if r.clicked() {
                         open = Some(*e);
                     }
@@ -422,6 +424,9 @@ impl MarblingApp {
                     });
                 }
             });
+        }
+        for (name, response) in drawn {
+            self.control(name, &response);
         }
         if let Some(e) = open {
             self.open_json(e.name, e.json.as_bytes());

@@ -74,8 +74,15 @@ mod tests {
             let x0 = (uv.min.x * w as f32).round() as usize;
             let y0 = (uv.min.y * h as f32).round() as usize;
             assert_eq!((uv.width() * w as f32).round() as usize, img.width as usize);
-            assert_eq!((uv.height() * h as f32).round() as usize, img.height as usize);
-            for (y, x) in [(0, 0), (img.height / 2, img.width / 3), (img.height - 1, img.width - 1)] {
+            assert_eq!(
+                (uv.height() * h as f32).round() as usize,
+                img.height as usize
+            );
+            for (y, x) in [
+                (0, 0),
+                (img.height / 2, img.width / 3),
+                (img.height - 1, img.width - 1),
+            ] {
                 let p = &img.pixels[((y * img.width + x) * 4) as usize..][..4];
                 let q = atlas.image.pixels[(y0 + y as usize) * w + x0 + x as usize];
                 assert_eq!(
