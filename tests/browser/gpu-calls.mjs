@@ -1,5 +1,6 @@
 // Diagnosis: the WebGPU calls the app makes per frame while hovering (or dragging).
-import { attr, launch, sheet } from './harness.mjs';
+import { attr, launch } from './harness.mjs';
+import { tineOverSheet } from './probe.mjs';
 const [mode = 'hover', ...extra] = process.argv.slice(2);
 const { browser, site } = await launch('webgpu', extra);
 const context = await browser.newContext({ viewport: { width: 1024, height: 768 }, deviceScaleFactor: 1 });
@@ -24,11 +25,7 @@ await context.addInitScript(() => {
 });
 const page = await context.newPage();
 await page.goto(site.url);
-await page.waitForFunction(() => document.body.dataset.previewReady === '1', null, { timeout: 240000 });
-const s = await sheet(page);
-await page.keyboard.press('3');
-const x = s.x + 100 * s.scale, y = s.y + 200 * s.scale;
-await page.mouse.move(x, y);
+const { x, y } = await tineOverSheet(page);
 if (mode === 'drag') await page.mouse.down();
 for (let i = 0; i < 5; i++) await page.mouse.move(x + 3 * i, y);
 await page.evaluate(() => { window.calls = {}; });

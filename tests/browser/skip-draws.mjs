@@ -2,7 +2,8 @@
 // when the draws of the render pipelines whose label matches SKIP (a regex) are skipped,
 // which bounds what each pipeline costs: node skip-draws.mjs SKIP [flags…]. SKIP is
 // matched against "LABEL COUNT" (COUNT: the draw's vertex or index count).
-import { attr, launch, sheet } from './harness.mjs';
+import { launch } from './harness.mjs';
+import { tineOverSheet, wiggle } from './probe.mjs';
 const [skip = '^$', ...extra] = process.argv.slice(2);
 const { browser, site } = await launch('webgpu', extra);
 const context = await browser.newContext({ viewport: { width: 1024, height: 768 }, deviceScaleFactor: 1 });
@@ -34,19 +35,10 @@ await context.addInitScript((skip) => {
 }, skip);
 const page = await context.newPage();
 await page.goto(site.url);
-await page.waitForFunction(() => document.body.dataset.previewReady === '1', null, { timeout: 240000 });
-const s = await sheet(page);
-await page.keyboard.press('3');
-const x = s.x + 100 * s.scale, y = s.y + 200 * s.scale;
-async function wiggle(ms) {
-  const f0 = Number(await attr(page, 'data-frames')); const t0 = Date.now(); let i = 0;
-  while (Date.now() - t0 < ms) { i++; await page.mouse.move(x + 3 * (i % 100), y + 30 * Math.sin(i / 10)); }
-  return (1000 * (Number(await attr(page, 'data-frames')) - f0)) / (Date.now() - t0);
-}
-await page.mouse.move(x, y);
-const hover = await wiggle(4000);
+const at = await tineOverSheet(page);
+const hover = await wiggle(page, at, 4000);
 await page.mouse.down();
-const drag = await wiggle(4000);
+const drag = await wiggle(page, at, 4000);
 await page.mouse.up();
 console.log(`skip /${skip}/ ${extra.join(' ')}: hover ${hover.toFixed(1)} frames/s, drag ${drag.toFixed(1)} frames/s; draws ${JSON.stringify(await page.evaluate(() => window.drawn))}`);
 await browser.close(); site.server.close();

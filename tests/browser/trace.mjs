@@ -2,22 +2,16 @@
 // prints the busiest threads and their top-level events per frame.
 // node trace.mjs [webgpu|webgl2] [hover|drag] OUT.json [flags…]
 import fs from 'node:fs';
-import { attr, launch, openPage, sheet } from './harness.mjs';
+import { launch, openPage } from './harness.mjs';
+import { tineOverSheet, wiggle } from './probe.mjs';
 const [backend = 'webgpu', mode = 'drag', out = '/tmp/trace.json', ...extra] = process.argv.slice(2);
 const { browser, site } = await launch(backend, extra);
 const { page } = await openPage(browser, site, '', { width: 1024, height: 768 });
-await page.waitForFunction(() => document.body.dataset.previewReady === '1', null, { timeout: 240000 });
-const s = await sheet(page);
-await page.keyboard.press('3');
-const x = s.x + 100 * s.scale, y = s.y + 200 * s.scale;
-await page.mouse.move(x, y);
+const at = await tineOverSheet(page);
 if (mode === 'drag') await page.mouse.down();
-let i = 0;
-for (const t0 = Date.now(); Date.now() - t0 < 2000;) { i++; await page.mouse.move(x + 3 * (i % 100), y + 30 * Math.sin(i / 10)); }
+await wiggle(page, at, 2000);
 await browser.startTracing(page, { path: out, categories: ['toplevel', 'gpu', 'viz', 'cc', 'benchmark', 'disabled-by-default-devtools.timeline', 'devtools.timeline', 'blink', 'skia', 'v8'] });
-const f0 = Number(await attr(page, 'data-frames'));
-for (const t0 = Date.now(); Date.now() - t0 < 3000;) { i++; await page.mouse.move(x + 3 * (i % 100), y + 30 * Math.sin(i / 10)); }
-const frames = Number(await attr(page, 'data-frames')) - f0;
+const frames = Math.round(3 * (await wiggle(page, at, 3000)));
 await browser.stopTracing();
 await browser.close(); site.server.close();
 const ev = JSON.parse(fs.readFileSync(out)).traceEvents;
