@@ -69,25 +69,19 @@ impl PreviewKind {
         }
     }
 
-    /// The WGSL definition of `pending_back` for this variant (appended to preview.wgsl).
-    pub fn pending_back(self) -> &'static str {
-        match self {
-            PreviewKind::Idle => {
-                "fn pending_back(a: vec4<f32>, b: vec4<f32>, p: vec2<f32>) -> vec3<f32> {\n    return vec3<f32>(p, 0.0);\n}\n"
-            }
-            PreviewKind::Drop => {
-                "fn pending_back(a: vec4<f32>, b: vec4<f32>, p: vec2<f32>) -> vec3<f32> {\n    return drop_back(a, b, p);\n}\n"
-            }
-            PreviewKind::Comb => {
-                "fn pending_back(a: vec4<f32>, b: vec4<f32>, p: vec2<f32>) -> vec3<f32> {\n    return comb_back(a, b, p);\n}\n"
-            }
-            PreviewKind::Wave => {
-                "fn pending_back(a: vec4<f32>, b: vec4<f32>, p: vec2<f32>) -> vec3<f32> {\n    return wave_back(a, b, p);\n}\n"
-            }
-            PreviewKind::Swirl => {
-                "fn pending_back(a: vec4<f32>, b: vec4<f32>, p: vec2<f32>) -> vec3<f32> {\n    return swirl_back(a, b, p);\n}\n"
-            }
-        }
+    /// The WGSL definition of `pending_back` for this variant (appended to preview.wgsl):
+    /// a call of this kind's inverse from common.wgsl, or no move at all when idle.
+    pub fn pending_back(self) -> String {
+        let body = match self {
+            PreviewKind::Idle => "vec3<f32>(p, 0.0)",
+            PreviewKind::Drop => "drop_back(a, b, p)",
+            PreviewKind::Comb => "comb_back(a, b, p)",
+            PreviewKind::Wave => "wave_back(a, b, p)",
+            PreviewKind::Swirl => "swirl_back(a, b, p)",
+        };
+        format!(
+            "fn pending_back(a: vec4<f32>, b: vec4<f32>, p: vec2<f32>) -> vec3<f32> {{\n    return {body};\n}}\n"
+        )
     }
 }
 

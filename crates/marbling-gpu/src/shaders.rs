@@ -50,7 +50,7 @@ pub const PREVIEW_WGSL: &str = concat!(
 /// The live-preview module for pending ops of `kind`: [`PREVIEW_WGSL`] + that kind's
 /// `pending_back`.
 pub fn preview_wgsl(kind: PreviewKind) -> String {
-    [PREVIEW_WGSL, kind.pending_back()].join("\n")
+    [PREVIEW_WGSL, &kind.pending_back()].join("\n")
 }
 
 /// Showing a rendered texture 1:1 in a pass: `shaders/common.wgsl` + `shaders/present.wgsl`.
