@@ -10,7 +10,7 @@ import { chromium } from 'playwright-core';
 import { PNG } from 'pngjs';
 
 export const ROOT = path.resolve(import.meta.dirname, '../..');
-export const DIST = path.join(ROOT, 'dist');
+export const DIST = process.env.MARBLING_DIST ?? path.join(ROOT, 'dist');
 export const MARBLING = process.env.MARBLING_BIN || path.join(ROOT, 'target/release/marbling');
 export const SHOTS = path.join(ROOT, 'docs/screenshots');
 const CHROMIUM = process.env.CHROMIUM || '/usr/bin/chromium';

@@ -4,7 +4,6 @@
 //! the ops. While a tool is dragged, the live preview is drawn straight into egui's pass
 //! over the sheet instead: one pass per frame, not two.
 
-use crate::margins::margins;
 use eframe::egui_wgpu;
 use egui::{Pos2, Rect};
 use marbling_core::{Antialias, Design, Op};
@@ -237,11 +236,13 @@ impl CanvasPlacement {
         Rect::from_min_max(Pos2::new(edge(x0), edge(y0)), Pos2::new(edge(x1), edge(y1)))
     }
 
-    fn placement(&self) -> Placement {
+    /// The present pass's placement in egui's target of `target_size` pixels.
+    fn placement(&self, target_size: [u32; 2]) -> Placement {
         Placement {
             origin: self.canvas_px.map(|v| v as f32),
             sheet: self.sheet_px.map(|v| v as f32),
             background: SURROUND,
+            target_size,
         }
     }
 }
@@ -266,7 +267,7 @@ impl egui_wgpu::CallbackTrait for CanvasCallback {
         &self,
         device: &wgpu::Device,
         queue: &wgpu::Queue,
-        _screen: &egui_wgpu::ScreenDescriptor,
+        screen: &egui_wgpu::ScreenDescriptor,
         encoder: &mut wgpu::CommandEncoder,
         resources: &mut egui_wgpu::CallbackResources,
     ) -> Vec<wgpu::CommandBuffer> {
@@ -316,8 +317,8 @@ impl egui_wgpu::CallbackTrait for CanvasCallback {
             status.error = outcome.err();
             status.drawn = Some(req.clone());
         }
-        if let Some((_, source)) = &gpu.target {
-            source.place(queue, &self.placement.placement());
+        if let Some((_, source)) = &mut gpu.target {
+            source.place(queue, &self.placement.placement(screen.size_in_pixels));
         }
         Vec::new()
     }
@@ -342,8 +343,9 @@ impl egui_wgpu::CallbackTrait for CanvasCallback {
             gpu.presenter.draw(pass, source);
             return;
         };
-        // The grey around the sheet from the present pipeline, the sheet from the preview
-        // pipeline: each pixel of the canvas is drawn once.
+        // The sheet from the preview pipeline, the grey around it in one frame draw of the
+        // present pipeline: each pixel of the canvas is drawn once, in two draw calls (a
+        // draw call costs a software GPU as much as a few hundred thousand pixels).
         let clip = info.clip_rect_in_pixels();
         let clip = Rect::from_min_size(
             Pos2::new(clip.left_px as f32, clip.top_px as f32),
@@ -358,13 +360,13 @@ impl egui_wgpu::CallbackTrait for CanvasCallback {
                 r.height() as u32,
             );
         };
-        for margin in margins(clip, sheet) {
-            scissor(pass, margin);
-            gpu.presenter.draw(pass, source);
-        }
         if sheet.is_positive() {
             scissor(pass, sheet);
             gpu.preview.draw(pass, cache);
+        }
+        if sheet != clip {
+            scissor(pass, clip);
+            gpu.presenter.draw_frame(pass, source);
         }
     }
 }

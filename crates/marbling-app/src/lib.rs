@@ -10,7 +10,6 @@ pub mod export;
 pub mod gallery;
 pub mod gpu_errors;
 pub mod history;
-mod margins;
 pub mod mode;
 mod noise_panel;
 pub mod noise_settings;

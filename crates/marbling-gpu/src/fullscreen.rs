@@ -1,4 +1,5 @@
-//! A render pipeline that draws one full-screen triangle (3 vertices, no buffers).
+//! Render pipelines without vertex buffers: one full-screen triangle (3 vertices), or
+//! geometry the vertex shader makes from its uniforms.
 
 /// Builds a pipeline with `vs_main`/`fs_main` of `module`, writing `format` without
 /// blending.
@@ -9,12 +10,31 @@ pub(crate) fn pipeline(
     module: &wgpu::ShaderModule,
     format: wgpu::TextureFormat,
 ) -> wgpu::RenderPipeline {
+    pipeline_with(
+        device,
+        label,
+        layout,
+        module,
+        ["vs_main", "fs_main"],
+        format,
+    )
+}
+
+/// [`pipeline`] with other entry points of `module`: `[vertex, fragment]`.
+pub(crate) fn pipeline_with(
+    device: &wgpu::Device,
+    label: &str,
+    layout: &wgpu::PipelineLayout,
+    module: &wgpu::ShaderModule,
+    [vertex, fragment]: [&str; 2],
+    format: wgpu::TextureFormat,
+) -> wgpu::RenderPipeline {
     device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
         label: Some(label),
         layout: Some(layout),
         vertex: wgpu::VertexState {
             module,
-            entry_point: Some("vs_main"),
+            entry_point: Some(vertex),
             compilation_options: Default::default(),
             buffers: &[],
         },
@@ -23,7 +43,7 @@ pub(crate) fn pipeline(
         multisample: wgpu::MultisampleState::default(),
         fragment: Some(wgpu::FragmentState {
             module,
-            entry_point: Some("fs_main"),
+            entry_point: Some(fragment),
             compilation_options: Default::default(),
             targets: &[Some(wgpu::ColorTargetState {
                 format,

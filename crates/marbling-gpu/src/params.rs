@@ -180,4 +180,8 @@ pub struct PresentParams {
     pub sheet: [f32; 4],
     /// The colour outside the sheet, as written to the target (RGBA, 0–1).
     pub background: [f32; 4],
+    /// The target's size in pixels (the frame draw's viewport).
+    pub target_size: [f32; 2],
+    /// Padding to the next 16 bytes.
+    pub _pad2: [u32; 2],
 }

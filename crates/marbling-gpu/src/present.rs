@@ -3,7 +3,9 @@
 //! flat background, nothing is filtered or blended (shaders/present.wgsl). The exact
 //! bytes of the render reach the screen, and on software GPUs (SwiftShader) one such
 //! pass over the canvas costs a fraction of egui's textured, blended image plus the
-//! fills around it (docs/BENCHMARKS.md, "Where the time goes").
+//! fills around it (docs/BENCHMARKS.md, "Where the time goes"). While the live preview
+//! draws the sheet, [`Presenter::draw_frame`] draws only the background around it, in
+//! one draw.
 
 use crate::bindings;
 use crate::params::PresentParams;
@@ -14,6 +16,8 @@ use crate::shaders::PRESENT_WGSL;
 pub struct Presenter {
     layout: wgpu::BindGroupLayout,
     pipeline: wgpu::RenderPipeline,
+    /// `vs_frame` + `fs_background`: the background around the sheet.
+    frame_pipeline: wgpu::RenderPipeline,
     linear_target: bool,
 }
 
@@ -23,6 +27,8 @@ pub struct PresentSource {
     uniform: wgpu::Buffer,
     bind_group: wgpu::BindGroup,
     linear_target: bool,
+    /// The target size of the last placement, pixels.
+    target_size: [f32; 2],
 }
 
 /// Where a texture goes in the target, in target pixels.
@@ -35,6 +41,9 @@ pub struct Placement {
     pub sheet: [f32; 4],
     /// The colour outside the sheet: sRGB bytes.
     pub background: [u8; 3],
+    /// The size of the target, pixels ([`Presenter::draw_frame`] covers all of it but
+    /// the sheet, within the pass's scissor rectangle).
+    pub target_size: [u32; 2],
 }
 
 impl Presenter {
@@ -48,7 +57,7 @@ impl Presenter {
         let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("marbling present"),
             entries: &[
-                bindings::uniform::<PresentParams>(0, fragment),
+                bindings::uniform::<PresentParams>(0, fragment | wgpu::ShaderStages::VERTEX),
                 bindings::texture_2d(1, fragment, false),
             ],
         });
@@ -60,9 +69,18 @@ impl Presenter {
             &module,
             format,
         );
+        let frame_pipeline = crate::fullscreen::pipeline_with(
+            device,
+            "marbling present (frame)",
+            &pipeline_layout,
+            &module,
+            ["vs_frame", "fs_background"],
+            format,
+        );
         Self {
             layout,
             pipeline,
+            frame_pipeline,
             linear_target: format.is_srgb(),
         }
     }
@@ -89,6 +107,7 @@ impl Presenter {
             uniform,
             bind_group,
             linear_target: self.linear_target,
+            target_size: [0.0; 2],
         }
     }
 
@@ -99,11 +118,27 @@ impl Presenter {
         pass.set_bind_group(0, &source.bind_group, &[]);
         pass.draw(0..3, 0..1);
     }
+
+    /// Records one draw of the background around the sheet of `source`'s placement into
+    /// `pass`: every pixel of the target that [`Presenter::draw`] would give the
+    /// background, within the pass's scissor rectangle, and no pixel of the sheet. It sets
+    /// the pass's viewport to the whole target.
+    pub fn draw_frame(&self, pass: &mut wgpu::RenderPass<'_>, source: &PresentSource) {
+        let [w, h] = source.target_size;
+        if w <= 0.0 || h <= 0.0 {
+            return;
+        }
+        pass.set_viewport(0.0, 0.0, w, h, 0.0, 1.0);
+        pass.set_pipeline(&self.frame_pipeline);
+        pass.set_bind_group(0, &source.bind_group, &[]);
+        pass.draw(0..24, 0..1);
+    }
 }
 
 impl PresentSource {
     /// Places the texture for the next draws.
-    pub fn place(&self, queue: &wgpu::Queue, placement: &Placement) {
+    pub fn place(&mut self, queue: &wgpu::Queue, placement: &Placement) {
+        self.target_size = placement.target_size.map(|v| v as f32);
         queue.write_buffer(
             &self.uniform,
             0,
@@ -128,6 +163,8 @@ impl Placement {
             _pad: 0,
             sheet: self.sheet,
             background: [bg[0], bg[1], bg[2], 1.0],
+            target_size: self.target_size.map(|v| v as f32),
+            _pad2: [0; 2],
         }
     }
 }

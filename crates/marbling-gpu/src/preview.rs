@@ -25,13 +25,14 @@ pub const CACHE_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8UnormSrg
 /// How much finer than the view the cache is rendered, when the device allows.
 pub const CACHE_FACTOR: f64 = 2.0;
 
-/// The preview pipelines (one per [`PreviewKind`]) for one target format, and the exact
-/// pipeline that fills caches.
+/// The preview pipelines (per [`PreviewKind`], one taking the antialiasing's samples and
+/// one taking a single sample) for one target format, and the exact pipeline that fills
+/// caches.
 #[derive(Debug)]
 pub struct PreviewRenderer {
     layout: wgpu::BindGroupLayout,
-    /// Indexed by [`PreviewKind::index`].
-    pipelines: Vec<wgpu::RenderPipeline>,
+    /// Indexed by [`PreviewKind::index`]: `[fs_main, fs_one_sample]`.
+    pipelines: Vec<[wgpu::RenderPipeline; 2]>,
     sampler: wgpu::Sampler,
     cache_renderer: ExactRenderer,
     format: wgpu::TextureFormat,
@@ -50,6 +51,8 @@ pub struct PreviewCache {
     encode_srgb: bool,
     /// The pipeline variant the next draw uses (the pending op's kind).
     kind: PreviewKind,
+    /// True when the next draw takes one sample per pixel (`fs_one_sample`).
+    one_sample: bool,
 }
 
 impl PreviewRenderer {
@@ -77,13 +80,16 @@ impl PreviewRenderer {
                     label: Some(&format!("marbling preview.wgsl ({})", kind.name())),
                     source: wgpu::ShaderSource::Wgsl(preview_wgsl(kind).into()),
                 });
-                crate::fullscreen::pipeline(
-                    device,
-                    &format!("marbling preview ({})", kind.name()),
-                    &pipeline_layout,
-                    &module,
-                    format,
-                )
+                ["fs_main", "fs_one_sample"].map(|fragment| {
+                    crate::fullscreen::pipeline_with(
+                        device,
+                        &format!("marbling preview ({}, {fragment})", kind.name()),
+                        &pipeline_layout,
+                        &module,
+                        ["vs_main", fragment],
+                        format,
+                    )
+                })
             })
             .collect();
         let sampler = device.create_sampler(&wgpu::SamplerDescriptor {
@@ -170,6 +176,7 @@ impl PreviewRenderer {
             max_scale,
             encode_srgb: !self.format.is_srgb(),
             kind: PreviewKind::Idle,
+            one_sample: false,
         };
         out.set_frame(queue, None, [0.0; 2], view_scale, antialias);
         Ok(out)
@@ -178,7 +185,12 @@ impl PreviewRenderer {
     /// Records a full-target preview draw of `cache` into `pass` (target of this
     /// renderer's format).
     pub fn draw(&self, pass: &mut wgpu::RenderPass<'_>, cache: &PreviewCache) {
-        pass.set_pipeline(&self.pipelines[cache.kind.index()]);
+        let [sampled, one_sample] = &self.pipelines[cache.kind.index()];
+        pass.set_pipeline(if cache.one_sample {
+            one_sample
+        } else {
+            sampled
+        });
         pass.set_bind_group(0, &cache.bind_group, &[]);
         pass.draw(0..3, 0..1);
     }
@@ -207,6 +219,7 @@ impl PreviewCache {
             antialias,
             self.encode_srgb,
         );
+        self.one_sample = params.sample_count == 1;
         queue.write_buffer(&self.uniform, 0, bytemuck::bytes_of(&params));
     }
 

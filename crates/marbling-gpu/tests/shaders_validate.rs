@@ -32,7 +32,14 @@ fn entry_points(module: &naga::Module) -> Vec<&str> {
 fn every_shader_parses_and_validates() {
     for (name, source) in all() {
         let module = validate(&name, &source);
-        assert_eq!(entry_points(&module), ["vs_main", "fs_main"], "{name}");
+        let expected: &[&str] = if name.starts_with("preview") {
+            &["vs_main", "fs_main", "fs_one_sample"]
+        } else if name == "present" {
+            &["vs_main", "fs_main", "vs_frame", "fs_background"]
+        } else {
+            &["vs_main", "fs_main"]
+        };
+        assert_eq!(entry_points(&module), expected, "{name}");
     }
     for (name, source) in compute_modules() {
         let module = validate(name, &source);
@@ -81,10 +88,8 @@ fn every_entry_point_translates_to_webgl2_glsl() {
             },
             ..Default::default()
         };
-        for (stage, entry) in [
-            (naga::ShaderStage::Vertex, "vs_main"),
-            (naga::ShaderStage::Fragment, "fs_main"),
-        ] {
+        for entry in &module.entry_points {
+            let (stage, entry) = (entry.stage, entry.name.as_str());
             let pipeline = glsl::PipelineOptions {
                 shader_stage: stage,
                 entry_point: entry.to_owned(),
