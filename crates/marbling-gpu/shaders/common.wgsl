@@ -92,6 +92,13 @@ fn unpack_srgb(packed: f32) -> vec3<f32> {
     return vec3<f32>(f32((v >> 16u) & 255u), f32((v >> 8u) & 255u), f32(v & 255u)) / 255.0;
 }
 
+// sRGB-encoded value (0..=1) → linear light (IEC 61966-2-1), per channel.
+fn srgb_to_linear(s: vec3<f32>) -> vec3<f32> {
+    let lo = s / 12.92;
+    let hi = pow((s + 0.055) / 1.055, vec3<f32>(2.4));
+    return select(hi, lo, s <= vec3<f32>(0.04045));
+}
+
 // Linear light (0..=1) → sRGB-encoded value in 0..=1 (IEC 61966-2-1), per channel.
 fn linear_to_srgb(l: vec3<f32>) -> vec3<f32> {
     let c = clamp(l, vec3<f32>(0.0), vec3<f32>(1.0));

@@ -34,13 +34,6 @@ fn vs_main(@builtin(vertex_index) vertex: u32) -> @builtin(position) vec4<f32> {
     return fullscreen_position(vertex);
 }
 
-// sRGB-encoded value (0..=1) → linear light (IEC 61966-2-1), per channel.
-fn srgb_to_linear(s: vec3<f32>) -> vec3<f32> {
-    let lo = s / 12.92;
-    let hi = pow((s + 0.055) / 1.055, vec3<f32>(2.4));
-    return select(hi, lo, s <= vec3<f32>(0.04045));
-}
-
 @fragment
 fn fs_main(@builtin(position) position: vec4<f32>) -> @location(0) vec4<f32> {
     let p = position.xy;

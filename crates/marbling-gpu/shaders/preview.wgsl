@@ -1,10 +1,13 @@
 // Live preview while a tool is dragged: the committed design comes from a cache
 // texture (rendered exactly by render.wgsl at ≥ 2× the view resolution, stored as
-// Rgba8UnormSrgb so bilinear filtering happens in linear light); only the pending op
-// is walked here (common.wgsl is prepended). An approximation, used only while dragging.
+// Rgba8Unorm holding sRGB-encoded bytes, filtered bilinearly as they are); only the
+// pending op is walked here (common.wgsl is prepended). An approximation, used only
+// while dragging.
 //
 // `pending_back(a, b, p)` is appended by the host (src/preview_kind.rs): one pipeline per
-// op kind, each calling only that kind's inverse from common.wgsl. A software GPU runs
+// op kind, each calling only that kind's inverse from common.wgsl. So is
+// `encoded_to_target(c)` (src/shaders.rs): sRGB-encoded colour → what the target takes
+// (the colour itself for …Unorm targets, linear light for …UnormSrgb). A software GPU runs
 // every case of a switch for every pixel, even when all pixels take the same case.
 //
 // Two fragment entry points: `fs_main` takes `sample_count` samples per pixel (the
@@ -43,14 +46,14 @@ fn vs_main(@builtin(vertex_index) vertex: u32) -> @builtin(position) vec4<f32> {
     return fullscreen_position(vertex);
 }
 
-// Linear colour at design point `p0`: the pending op's ink, or the cache (bilinear,
-// clamped to the canvas edge) at the point the pending op moved here.
+// sRGB-encoded colour at design point `p0`: the pending op's ink, or the cache
+// (bilinear, clamped to the canvas edge) at the point the pending op moved here.
 fn shade(p0: vec2<f32>) -> vec3<f32> {
     var p = p0;
     if params.has_pending != 0u {
         let r = pending_back(params.pending_a, params.pending_b, p);
         if r.z > 0.0 {
-            return params.pending_b.rgb;
+            return unpack_srgb(params.pending_b.w);
         }
         p = r.xy;
     }
@@ -63,7 +66,8 @@ fn fs_main(@builtin(position) position: vec4<f32>) -> @location(0) vec4<f32> {
     var acc = vec3<f32>(0.0);
     for (var i = 0u; i < params.sample_count; i++) {
         let s = params.samples[i];
-        acc += s.z * shade(params.view_origin + (pixel + s.xy) * params.view_inv_scale);
+        let p = params.view_origin + (pixel + s.xy) * params.view_inv_scale;
+        acc += s.z * srgb_to_linear(shade(p));
     }
     if params.encode_srgb == 0u {
         return vec4<f32>(acc, 1.0);
@@ -72,12 +76,13 @@ fn fs_main(@builtin(position) position: vec4<f32>) -> @location(0) vec4<f32> {
 }
 
 // One sample at the pixel's centre (the same point `fs_main` takes with the one-sample
-// pattern): straight-line code, the pending op's ink chosen with `select`.
+// pattern): straight-line code, the pending op's ink chosen with `select`, and for
+// …Unorm targets no sRGB conversion at all (the cache holds encoded bytes).
 @fragment
 fn fs_one_sample(@builtin(position) position: vec4<f32>) -> @location(0) vec4<f32> {
     let p = params.view_origin + position.xy * params.view_inv_scale;
     let r = pending_back(params.pending_a, params.pending_b, p);
     let cached = textureSampleLevel(cache, cache_sampler, r.xy / params.design_size, 0.0).rgb;
-    let c = select(cached, params.pending_b.rgb, r.z > 0.0);
-    return vec4<f32>(select(c, linear_to_srgb(c), params.encode_srgb != 0u), 1.0);
+    let c = select(cached, unpack_srgb(params.pending_b.w), r.z > 0.0);
+    return vec4<f32>(encoded_to_target(c), 1.0);
 }

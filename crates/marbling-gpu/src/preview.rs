@@ -2,8 +2,8 @@
 //! cache (rendered exactly once at ≥ 2× the view resolution) with only the pending op
 //! walked per pixel on top (shaders/preview.wgsl).
 //!
-//! This is an approximation (the committed design is resampled bilinearly, in linear
-//! light, and points the pending op pulls in from outside the canvas take the canvas
+//! This is an approximation (the committed design is resampled bilinearly, in gamma
+//! space, see [`CACHE_FORMAT`], and points the pending op pulls in from outside the canvas take the canvas
 //! edge's colour). It is meant only for frames while dragging: when the op is committed
 //! or the view changes, draw the exact render ([`crate::ExactRenderer`]) instead and
 //! rebuild the cache for the new committed design (or new zoom, see
@@ -19,8 +19,12 @@ use crate::shaders::preview_wgsl;
 use crate::target::RenderTarget;
 use marbling_core::{Antialias, Design, Op, output_size};
 
-/// The cache's format: filtering and blending an sRGB texture happen in linear light.
-pub const CACHE_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8UnormSrgb;
+/// The cache's format, holding sRGB-encoded bytes (the exact renderer encodes them, as
+/// for the canvas). The preview filters them bilinearly as they are, in gamma space: at
+/// 2× the view's resolution the difference from filtering in linear light is a faint
+/// darkening of some edge pixels while dragging, and it spares the one-sample preview
+/// (slow devices) any sRGB decoding or encoding per pixel (docs/BENCHMARKS.md).
+pub const CACHE_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8Unorm;
 
 /// How much finer than the view the cache is rendered, when the device allows.
 pub const CACHE_FACTOR: f64 = 2.0;
@@ -78,7 +82,7 @@ impl PreviewRenderer {
             .map(|kind| {
                 let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
                     label: Some(&format!("marbling preview.wgsl ({})", kind.name())),
-                    source: wgpu::ShaderSource::Wgsl(preview_wgsl(kind).into()),
+                    source: wgpu::ShaderSource::Wgsl(preview_wgsl(kind, format.is_srgb()).into()),
                 });
                 ["fs_main", "fs_one_sample"].map(|fragment| {
                     crate::fullscreen::pipeline_with(

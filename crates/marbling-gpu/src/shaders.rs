@@ -47,10 +47,20 @@ pub const PREVIEW_WGSL: &str = concat!(
     include_str!("../shaders/preview.wgsl")
 );
 
-/// The live-preview module for pending ops of `kind`: [`PREVIEW_WGSL`] + that kind's
-/// `pending_back`.
-pub fn preview_wgsl(kind: PreviewKind) -> String {
-    [PREVIEW_WGSL, &kind.pending_back()].join("\n")
+/// The live-preview module for pending ops of `kind` drawing into a `…UnormSrgb` target
+/// (`srgb_target`) or a `…Unorm` one: [`PREVIEW_WGSL`] + that kind's `pending_back` +
+/// `encoded_to_target`, which converts the cache's sRGB-encoded colours for the target
+/// (not at all for `…Unorm` targets, so the one-sample preview does no conversion there).
+pub fn preview_wgsl(kind: PreviewKind, srgb_target: bool) -> String {
+    let to_target = if srgb_target {
+        "srgb_to_linear(c)"
+    } else {
+        "c"
+    };
+    let encoded_to_target = format!(
+        "fn encoded_to_target(c: vec3<f32>) -> vec3<f32> {{\n    return {to_target};\n}}\n"
+    );
+    [PREVIEW_WGSL, &kind.pending_back(), &encoded_to_target].join("\n")
 }
 
 /// Showing a rendered texture 1:1 in a pass: `shaders/common.wgsl` + `shaders/present.wgsl`.
@@ -77,7 +87,12 @@ pub fn all() -> Vec<(String, String)> {
         ("render-plain".to_owned(), RENDER_PLAIN_WGSL.to_owned()),
     ];
     for kind in PreviewKind::ALL {
-        out.push((format!("preview-{}", kind.name()), preview_wgsl(kind)));
+        for (srgb_target, target) in [(false, "unorm"), (true, "srgb")] {
+            out.push((
+                format!("preview-{}-{target}", kind.name()),
+                preview_wgsl(kind, srgb_target),
+            ));
+        }
     }
     out.push(("present".to_owned(), PRESENT_WGSL.to_owned()));
     out

@@ -67,7 +67,7 @@ fn render_params_match_wgsl() {
 #[test]
 fn preview_params_match_wgsl() {
     check(
-        &preview_wgsl(PreviewKind::Comb),
+        &preview_wgsl(PreviewKind::Comb, false),
         "PreviewParams",
         &[
             ("pending_a", offset_of!(PreviewParams, pending_a)),
@@ -156,7 +156,7 @@ fn struct_depth(module: &naga::Module, ty: naga::Handle<naga::Type>) -> u32 {
 #[test]
 fn structs_nest_within_webgl2_limits() {
     let render = render_wgsl();
-    let preview = preview_wgsl(PreviewKind::Swirl);
+    let preview = preview_wgsl(PreviewKind::Swirl, false);
     for (name, source) in [
         ("render.wgsl (surface)", render.as_str()),
         (
