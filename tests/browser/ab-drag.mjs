@@ -7,23 +7,12 @@ import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
-import { MARBLING, attr, launch, openPage, serve, sheet } from './harness.mjs';
+import { MARBLING, launch, openPage, serve, sheet } from './harness.mjs';
+import { sweep as wiggle } from './probe.mjs';
 
 const [distA, distB, runs = '3', ...flags] = process.argv.slice(2);
 const design = path.join(os.tmpdir(), `marbling-ab-${process.pid}.json`);
 execFileSync(MARBLING, ['random', '--ops', '1000', '--size', '1024x768', '--seed', '11', '--mix', 'mixed', '-o', design]);
-
-async function wiggle(page, x, y, ms) {
-  const f0 = Number(await attr(page, 'data-frames'));
-  const t0 = Date.now();
-  let i = 0;
-  while (Date.now() - t0 < ms) {
-    i++;
-    await page.mouse.move(x + 5 * (i % 100), y + 40 * Math.sin(i / 10));
-  }
-  await page.mouse.move(x, y);
-  return (1000 * (Number(await attr(page, 'data-frames')) - f0)) / (Date.now() - t0);
-}
 
 async function run(dist) {
   const { browser, site: own } = await launch('webgpu', flags);

@@ -19,6 +19,7 @@ import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import { MARBLING, READY_MS, attr, launch, openPage, sheet } from './harness.mjs';
+import { sweep as wiggle } from './probe.mjs';
 
 const design = path.join(os.tmpdir(), `marbling-perf-${process.pid}.json`);
 
@@ -28,23 +29,6 @@ async function work(page) {
     const [k, v] = kv.split('=');
     return [k, Number(v)];
   }));
-}
-
-/** Moves the pointer along a wave for `ms`, within 500 × 80 px right of and around
- *  (x, y) (inside the sheet), and back to (x, y); returns the app's frame rate
- *  meanwhile (frames counted by the app, data-frames) in frames per second. */
-async function wiggle(page, x, y, ms) {
-  const f0 = Number(await attr(page, 'data-frames'));
-  const t0 = Date.now();
-  let i = 0;
-  while (Date.now() - t0 < ms) {
-    i++;
-    await page.mouse.move(x + 5 * (i % 100), y + 40 * Math.sin(i / 10));
-  }
-  // Where the next gesture starts (a press beyond the sheet would start no drag).
-  await page.mouse.move(x, y);
-  const frames = Number(await attr(page, 'data-frames')) - f0;
-  return (1000 * frames) / (Date.now() - t0);
 }
 
 const SETUPS = [

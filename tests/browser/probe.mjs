@@ -1,6 +1,7 @@
-// Shared by the diagnosis scripts (drag-rate, skip-draws, trace, gpu-calls; not run by
-// npm test): the gallery design with its live-preview cache built, the tine tool
-// chosen, and the pointer wiggled over the sheet.
+// Shared by the diagnosis scripts (drag-rate, skip-draws, trace, gpu-calls, ab-drag;
+// not run by npm test): the gallery design with its live-preview cache built, the tine
+// tool chosen, and the pointer wiggled over the sheet; and the perf test's gesture
+// (`sweep`, used by perf.test.mjs too).
 import { attr, sheet } from './harness.mjs';
 
 /** Waits for the preview cache of the shown design, picks the tine tool (key 3) and
@@ -26,4 +27,22 @@ export async function wiggle(page, { x, y }, ms) {
     await page.mouse.move(x + 3 * (i % 100), y + 30 * Math.sin(i / 10));
   }
   return (1000 * (Number(await attr(page, 'data-frames')) - f0)) / (Date.now() - t0);
+}
+
+/** The perf test's gesture (perf.test.mjs, ab-drag.mjs): moves the pointer along a wave
+ *  for `ms`, within 500 × 80 px right of and around (x, y) (inside the sheet), and back
+ *  to (x, y); returns the app's frame rate meanwhile (frames counted by the app,
+ *  data-frames) in frames per second. */
+export async function sweep(page, x, y, ms) {
+  const f0 = Number(await attr(page, 'data-frames'));
+  const t0 = Date.now();
+  let i = 0;
+  while (Date.now() - t0 < ms) {
+    i++;
+    await page.mouse.move(x + 5 * (i % 100), y + 40 * Math.sin(i / 10));
+  }
+  // Where the next gesture starts (a press beyond the sheet would start no drag).
+  await page.mouse.move(x, y);
+  const frames = Number(await attr(page, 'data-frames')) - f0;
+  return (1000 * frames) / (Date.now() - t0);
 }
