@@ -343,9 +343,10 @@ impl egui_wgpu::CallbackTrait for CanvasCallback {
             gpu.presenter.draw(pass, source);
             return;
         };
-        // The sheet from the preview pipeline, the grey around it in one frame draw of the
-        // present pipeline: each pixel of the canvas is drawn once, in two draw calls (a
-        // draw call costs a software GPU as much as a few hundred thousand pixels).
+        // The sheet from the preview pipeline, the grey around it in one draw of flat
+        // colour (the present pipeline's frame): each pixel of the canvas is drawn once,
+        // and the grey pixels do not run the present shader's texture path, which a
+        // software GPU would run in full for each of them.
         let clip = info.clip_rect_in_pixels();
         let clip = Rect::from_min_size(
             Pos2::new(clip.left_px as f32, clip.top_px as f32),

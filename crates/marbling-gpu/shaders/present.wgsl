@@ -4,9 +4,9 @@
 // fraction of a general textured, blended quad. `common.wgsl` is prepended.
 //
 // `vs_frame` + `fs_background` draw only the background around the sheet, in one draw
-// (while the live preview draws the sheet itself): on a software GPU every draw call
-// costs about as much as a few hundred thousand pixels, so four scissored strips cost
-// four times what one frame of four quads does.
+// of flat colour (while the live preview draws the sheet itself). A software GPU runs
+// every branch of `fs_main` for every pixel, texture load and sRGB decode included, so
+// the background is cheaper from a shader that has none.
 
 // Keep in sync with `PresentParams` in src/params.rs (checked by tests/layout.rs).
 struct PresentParams {
