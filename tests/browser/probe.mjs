@@ -16,30 +16,24 @@ export async function tineOverSheet(page) {
   return { x, y };
 }
 
-/** Moves the pointer along a wave around (x, y) for `ms`; returns the app's frames per
- *  second meanwhile (data-frames). */
+/** The diagnosis scripts' gesture: `sweep` in a smaller wave (3 px steps, ±30 px)
+ *  around (x, y) for `ms`; returns the app's frames per second meanwhile. */
 export async function wiggle(page, { x, y }, ms) {
-  const f0 = Number(await attr(page, 'data-frames'));
-  const t0 = Date.now();
-  let i = 0;
-  while (Date.now() - t0 < ms) {
-    i++;
-    await page.mouse.move(x + 3 * (i % 100), y + 30 * Math.sin(i / 10));
-  }
-  return (1000 * (Number(await attr(page, 'data-frames')) - f0)) / (Date.now() - t0);
+  return sweep(page, x, y, ms, 3, 30);
 }
 
 /** The perf test's gesture (perf.test.mjs, ab-drag.mjs): moves the pointer along a wave
- *  for `ms`, within 500 × 80 px right of and around (x, y) (inside the sheet), and back
- *  to (x, y); returns the app's frame rate meanwhile (frames counted by the app,
- *  data-frames) in frames per second. */
-export async function sweep(page, x, y, ms) {
+ *  for `ms`, `step` px a move to the right (100 moves, then back to x) and ±`amplitude`
+ *  px up and down (by default within 500 × 80 px right of and around (x, y), inside the
+ *  sheet), and back to (x, y); returns the app's frame rate meanwhile (frames counted
+ *  by the app, data-frames) in frames per second. */
+export async function sweep(page, x, y, ms, step = 5, amplitude = 40) {
   const f0 = Number(await attr(page, 'data-frames'));
   const t0 = Date.now();
   let i = 0;
   while (Date.now() - t0 < ms) {
     i++;
-    await page.mouse.move(x + 5 * (i % 100), y + 40 * Math.sin(i / 10));
+    await page.mouse.move(x + step * (i % 100), y + amplitude * Math.sin(i / 10));
   }
   // Where the next gesture starts (a press beyond the sheet would start no drag).
   await page.mouse.move(x, y);
