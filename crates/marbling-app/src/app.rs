@@ -97,6 +97,8 @@ pub struct MarblingApp {
     pub(crate) noise_shown: Option<(NoiseSettings, f64)>,
     /// Statistics of the shown noise (`Some(None)`: none can be computed).
     pub(crate) noise_analysis: Option<Option<NoiseAnalysis>>,
+    /// The side panel's last rendering, shown while the panel does not change.
+    pub(crate) panel_cache: crate::panel_cache::PanelCache,
 }
 
 /// Default canvas of a new design, design pixels.
@@ -186,6 +188,7 @@ impl MarblingApp {
             noise: NoiseSettings::default(),
             noise_shown: None,
             noise_analysis: None,
+            panel_cache: Default::default(),
         }
     }
 
@@ -605,8 +608,13 @@ impl MarblingApp {
             (
                 "data-gpu-work",
                 Some(format!(
-                    "exact={},preview={},caches={},preview_samples={}",
-                    work.exact, work.preview, work.caches, preview_samples
+                    "exact={},preview={},caches={},preview_samples={},panel_copies={},panel_renders={}",
+                    work.exact,
+                    work.preview,
+                    work.caches,
+                    preview_samples,
+                    self.panel_cache.copies,
+                    self.panel_cache.renders
                 )),
             ),
             ("data-controls", Some(controls)),
@@ -627,9 +635,11 @@ impl MarblingApp {
 }
 
 impl eframe::App for MarblingApp {
-    /// The panels' colour: the panels themselves are drawn unfilled over it.
-    fn clear_color(&self, visuals: &egui::Visuals) -> [f32; 4] {
-        visuals.panel_fill.to_normalized_gamma_f32()
+    /// The grey around the sheet: the canvas is drawn unfilled over it, and the canvas's
+    /// paint callback draws only the sheet.
+    fn clear_color(&self, _visuals: &egui::Visuals) -> [f32; 4] {
+        let [r, g, b] = crate::canvas_gpu::SURROUND;
+        egui::Color32::from_rgb(r, g, b).to_normalized_gamma_f32()
     }
 
     fn ui(&mut self, ui: &mut egui::Ui, frame: &mut eframe::Frame) {
@@ -649,11 +659,15 @@ impl eframe::App for MarblingApp {
         self.advance_export(frame, &ctx);
         self.follow_noise();
         self.controls.clear();
-        // The panels have no fills: `clear_color` paints them. On a software GPU each
-        // full-window fill costs milliseconds a frame (docs/BENCHMARKS.md).
-        let unfilled = |f: egui::Frame| f.fill(egui::Color32::TRANSPARENT);
+        // The window is cleared to the grey around the sheet and the canvas has no fill,
+        // so no canvas pixel is drawn twice: on a software GPU each full-window fill costs
+        // milliseconds a frame (docs/BENCHMARKS.md). The side panel's fill costs nothing
+        // while the panel is unchanged: it is part of the panel's cached texture.
+        let layer = ui.layer_id();
+        let shape_count = || ctx.graphics(|g| g.get(layer).map_or(0, |l| l.next_idx().0));
+        let panel_start = shape_count();
         egui::Panel::left("marbling_tools")
-            .frame(unfilled(egui::Frame::side_top_panel(ui.style())))
+            .frame(egui::Frame::side_top_panel(ui.style()))
             .resizable(true)
             // The dark canvas marks the edge; a line would be one more draw call a frame.
             .show_separator_line(false)
@@ -662,12 +676,20 @@ impl eframe::App for MarblingApp {
             .show(ui, |ui| {
                 egui::ScrollArea::vertical().show(ui, |ui| self.side_panel(ui, frame));
             });
+        let clear_color = eframe::App::clear_color(self, &ctx.global_style().visuals);
+        self.panel_cache.substitute(
+            &ctx,
+            frame.wgpu_render_state().map(Into::into),
+            layer,
+            panel_start..shape_count(),
+            clear_color,
+        );
         egui::Panel::bottom("marbling_status")
-            .frame(unfilled(egui::Frame::side_top_panel(ui.style())))
+            .frame(egui::Frame::side_top_panel(ui.style()))
             .show_separator_line(false)
             .show(ui, |ui| self.status_bar(ui));
         egui::CentralPanel::default()
-            .frame(unfilled(egui::Frame::central_panel(ui.style())))
+            .frame(egui::Frame::central_panel(ui.style()).fill(egui::Color32::TRANSPARENT))
             .show(ui, |ui| self.canvas(ui, frame));
         if let Some(e) = self.status.lock().ok().and_then(|s| s.error.clone())
             && self.message.as_ref().is_none_or(|m| m.text != e)

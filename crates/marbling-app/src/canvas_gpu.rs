@@ -1,7 +1,7 @@
 //! The canvas's GPU side. The exact render is drawn into an offscreen texture only when
 //! the design or the view changes, and every frame copies that texture 1:1 into egui's
-//! pass (with the grey around the sheet) in one cheap draw, so hovering never re-walks
-//! the ops. While a tool is dragged, the live preview is drawn straight into egui's pass
+//! pass over the sheet in one cheap draw (the grey around it is the window's clear
+//! colour), so hovering never re-walks the ops. While a tool is dragged, the live preview is drawn straight into egui's pass
 //! over the sheet instead: one pass per frame, not two.
 
 use eframe::egui_wgpu;
@@ -236,13 +236,12 @@ impl CanvasPlacement {
         Rect::from_min_max(Pos2::new(edge(x0), edge(y0)), Pos2::new(edge(x1), edge(y1)))
     }
 
-    /// The present pass's placement in egui's target of `target_size` pixels.
-    fn placement(&self, target_size: [u32; 2]) -> Placement {
+    /// The present pass's placement in egui's target.
+    fn placement(&self) -> Placement {
         Placement {
             origin: self.canvas_px.map(|v| v as f32),
             sheet: self.sheet_px.map(|v| v as f32),
             background: SURROUND,
-            target_size,
         }
     }
 }
@@ -267,7 +266,7 @@ impl egui_wgpu::CallbackTrait for CanvasCallback {
         &self,
         device: &wgpu::Device,
         queue: &wgpu::Queue,
-        screen: &egui_wgpu::ScreenDescriptor,
+        _screen: &egui_wgpu::ScreenDescriptor,
         encoder: &mut wgpu::CommandEncoder,
         resources: &mut egui_wgpu::CallbackResources,
     ) -> Vec<wgpu::CommandBuffer> {
@@ -318,7 +317,7 @@ impl egui_wgpu::CallbackTrait for CanvasCallback {
             status.drawn = Some(req.clone());
         }
         if let Some((_, source)) = &mut gpu.target {
-            source.place(queue, &self.placement.placement(screen.size_in_pixels));
+            source.place(queue, &self.placement.placement());
         }
         Vec::new()
     }
@@ -335,39 +334,30 @@ impl egui_wgpu::CallbackTrait for CanvasCallback {
         let Some((_, source)) = &gpu.target else {
             return;
         };
-        let preview = gpu
-            .cache
-            .as_ref()
-            .filter(|(key, _)| self.request.pending.is_some() && *key == self.request.design_key);
-        let Some((_, cache)) = preview else {
-            gpu.presenter.draw(pass, source);
-            return;
-        };
-        // The sheet from the preview pipeline, the grey around it in one draw of flat
-        // colour (the present pipeline's frame): each pixel of the canvas is drawn once,
-        // and the grey pixels do not run the present shader's texture path, which a
-        // software GPU would run in full for each of them.
+        // Only the sheet's pixels are drawn: the grey around it is the window's clear
+        // colour (`MarblingApp::clear_color`), so no pixel is drawn twice.
         let clip = info.clip_rect_in_pixels();
         let clip = Rect::from_min_size(
             Pos2::new(clip.left_px as f32, clip.top_px as f32),
             egui::vec2(clip.width_px as f32, clip.height_px as f32),
         );
         let sheet = self.placement.sheet_pixels().intersect(clip);
-        let scissor = |pass: &mut wgpu::RenderPass<'static>, r: Rect| {
-            pass.set_scissor_rect(
-                r.min.x as u32,
-                r.min.y as u32,
-                r.width() as u32,
-                r.height() as u32,
-            );
-        };
-        if sheet.is_positive() {
-            scissor(pass, sheet);
-            gpu.preview.draw(pass, cache);
+        if !sheet.is_positive() {
+            return;
         }
-        if sheet != clip {
-            scissor(pass, clip);
-            gpu.presenter.draw_frame(pass, source);
+        pass.set_scissor_rect(
+            sheet.min.x as u32,
+            sheet.min.y as u32,
+            sheet.width() as u32,
+            sheet.height() as u32,
+        );
+        let preview = gpu
+            .cache
+            .as_ref()
+            .filter(|(key, _)| self.request.pending.is_some() && *key == self.request.design_key);
+        match preview {
+            Some((_, cache)) => gpu.preview.draw(pass, cache),
+            None => gpu.presenter.draw(pass, source),
         }
     }
 }

@@ -16,6 +16,7 @@ pub mod noise_settings;
 mod overlay;
 pub mod palettes;
 mod panel;
+mod panel_cache;
 pub mod platform;
 pub mod playback;
 pub mod preview_quality;

@@ -1,5 +1,4 @@
-//! Render pipelines without vertex buffers: one full-screen triangle (3 vertices), or
-//! geometry the vertex shader makes from its uniforms.
+//! Render pipelines without vertex buffers: one full-screen triangle (3 vertices).
 
 /// Builds a pipeline with `vs_main`/`fs_main` of `module`, writing `format` without
 /// blending.

@@ -172,7 +172,8 @@ mod tests {
 pub struct PresentParams {
     /// Target pixel (x, y) of the texture's texel (0, 0).
     pub origin: [f32; 2],
-    /// 1: decode the texels from sRGB (…UnormSrgb targets); 0: write them as they are.
+    /// 1: decode the texels from sRGB (sRGB-encoded values for a …UnormSrgb target); 0:
+    /// write them as they are.
     pub linear_target: u32,
     /// Padding to the next 16 bytes.
     pub _pad: u32,
@@ -180,8 +181,4 @@ pub struct PresentParams {
     pub sheet: [f32; 4],
     /// The colour outside the sheet, as written to the target (RGBA, 0–1).
     pub background: [f32; 4],
-    /// The target's size in pixels (the frame draw's viewport).
-    pub target_size: [f32; 2],
-    /// Padding to the next 16 bytes.
-    pub _pad2: [u32; 2],
 }

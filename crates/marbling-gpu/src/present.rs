@@ -3,9 +3,7 @@
 //! flat background, nothing is filtered or blended (shaders/present.wgsl). The exact
 //! bytes of the render reach the screen, and on software GPUs (SwiftShader) one such
 //! pass over the canvas costs a fraction of egui's textured, blended image plus the
-//! fills around it (docs/BENCHMARKS.md, "Where the time goes"). While the live preview
-//! draws the sheet, [`Presenter::draw_frame`] draws only the background around it, in
-//! one draw.
+//! fills around it (docs/BENCHMARKS.md, "Where the time goes").
 
 use crate::bindings;
 use crate::params::PresentParams;
@@ -16,8 +14,6 @@ use crate::shaders::PRESENT_WGSL;
 pub struct Presenter {
     layout: wgpu::BindGroupLayout,
     pipeline: wgpu::RenderPipeline,
-    /// `vs_frame` + `fs_background`: the background around the sheet.
-    frame_pipeline: wgpu::RenderPipeline,
     linear_target: bool,
 }
 
@@ -26,9 +22,10 @@ pub struct Presenter {
 pub struct PresentSource {
     uniform: wgpu::Buffer,
     bind_group: wgpu::BindGroup,
+    /// The target is `…UnormSrgb` (the background is given to it in linear light).
     linear_target: bool,
-    /// The target size of the last placement, pixels.
-    target_size: [f32; 2],
+    /// The texels are sRGB-encoded values that the shader decodes for a linear target.
+    decode_texels: bool,
 }
 
 /// Where a texture goes in the target, in target pixels.
@@ -41,9 +38,6 @@ pub struct Placement {
     pub sheet: [f32; 4],
     /// The colour outside the sheet: sRGB bytes.
     pub background: [u8; 3],
-    /// The size of the target, pixels ([`Presenter::draw_frame`] covers all of it but
-    /// the sheet, within the pass's scissor rectangle).
-    pub target_size: [u32; 2],
 }
 
 impl Presenter {
@@ -69,18 +63,9 @@ impl Presenter {
             &module,
             format,
         );
-        let frame_pipeline = crate::fullscreen::pipeline_with(
-            device,
-            "marbling present (frame)",
-            &pipeline_layout,
-            &module,
-            ["vs_frame", "fs_background"],
-            format,
-        );
         Self {
             layout,
             pipeline,
-            frame_pipeline,
             linear_target: format.is_srgb(),
         }
     }
@@ -88,6 +73,26 @@ impl Presenter {
     /// Binds `view` (a texture holding sRGB-encoded values in a `…Unorm` format, such as
     /// a render of [`crate::ExactRenderer`] into an `Rgba8Unorm` target) for presenting.
     pub fn source(&self, device: &wgpu::Device, view: &wgpu::TextureView) -> PresentSource {
+        self.bind(device, view, self.linear_target)
+    }
+
+    /// Binds `view`, a texture of this presenter's own target format, for presenting:
+    /// its texels reach the target as they are (an `…UnormSrgb` view decodes them on
+    /// load and the target encodes them again on store).
+    pub fn source_in_target_format(
+        &self,
+        device: &wgpu::Device,
+        view: &wgpu::TextureView,
+    ) -> PresentSource {
+        self.bind(device, view, false)
+    }
+
+    fn bind(
+        &self,
+        device: &wgpu::Device,
+        view: &wgpu::TextureView,
+        decode_texels: bool,
+    ) -> PresentSource {
         let uniform = bindings::uniform_buffer::<PresentParams>(device, "marbling present params");
         let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("marbling present"),
@@ -107,7 +112,7 @@ impl Presenter {
             uniform,
             bind_group,
             linear_target: self.linear_target,
-            target_size: [0.0; 2],
+            decode_texels,
         }
     }
 
@@ -118,38 +123,23 @@ impl Presenter {
         pass.set_bind_group(0, &source.bind_group, &[]);
         pass.draw(0..3, 0..1);
     }
-
-    /// Records one draw of the background around the sheet of `source`'s placement into
-    /// `pass`: every pixel of the target that [`Presenter::draw`] would give the
-    /// background, within the pass's scissor rectangle, and no pixel of the sheet. It sets
-    /// the pass's viewport to the whole target.
-    pub fn draw_frame(&self, pass: &mut wgpu::RenderPass<'_>, source: &PresentSource) {
-        let [w, h] = source.target_size;
-        if w <= 0.0 || h <= 0.0 {
-            return;
-        }
-        pass.set_viewport(0.0, 0.0, w, h, 0.0, 1.0);
-        pass.set_pipeline(&self.frame_pipeline);
-        pass.set_bind_group(0, &source.bind_group, &[]);
-        pass.draw(0..24, 0..1);
-    }
 }
 
 impl PresentSource {
     /// Places the texture for the next draws.
     pub fn place(&mut self, queue: &wgpu::Queue, placement: &Placement) {
-        self.target_size = placement.target_size.map(|v| v as f32);
         queue.write_buffer(
             &self.uniform,
             0,
-            bytemuck::bytes_of(&placement.params(self.linear_target)),
+            bytemuck::bytes_of(&placement.params(self.linear_target, self.decode_texels)),
         );
     }
 }
 
 impl Placement {
-    /// The uniform block for a target that is (`linear_target`) or is not `…UnormSrgb`.
-    pub fn params(&self, linear_target: bool) -> PresentParams {
+    /// The uniform block for a target that is (`linear_target`) or is not `…UnormSrgb`,
+    /// and texels the shader decodes from sRGB (`decode_texels`) or copies as they are.
+    pub fn params(&self, linear_target: bool, decode_texels: bool) -> PresentParams {
         let bg = self.background.map(|b| {
             if linear_target {
                 marbling_core::color::srgb_to_linear(b)
@@ -159,12 +149,10 @@ impl Placement {
         });
         PresentParams {
             origin: self.origin,
-            linear_target: u32::from(linear_target),
+            linear_target: u32::from(decode_texels),
             _pad: 0,
             sheet: self.sheet,
             background: [bg[0], bg[1], bg[2], 1.0],
-            target_size: self.target_size.map(|v| v as f32),
-            _pad2: [0; 2],
         }
     }
 }

@@ -95,8 +95,6 @@ fn present_params_match_wgsl() {
             ("_pad", offset_of!(PresentParams, _pad)),
             ("sheet", offset_of!(PresentParams, sheet)),
             ("background", offset_of!(PresentParams, background)),
-            ("target_size", offset_of!(PresentParams, target_size)),
-            ("_pad2", offset_of!(PresentParams, _pad2)),
         ],
         size_of::<PresentParams>(),
     );

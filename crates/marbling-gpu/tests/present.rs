@@ -1,7 +1,7 @@
 //! The present pass copies texels 1:1 inside the sheet, paints the background outside
 //! it, and touches nothing outside the pass's viewport and scissor rectangle (the way
-//! the app draws its canvas inside egui's pass). Its frame draw paints exactly the
-//! background pixels and leaves the sheet's alone.
+//! the app draws its canvas inside egui's pass). A texture of the target's own format
+//! reaches it as it is.
 
 mod common;
 
@@ -21,24 +21,36 @@ fn source_byte(x: u32, y: u32, c: u32) -> u8 {
     ((x * 7 + y * 13 + c * 61) % 256) as u8
 }
 
-/// Which draw of the presenter a test makes.
+/// How the source texture is bound.
 #[derive(Clone, Copy, PartialEq)]
-enum Draw {
-    /// `Presenter::draw`: texels in the sheet, background around it.
-    Full,
-    /// `Presenter::draw_frame`: only the background around the sheet.
-    Frame,
+enum Source {
+    /// `Presenter::source`: an `Rgba8Unorm` texture of sRGB-encoded values.
+    Encoded,
+    /// `Presenter::source_in_target_format`: a texture of the target's format.
+    InTargetFormat,
+    /// A texture of the target's format bound with `Presenter::source` (a mistake: an
+    /// sRGB target's texels would be decoded twice).
+    TargetFormatAsEncoded,
 }
 
-/// Presents the test pattern with the sheet at `sheet` into a cleared-to-black `format`
-/// target and reads it back.
-fn present(ctx: &GpuContext, format: wgpu::TextureFormat, sheet: [f32; 4], draw: Draw) -> Vec<u8> {
+/// Presents the test pattern (its bytes written into a texture bound as `kind`) with
+/// the sheet at `sheet` into a cleared-to-black `format` target and reads it back.
+fn present(
+    ctx: &GpuContext,
+    format: wgpu::TextureFormat,
+    sheet: [f32; 4],
+    kind: Source,
+) -> Vec<u8> {
     let (device, queue) = (&ctx.device, &ctx.queue);
+    let source_format = match kind {
+        Source::Encoded => wgpu::TextureFormat::Rgba8Unorm,
+        Source::InTargetFormat | Source::TargetFormatAsEncoded => format,
+    };
     let source = RenderTarget::with_usage(
         device,
         SRC.0,
         SRC.1,
-        wgpu::TextureFormat::Rgba8Unorm,
+        source_format,
         wgpu::TextureUsages::COPY_DST,
     );
     let bytes: Vec<u8> = (0..SRC.1)
@@ -55,14 +67,16 @@ fn present(ctx: &GpuContext, format: wgpu::TextureFormat, sheet: [f32; 4], draw:
         source.texture.size(),
     );
     let presenter = Presenter::new(device, format);
-    let mut bound = presenter.source(device, &source.view);
+    let mut bound = match kind {
+        Source::Encoded | Source::TargetFormatAsEncoded => presenter.source(device, &source.view),
+        Source::InTargetFormat => presenter.source_in_target_format(device, &source.view),
+    };
     bound.place(
         queue,
         &Placement {
             origin: ORIGIN.map(|v| v as f32),
             sheet,
             background: BACKGROUND,
-            target_size: [DST.0, DST.1],
         },
     );
     let target = RenderTarget::new(device, DST.0, DST.1, format);
@@ -73,10 +87,7 @@ fn present(ctx: &GpuContext, format: wgpu::TextureFormat, sheet: [f32; 4], draw:
         let [x, y, w, h] = CANVAS;
         pass.set_viewport(x as f32, y as f32, w as f32, h as f32, 0.0, 1.0);
         pass.set_scissor_rect(x, y, w, h);
-        match draw {
-            Draw::Full => presenter.draw(&mut pass, &bound),
-            Draw::Frame => presenter.draw_frame(&mut pass, &bound),
-        }
+        presenter.draw(&mut pass, &bound);
     }
     let (buffer, padded) = copy_to_buffer(device, &mut encoder, &target);
     queue.submit([encoder.finish()]);
@@ -89,8 +100,8 @@ fn present(ctx: &GpuContext, format: wgpu::TextureFormat, sheet: [f32; 4], draw:
     out
 }
 
-/// What each target pixel must hold (RGB) after `draw` with the sheet at `sheet`.
-fn expected(x: u32, y: u32, sheet: [f32; 4], draw: Draw) -> [u8; 3] {
+/// What each target pixel must hold (RGB) with the sheet at `sheet`.
+fn expected(x: u32, y: u32, sheet: [f32; 4]) -> [u8; 3] {
     let [cx, cy, cw, ch] = CANVAS;
     if x < cx || y < cy || x >= cx + cw || y >= cy + ch {
         return [0, 0, 0];
@@ -100,20 +111,17 @@ fn expected(x: u32, y: u32, sheet: [f32; 4], draw: Draw) -> [u8; 3] {
     if px < sx0 || py < sy0 || px >= sx1 || py >= sy1 {
         return BACKGROUND;
     }
-    if draw == Draw::Frame {
-        return [0, 0, 0];
-    }
     let (u, v) = (x - ORIGIN[0], y - ORIGIN[1]);
     [0, 1, 2].map(|c| source_byte(u, v, c))
 }
 
 /// Pixels whose RGB differs from [`expected`] by more than `tolerance`.
-fn wrong_pixels(image: &[u8], tolerance: u8, sheet: [f32; 4], draw: Draw) -> Vec<(u32, u32)> {
+fn wrong_pixels(image: &[u8], tolerance: u8, sheet: [f32; 4]) -> Vec<(u32, u32)> {
     let mut wrong = Vec::new();
     for y in 0..DST.1 {
         for x in 0..DST.0 {
             let i = ((y * DST.0 + x) * 4) as usize;
-            let want = expected(x, y, sheet, draw);
+            let want = expected(x, y, sheet);
             if (0..3).any(|c| image[i + c].abs_diff(want[c]) > tolerance) {
                 wrong.push((x, y));
             }
@@ -127,47 +135,18 @@ fn texels_inside_the_sheet_background_around_it_nothing_beyond_the_canvas() {
     let Some(ctx) = common::or_skip(GpuContext::new_headless()) else {
         return;
     };
-    let image = present(&ctx, wgpu::TextureFormat::Rgba8Unorm, SHEET, Draw::Full);
-    assert_eq!(
-        wrong_pixels(&image, 0, SHEET, Draw::Full),
-        Vec::<(u32, u32)>::new()
+    let image = present(
+        &ctx,
+        wgpu::TextureFormat::Rgba8Unorm,
+        SHEET,
+        Source::Encoded,
     );
+    assert_eq!(wrong_pixels(&image, 0, SHEET), Vec::<(u32, u32)>::new());
     // The comparison can fail: one changed byte is found.
     let mut perturbed = image.clone();
     let i = ((10 * DST.0 + 12) * 4) as usize;
     perturbed[i] ^= 1;
-    assert_eq!(
-        wrong_pixels(&perturbed, 0, SHEET, Draw::Full),
-        vec![(12, 10)]
-    );
-}
-
-/// The frame draw paints the background where the full draw does and leaves the
-/// sheet's pixels alone, also when the sheet reaches beyond the canvas or the target, or
-/// lies outside the canvas altogether.
-#[test]
-fn the_frame_draw_paints_exactly_the_background_pixels() {
-    let Some(ctx) = common::or_skip(GpuContext::new_headless()) else {
-        return;
-    };
-    let format = wgpu::TextureFormat::Rgba8Unorm;
-    for sheet in [
-        SHEET,
-        [-10.0, 20.3, 30.2, 90.0],
-        [40.5, -3.0, 70.0, 17.5],
-        [0.0, 0.0, 64.0, 48.0],
-        [100.0, 100.0, 120.0, 120.0],
-    ] {
-        let image = present(&ctx, format, sheet, Draw::Frame);
-        assert_eq!(
-            wrong_pixels(&image, 0, sheet, Draw::Frame),
-            Vec::<(u32, u32)>::new(),
-            "sheet {sheet:?}"
-        );
-    }
-    // The comparison can fail: the full draw fills the sheet, which the frame must not.
-    let full = present(&ctx, format, SHEET, Draw::Full);
-    assert!(wrong_pixels(&full, 0, SHEET, Draw::Frame).len() > 500);
+    assert_eq!(wrong_pixels(&perturbed, 0, SHEET), vec![(12, 10)]);
 }
 
 #[test]
@@ -178,11 +157,38 @@ fn srgb_targets_show_the_same_colours() {
     // Decoded to linear light by the shader and encoded again by the hardware: at most
     // one step of rounding.
     let format = wgpu::TextureFormat::Rgba8UnormSrgb;
-    for draw in [Draw::Full, Draw::Frame] {
-        let image = present(&ctx, format, SHEET, draw);
+    let image = present(&ctx, format, SHEET, Source::Encoded);
+    assert_eq!(wrong_pixels(&image, 1, SHEET), Vec::<(u32, u32)>::new());
+}
+
+/// A texture of the target's own format (the app's cached side panel) reaches it as it
+/// is, for `…Unorm` and `…UnormSrgb` targets alike; the background keeps its colour.
+#[test]
+fn a_texture_in_the_target_format_is_copied_as_it_is() {
+    let Some(ctx) = common::or_skip(GpuContext::new_headless()) else {
+        return;
+    };
+    for format in [
+        wgpu::TextureFormat::Rgba8Unorm,
+        wgpu::TextureFormat::Rgba8UnormSrgb,
+    ] {
+        let image = present(&ctx, format, SHEET, Source::InTargetFormat);
         assert_eq!(
-            wrong_pixels(&image, 1, SHEET, draw),
-            Vec::<(u32, u32)>::new()
+            wrong_pixels(&image, 0, SHEET),
+            Vec::<(u32, u32)>::new(),
+            "{format:?}"
         );
     }
+}
+
+/// The comparison sees a texture of an sRGB target's format bound as sRGB-encoded
+/// values (its texels decoded twice).
+#[test]
+fn decoding_a_texture_in_the_target_format_again_is_caught() {
+    let Some(ctx) = common::or_skip(GpuContext::new_headless()) else {
+        return;
+    };
+    let format = wgpu::TextureFormat::Rgba8UnormSrgb;
+    let image = present(&ctx, format, SHEET, Source::TargetFormatAsEncoded);
+    assert!(wrong_pixels(&image, 1, SHEET).len() > 500);
 }

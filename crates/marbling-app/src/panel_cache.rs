@@ -1,0 +1,471 @@
+//! The side panel shown from a texture while it does not change.
+//!
+//! egui draws every shape again each frame. On a software GPU (SwiftShader, what headless
+//! Chromium uses where there is no GPU) the side panel's draws cost about a third of a
+//! frame while a tool is dragged over the canvas: ~3,000 triangles in six draws, each draw
+//! ~0.5 ms whatever it covers, and egui's fragment shader runs all of its branches for
+//! every pixel (docs/BENCHMARKS.md). While the panel's shapes are the same as in the
+//! previous frame (dragging or hovering a tool over the canvas), [`PanelCache`] renders
+//! them once into a texture with egui's own renderer and puts one callback in their place
+//! that copies that texture's pixels 1:1 (the present pipeline). As soon as they change
+//! (the pointer over a widget, a new history entry), egui draws them itself again.
+//!
+//! The texture is rendered as eframe renders the window: the same shapes, tessellation,
+//! screen size, clear colour, renderer and target format, so its pixels are the ones egui
+//! would draw. It assumes eframe's default render options, which `main.rs` uses: no MSAA
+//! and no depth buffer.
+
+use eframe::egui_wgpu;
+use egui::epaint::{ClippedShape, Shape};
+use egui::{LayerId, Rect};
+use marbling_gpu::{Placement, PresentSource, Presenter};
+use std::ops::Range;
+use std::sync::{Arc, Mutex};
+
+/// Everything the panel's pixels depend on.
+#[derive(Clone, Debug, PartialEq)]
+struct Snapshot {
+    shapes: Vec<ClippedShape>,
+    /// The window's (canvas's) size, physical pixels.
+    size_in_pixels: [u32; 2],
+    pixels_per_point: f32,
+    /// Text's texture coordinates are divided by the font atlas's size when tessellating.
+    font_atlas: [usize; 2],
+    clear_color: [f32; 4],
+}
+
+/// What rendering the panel takes from eframe's wgpu set-up.
+pub struct PanelGpu<'a> {
+    pub device: &'a wgpu::Device,
+    pub queue: &'a wgpu::Queue,
+    /// The window surface's format, which egui's renderer draws in.
+    pub target_format: wgpu::TextureFormat,
+    /// egui's renderer, with the font and image textures it has uploaded.
+    pub renderer: &'a egui::mutex::RwLock<egui_wgpu::Renderer>,
+}
+
+impl<'a> From<&'a egui_wgpu::RenderState> for PanelGpu<'a> {
+    fn from(rs: &'a egui_wgpu::RenderState) -> Self {
+        Self {
+            device: &rs.device,
+            queue: &rs.queue,
+            target_format: rs.target_format,
+            renderer: &rs.renderer,
+        }
+    }
+}
+
+/// Keeps the panel's last rendering and decides, frame by frame, whether to use it.
+#[derive(Default)]
+pub struct PanelCache {
+    /// The panel as last painted, and the frame (`cumulative_frame_nr`) it was painted in.
+    last: Option<(Snapshot, u64)>,
+    /// The texture, holding `last` when `holds_last`.
+    texture: Option<Arc<PanelTexture>>,
+    holds_last: bool,
+    /// The window size the last copy was painted into (from its callback), pixels.
+    painted_size: Arc<Mutex<Option<[u32; 2]>>>,
+    /// Frames drawn from the texture, and renders into it (for tests and `data-gpu-work`).
+    pub copies: u64,
+    pub renders: u64,
+}
+
+/// The panel's pixels and their binding for the copy.
+struct PanelTexture {
+    presenter: Presenter,
+    source: PresentSource,
+    view: wgpu::TextureView,
+    size: [u32; 2],
+}
+
+/// The paint callback standing in for the panel's shapes.
+struct PanelCopy {
+    texture: Arc<PanelTexture>,
+    painted_size: Arc<Mutex<Option<[u32; 2]>>>,
+}
+
+impl PanelCache {
+    /// Replaces the shapes `range` of `layer` (the panel's, just painted this frame) by one
+    /// copy of their rendering when they are the same as in the previous frame, rendering
+    /// them into the texture first if it holds something else. Does nothing without a
+    /// wgpu renderer, or when the panel holds paint callbacks of its own.
+    pub fn substitute(
+        &mut self,
+        ctx: &egui::Context,
+        gpu: Option<PanelGpu<'_>>,
+        layer: LayerId,
+        range: Range<usize>,
+        clear_color: [f32; 4],
+    ) {
+        let Some(gpu) = gpu else {
+            return;
+        };
+        let shapes: Vec<ClippedShape> = ctx.graphics(|g| {
+            g.get(layer).map_or_else(Vec::new, |list| {
+                list.all_entries()
+                    .skip(range.start)
+                    .take(range.len())
+                    .cloned()
+                    .collect()
+            })
+        });
+        if shapes.is_empty() || shapes.iter().any(|s| matches!(s.shape, Shape::Callback(_))) {
+            self.last = None;
+            return;
+        }
+        let pixels_per_point = ctx.pixels_per_point();
+        let size_in_pixels = self.window_size(ctx, pixels_per_point);
+        let snapshot = Snapshot {
+            shapes,
+            size_in_pixels,
+            pixels_per_point,
+            font_atlas: ctx.fonts(|f| f.font_image_size()),
+            clear_color,
+        };
+        let frame = ctx.cumulative_frame_nr();
+        match &self.last {
+            // The same as in an earlier frame, whose new glyphs and images egui's renderer
+            // has uploaded since (not as in an earlier pass of this frame).
+            Some((last, painted)) if *last == snapshot && *painted < frame => {}
+            Some((last, _)) if *last == snapshot => return,
+            _ => {
+                self.last = Some((snapshot, frame));
+                self.holds_last = false;
+                return;
+            }
+        }
+        if !self.holds_last {
+            self.render(ctx, &gpu, &snapshot);
+            self.holds_last = true;
+        }
+        let Some(texture) = self.texture.clone() else {
+            return;
+        };
+        let screen = Rect::from_min_size(
+            egui::Pos2::ZERO,
+            egui::vec2(size_in_pixels[0] as f32, size_in_pixels[1] as f32) / pixels_per_point,
+        );
+        let area = snapshot
+            .shapes
+            .iter()
+            .map(|s| s.clip_rect)
+            .fold(Rect::NOTHING, |a, b| a.union(b))
+            .intersect(screen);
+        let copy = egui_wgpu::Callback::new_paint_callback(
+            area,
+            PanelCopy {
+                texture,
+                painted_size: self.painted_size.clone(),
+            },
+        );
+        ctx.graphics_mut(|g| {
+            let list = g.entry(layer);
+            for i in range.clone() {
+                list.reset_shape(egui::layers::ShapeIdx(i));
+            }
+            list.set(egui::layers::ShapeIdx(range.start), area, copy.into());
+        });
+        self.copies += 1;
+    }
+
+    /// The window's size in physical pixels: what the last copy was painted into, else
+    /// egui's screen in points times the pixels per point.
+    fn window_size(&self, ctx: &egui::Context, pixels_per_point: f32) -> [u32; 2] {
+        if let Some(size) = self.painted_size.lock().ok().and_then(|s| *s) {
+            return size;
+        }
+        let points = ctx.viewport_rect().size();
+        [
+            (points.x * pixels_per_point).round() as u32,
+            (points.y * pixels_per_point).round() as u32,
+        ]
+    }
+
+    /// Renders `snapshot`'s shapes into the texture (made or remade at the window's size).
+    fn render(&mut self, ctx: &egui::Context, gpu: &PanelGpu<'_>, snapshot: &Snapshot) {
+        let size = snapshot.size_in_pixels;
+        if size[0] == 0 || size[1] == 0 {
+            self.texture = None;
+            return;
+        }
+        if self.texture.as_ref().is_none_or(|t| t.size != size) {
+            self.texture = Some(Arc::new(PanelTexture::new(gpu, size)));
+        }
+        let Some(texture) = &self.texture else {
+            return;
+        };
+        let primitives = ctx.tessellate(snapshot.shapes.clone(), snapshot.pixels_per_point);
+        let screen = egui_wgpu::ScreenDescriptor {
+            size_in_pixels: size,
+            pixels_per_point: snapshot.pixels_per_point,
+        };
+        let mut encoder = gpu
+            .device
+            .create_command_encoder(&wgpu::CommandEncoderDescriptor {
+                label: Some("marbling panel cache"),
+            });
+        let mut renderer = gpu.renderer.write();
+        let prepared =
+            renderer.update_buffers(gpu.device, gpu.queue, &mut encoder, &primitives, &screen);
+        let [r, g, b, a] = snapshot.clear_color.map(f64::from);
+        let mut pass = encoder
+            .begin_render_pass(&wgpu::RenderPassDescriptor {
+                label: Some("marbling panel cache"),
+                color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+                    view: &texture.view,
+                    resolve_target: None,
+                    depth_slice: None,
+                    ops: wgpu::Operations {
+                        load: wgpu::LoadOp::Clear(wgpu::Color { r, g, b, a }),
+                        store: wgpu::StoreOp::Store,
+                    },
+                })],
+                depth_stencil_attachment: None,
+                timestamp_writes: None,
+                occlusion_query_set: None,
+                multiview_mask: None,
+            })
+            .forget_lifetime();
+        renderer.render(&mut pass, &primitives, &screen);
+        drop(pass);
+        // Submitted now, before eframe writes this frame's own vertices into the
+        // renderer's buffers.
+        gpu.queue
+            .submit(prepared.into_iter().chain([encoder.finish()]));
+        self.renders += 1;
+    }
+}
+
+impl PanelTexture {
+    fn new(gpu: &PanelGpu<'_>, size: [u32; 2]) -> Self {
+        let texture = gpu.device.create_texture(&wgpu::TextureDescriptor {
+            label: Some("marbling panel cache"),
+            size: wgpu::Extent3d {
+                width: size[0],
+                height: size[1],
+                depth_or_array_layers: 1,
+            },
+            mip_level_count: 1,
+            sample_count: 1,
+            dimension: wgpu::TextureDimension::D2,
+            format: gpu.target_format,
+            usage: wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING,
+            view_formats: &[],
+        });
+        let view = texture.create_view(&wgpu::TextureViewDescriptor::default());
+        let presenter = Presenter::new(gpu.device, gpu.target_format);
+        let mut source = presenter.source_in_target_format(gpu.device, &view);
+        source.place(
+            gpu.queue,
+            &Placement {
+                origin: [0.0, 0.0],
+                sheet: [0.0, 0.0, size[0] as f32, size[1] as f32],
+                background: [0, 0, 0],
+            },
+        );
+        Self {
+            presenter,
+            source,
+            view,
+            size,
+        }
+    }
+}
+
+impl egui_wgpu::CallbackTrait for PanelCopy {
+    fn paint(
+        &self,
+        info: egui::PaintCallbackInfo,
+        pass: &mut wgpu::RenderPass<'static>,
+        _resources: &egui_wgpu::CallbackResources,
+    ) {
+        // A window resized since the texture was made shows it this once (the panel
+        // keeps its place at the left edge); the next frames render it at the new size.
+        if let Ok(mut painted) = self.painted_size.lock() {
+            *painted = Some(info.screen_size_px);
+        }
+        self.texture.presenter.draw(pass, &self.texture.source);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use egui::mutex::RwLock;
+    use marbling_gpu::{GpuContext, RenderTarget, copy_to_buffer, read_buffer};
+
+    const FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8Unorm;
+    const SIZE: [u32; 2] = [320, 240];
+    const CLEAR: [f32; 4] = [0.2, 0.2, 0.2, 1.0];
+
+    /// An egui context drawn by egui's wgpu renderer the way eframe draws a window.
+    struct Window {
+        ctx: egui::Context,
+        gpu: GpuContext,
+        renderer: RwLock<egui_wgpu::Renderer>,
+        cache: PanelCache,
+    }
+
+    impl Window {
+        fn new() -> Option<Self> {
+            let gpu = match GpuContext::new_headless() {
+                Ok(g) => g,
+                Err(e) if std::env::var("MARBLING_SKIP_GPU").is_ok_and(|v| v == "1") => {
+                    eprintln!("MARBLING_SKIP_GPU=1: skipping GPU test ({e})");
+                    return None;
+                }
+                Err(e) => panic!("GPU test cannot run: {e}"),
+            };
+            let renderer = egui_wgpu::Renderer::new(&gpu.device, FORMAT, Default::default());
+            Some(Self {
+                ctx: egui::Context::default(),
+                gpu,
+                renderer: RwLock::new(renderer),
+                cache: PanelCache::default(),
+            })
+        }
+
+        /// One frame with a side panel headed `heading` (its shapes offered to the cache)
+        /// and a canvas label; returns the window's pixels (RGBA).
+        fn frame(&mut self, heading: &str) -> Vec<u8> {
+            let input = egui::RawInput {
+                screen_rect: Some(Rect::from_min_size(
+                    egui::Pos2::ZERO,
+                    egui::vec2(SIZE[0] as f32, SIZE[1] as f32),
+                )),
+                ..Default::default()
+            };
+            let Self {
+                ctx,
+                gpu,
+                renderer,
+                cache,
+            } = self;
+            let output = ctx.run_ui(input, |ui| {
+                let layer = ui.layer_id();
+                let count = |ui: &egui::Ui| {
+                    ui.ctx()
+                        .graphics(|g| g.get(layer).map_or(0, |l| l.next_idx().0))
+                };
+                let start = count(ui);
+                egui::Panel::left("panel").show(ui, |ui| {
+                    ui.heading(heading);
+                    let _ = ui.button("A button");
+                    ui.add(egui::Slider::new(&mut 0.25_f32, 0.0..=1.0));
+                    ui.label("Ink, palette and history");
+                });
+                let end = count(ui);
+                let panel_gpu = PanelGpu {
+                    device: &gpu.device,
+                    queue: &gpu.queue,
+                    target_format: FORMAT,
+                    renderer,
+                };
+                cache.substitute(ui.ctx(), Some(panel_gpu), layer, start..end, CLEAR);
+                egui::CentralPanel::default().show(ui, |ui| ui.label("the canvas"));
+            });
+            let primitives = ctx.tessellate(output.shapes, output.pixels_per_point);
+            let mut textures = output.textures_delta;
+            let pixels = self.draw(&mut textures, &primitives, output.pixels_per_point);
+            textures.clear();
+            pixels
+        }
+
+        /// Draws as eframe does: textures, buffers, one pass cleared to [`CLEAR`].
+        fn draw(
+            &self,
+            textures: &mut egui::TexturesDelta,
+            primitives: &[egui::ClippedPrimitive],
+            pixels_per_point: f32,
+        ) -> Vec<u8> {
+            let (device, queue) = (&self.gpu.device, &self.gpu.queue);
+            let mut renderer = self.renderer.write();
+            for (id, deltas) in textures.set.drain() {
+                for delta in &deltas {
+                    renderer.update_texture(device, queue, id, delta);
+                }
+            }
+            let screen = egui_wgpu::ScreenDescriptor {
+                size_in_pixels: SIZE,
+                pixels_per_point,
+            };
+            let mut encoder = device.create_command_encoder(&Default::default());
+            let prepared =
+                renderer.update_buffers(device, queue, &mut encoder, primitives, &screen);
+            let target = RenderTarget::new(device, SIZE[0], SIZE[1], FORMAT);
+            let [r, g, b, a] = CLEAR.map(f64::from);
+            let mut pass = encoder
+                .begin_render_pass(&wgpu::RenderPassDescriptor {
+                    label: None,
+                    color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+                        view: &target.view,
+                        resolve_target: None,
+                        depth_slice: None,
+                        ops: wgpu::Operations {
+                            load: wgpu::LoadOp::Clear(wgpu::Color { r, g, b, a }),
+                            store: wgpu::StoreOp::Store,
+                        },
+                    })],
+                    depth_stencil_attachment: None,
+                    timestamp_writes: None,
+                    occlusion_query_set: None,
+                    multiview_mask: None,
+                })
+                .forget_lifetime();
+            renderer.render(&mut pass, primitives, &screen);
+            drop(pass);
+            let (buffer, padded) = copy_to_buffer(device, &mut encoder, &target);
+            queue.submit(prepared.into_iter().chain([encoder.finish()]));
+            let row = SIZE[0] as usize * 4;
+            let mut pixels = vec![0; row * SIZE[1] as usize];
+            read_buffer(&self.gpu, &buffer, padded, SIZE[0], SIZE[1], |y, b| {
+                pixels[y as usize * row..(y as usize + 1) * row].copy_from_slice(b);
+            })
+            .expect("readback");
+            pixels
+        }
+    }
+
+    /// Pixels that differ between two windows.
+    fn differing(a: &[u8], b: &[u8]) -> usize {
+        a.chunks(4).zip(b.chunks(4)).filter(|(p, q)| p != q).count()
+    }
+
+    #[test]
+    fn an_unchanged_panel_is_copied_and_looks_exactly_as_egui_draws_it() {
+        let Some(mut window) = Window::new() else {
+            return;
+        };
+        // egui sizes the panel in the first frame; the second is egui's own drawing of
+        // the settled panel, different from the first.
+        window.frame("Tools");
+        let drawn = window.frame("Tools");
+        assert_eq!((window.cache.copies, window.cache.renders), (0, 0));
+        // The second frame shows the same panel from the texture.
+        let copied = window.frame("Tools");
+        assert_eq!((window.cache.copies, window.cache.renders), (1, 1));
+        assert_eq!(differing(&drawn, &copied), 0);
+        // Later frames copy it without rendering it again.
+        let again = window.frame("Tools");
+        assert_eq!((window.cache.copies, window.cache.renders), (2, 1));
+        assert_eq!(differing(&drawn, &again), 0);
+    }
+
+    #[test]
+    fn a_changed_panel_is_drawn_by_egui_and_then_cached_anew() {
+        let Some(mut window) = Window::new() else {
+            return;
+        };
+        window.frame("Tools");
+        let tools = window.frame("Tools");
+        window.frame("Tools");
+        // The heading changes: egui draws this frame itself, and it shows the change.
+        let ink = window.frame("Ink");
+        assert_eq!((window.cache.copies, window.cache.renders), (1, 1));
+        assert!(differing(&tools, &ink) > 50, "the comparison sees a new heading");
+        // From the next frame on, the new panel is copied from a new rendering.
+        let copied = window.frame("Ink");
+        assert_eq!((window.cache.copies, window.cache.renders), (2, 2));
+        assert_eq!(differing(&ink, &copied), 0);
+    }
+}
