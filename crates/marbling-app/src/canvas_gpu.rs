@@ -357,7 +357,7 @@ impl egui_wgpu::CallbackTrait for CanvasCallback {
             .filter(|(key, _)| self.request.pending.is_some() && *key == self.request.design_key);
         match preview {
             Some((_, cache)) => gpu.preview.draw(pass, cache),
-            None => gpu.presenter.draw(pass, source),
+            None => gpu.presenter.draw_texels(pass, source),
         }
     }
 }

@@ -284,7 +284,9 @@ impl egui_wgpu::CallbackTrait for PanelCopy {
         if let Ok(mut painted) = self.painted_size.lock() {
             *painted = Some(info.screen_size_px);
         }
-        self.texture.presenter.draw(pass, &self.texture.source);
+        self.texture
+            .presenter
+            .draw_texels(pass, &self.texture.source);
     }
 }
 
@@ -462,7 +464,10 @@ mod tests {
         // The heading changes: egui draws this frame itself, and it shows the change.
         let ink = window.frame("Ink");
         assert_eq!((window.cache.copies, window.cache.renders), (1, 1));
-        assert!(differing(&tools, &ink) > 50, "the comparison sees a new heading");
+        assert!(
+            differing(&tools, &ink) > 50,
+            "the comparison sees a new heading"
+        );
         // From the next frame on, the new panel is copied from a new rendering.
         let copied = window.frame("Ink");
         assert_eq!((window.cache.copies, window.cache.renders), (2, 2));

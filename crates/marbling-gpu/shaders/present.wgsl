@@ -42,3 +42,14 @@ fn fs_main(@builtin(position) position: vec4<f32>) -> @location(0) vec4<f32> {
     }
     return c;
 }
+
+// Texels that need no conversion (`linear_target` 0), copied as they are: target pixel
+// p shows texel p − origin, with no sheet test and no background. Straight-line code,
+// which a software GPU runs for each pixel at a fraction of `fs_main`'s cost. The pass's
+// scissor rectangle must lie within the sheet.
+@fragment
+fn fs_copy(@builtin(position) position: vec4<f32>) -> @location(0) vec4<f32> {
+    let last = vec2<i32>(textureDimensions(image)) - vec2<i32>(1);
+    let texel = clamp(vec2<i32>(floor(position.xy - params.origin)), vec2<i32>(0), last);
+    return textureLoad(image, texel, 0);
+}

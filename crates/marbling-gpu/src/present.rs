@@ -14,6 +14,8 @@ use crate::shaders::PRESENT_WGSL;
 pub struct Presenter {
     layout: wgpu::BindGroupLayout,
     pipeline: wgpu::RenderPipeline,
+    /// `fs_copy`: texels that need no conversion, without the sheet test.
+    copy_pipeline: wgpu::RenderPipeline,
     linear_target: bool,
 }
 
@@ -22,9 +24,10 @@ pub struct Presenter {
 pub struct PresentSource {
     uniform: wgpu::Buffer,
     bind_group: wgpu::BindGroup,
-    /// The target is `…UnormSrgb` (the background is given to it in linear light).
+    /// The target is `…UnormSrgb` (the background goes to it in linear light).
     linear_target: bool,
-    /// The texels are sRGB-encoded values that the shader decodes for a linear target.
+    /// The texels are sRGB-encoded values the shader decodes for the target; false when
+    /// they reach it as they are (a `…Unorm` target, or a texture in the target's format).
     decode_texels: bool,
 }
 
@@ -63,9 +66,18 @@ impl Presenter {
             &module,
             format,
         );
+        let copy_pipeline = crate::fullscreen::pipeline_with(
+            device,
+            "marbling present (copy)",
+            &pipeline_layout,
+            &module,
+            ["vs_main", "fs_copy"],
+            format,
+        );
         Self {
             layout,
             pipeline,
+            copy_pipeline,
             linear_target: format.is_srgb(),
         }
     }
@@ -76,9 +88,9 @@ impl Presenter {
         self.bind(device, view, self.linear_target)
     }
 
-    /// Binds `view`, a texture of this presenter's own target format, for presenting:
-    /// its texels reach the target as they are (an `…UnormSrgb` view decodes them on
-    /// load and the target encodes them again on store).
+    /// Binds `view`, a texture of this presenter's own target format, for presenting: its
+    /// texels reach the target as they are (an `…UnormSrgb` view decodes them on load and
+    /// the target encodes them again on store).
     pub fn source_in_target_format(
         &self,
         device: &wgpu::Device,
@@ -116,10 +128,33 @@ impl Presenter {
         }
     }
 
-    /// Records a draw of `source` into `pass` (a target of this presenter's format). It
-    /// covers the pass's viewport and scissor rectangle.
+    /// Records a draw of `source` into `pass` (a target of this presenter's format): the
+    /// texels in the sheet, the background around it. It covers the pass's viewport and
+    /// scissor rectangle.
     pub fn draw(&self, pass: &mut wgpu::RenderPass<'_>, source: &PresentSource) {
-        pass.set_pipeline(&self.pipeline);
+        self.draw_with(pass, source, &self.pipeline);
+    }
+
+    /// Records a draw of only `source`'s texels into `pass`, whose scissor rectangle must
+    /// lie within the sheet. Where the texels need no conversion, this is a straight copy
+    /// (`fs_copy`): a software GPU runs every branch of the full shader for every pixel,
+    /// the sRGB decode included, so this is several times cheaper there.
+    pub fn draw_texels(&self, pass: &mut wgpu::RenderPass<'_>, source: &PresentSource) {
+        let pipeline = if source.decode_texels {
+            &self.pipeline
+        } else {
+            &self.copy_pipeline
+        };
+        self.draw_with(pass, source, pipeline);
+    }
+
+    fn draw_with(
+        &self,
+        pass: &mut wgpu::RenderPass<'_>,
+        source: &PresentSource,
+        pipeline: &wgpu::RenderPipeline,
+    ) {
+        pass.set_pipeline(pipeline);
         pass.set_bind_group(0, &source.bind_group, &[]);
         pass.draw(0..3, 0..1);
     }

@@ -33,13 +33,28 @@ enum Source {
     TargetFormatAsEncoded,
 }
 
+/// Which of the presenter's draws a test makes.
+#[derive(Clone, Copy, PartialEq)]
+enum Draw {
+    /// `Presenter::draw`: texels in the sheet, background around it.
+    Full,
+    /// `Presenter::draw_texels`: texels only, the scissor within the sheet.
+    Texels,
+}
+
+/// The texture's placement in the target: x, y, width, height.
+const TEXTURE_RECT: [u32; 4] = [ORIGIN[0], ORIGIN[1], SRC.0, SRC.1];
+
 /// Presents the test pattern (its bytes written into a texture bound as `kind`) with
-/// the sheet at `sheet` into a cleared-to-black `format` target and reads it back.
+/// the sheet at `sheet`, within the viewport and scissor rectangle `rect`, into a
+/// cleared-to-black `format` target and reads it back.
 fn present(
     ctx: &GpuContext,
     format: wgpu::TextureFormat,
     sheet: [f32; 4],
     kind: Source,
+    rect: [u32; 4],
+    draw: Draw,
 ) -> Vec<u8> {
     let (device, queue) = (&ctx.device, &ctx.queue);
     let source_format = match kind {
@@ -84,10 +99,13 @@ fn present(
         device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: None });
     {
         let mut pass = target.begin_pass(&mut encoder);
-        let [x, y, w, h] = CANVAS;
+        let [x, y, w, h] = rect;
         pass.set_viewport(x as f32, y as f32, w as f32, h as f32, 0.0, 1.0);
         pass.set_scissor_rect(x, y, w, h);
-        presenter.draw(&mut pass, &bound);
+        match draw {
+            Draw::Full => presenter.draw(&mut pass, &bound),
+            Draw::Texels => presenter.draw_texels(&mut pass, &bound),
+        }
     }
     let (buffer, padded) = copy_to_buffer(device, &mut encoder, &target);
     queue.submit([encoder.finish()]);
@@ -140,6 +158,8 @@ fn texels_inside_the_sheet_background_around_it_nothing_beyond_the_canvas() {
         wgpu::TextureFormat::Rgba8Unorm,
         SHEET,
         Source::Encoded,
+        CANVAS,
+        Draw::Full,
     );
     assert_eq!(wrong_pixels(&image, 0, SHEET), Vec::<(u32, u32)>::new());
     // The comparison can fail: one changed byte is found.
@@ -157,27 +177,62 @@ fn srgb_targets_show_the_same_colours() {
     // Decoded to linear light by the shader and encoded again by the hardware: at most
     // one step of rounding.
     let format = wgpu::TextureFormat::Rgba8UnormSrgb;
-    let image = present(&ctx, format, SHEET, Source::Encoded);
+    let image = present(&ctx, format, SHEET, Source::Encoded, CANVAS, Draw::Full);
     assert_eq!(wrong_pixels(&image, 1, SHEET), Vec::<(u32, u32)>::new());
 }
 
+/// What each target pixel must hold (RGB) after a copy within `rect`.
+fn expected_copy(x: u32, y: u32, rect: [u32; 4]) -> [u8; 3] {
+    let [rx, ry, rw, rh] = rect;
+    if x < rx || y < ry || x >= rx + rw || y >= ry + rh {
+        return [0, 0, 0];
+    }
+    let (u, v) = (x - ORIGIN[0], y - ORIGIN[1]);
+    [0, 1, 2].map(|c| source_byte(u, v, c))
+}
+
+/// Pixels whose RGB differs from [`expected_copy`] by more than `tolerance`.
+fn wrong_copy_pixels(image: &[u8], tolerance: u8, rect: [u32; 4]) -> Vec<(u32, u32)> {
+    let mut wrong = Vec::new();
+    for y in 0..DST.1 {
+        for x in 0..DST.0 {
+            let i = ((y * DST.0 + x) * 4) as usize;
+            let want = expected_copy(x, y, rect);
+            if (0..3).any(|c| image[i + c].abs_diff(want[c]) > tolerance) {
+                wrong.push((x, y));
+            }
+        }
+    }
+    wrong
+}
+
 /// A texture of the target's own format (the app's cached side panel) reaches it as it
-/// is, for `…Unorm` and `…UnormSrgb` targets alike; the background keeps its colour.
+/// is, for `…Unorm` and `…UnormSrgb` targets alike, and only within the scissor.
 #[test]
 fn a_texture_in_the_target_format_is_copied_as_it_is() {
     let Some(ctx) = common::or_skip(GpuContext::new_headless()) else {
         return;
     };
+    let within = [12, 8, 20, 11];
     for format in [
         wgpu::TextureFormat::Rgba8Unorm,
         wgpu::TextureFormat::Rgba8UnormSrgb,
     ] {
-        let image = present(&ctx, format, SHEET, Source::InTargetFormat);
-        assert_eq!(
-            wrong_pixels(&image, 0, SHEET),
-            Vec::<(u32, u32)>::new(),
-            "{format:?}"
-        );
+        for rect in [TEXTURE_RECT, within] {
+            let image = present(
+                &ctx,
+                format,
+                SHEET,
+                Source::InTargetFormat,
+                rect,
+                Draw::Texels,
+            );
+            assert_eq!(
+                wrong_copy_pixels(&image, 0, rect),
+                Vec::<(u32, u32)>::new(),
+                "{format:?} {rect:?}"
+            );
+        }
     }
 }
 
@@ -189,6 +244,36 @@ fn decoding_a_texture_in_the_target_format_again_is_caught() {
         return;
     };
     let format = wgpu::TextureFormat::Rgba8UnormSrgb;
-    let image = present(&ctx, format, SHEET, Source::TargetFormatAsEncoded);
-    assert!(wrong_pixels(&image, 1, SHEET).len() > 500);
+    let whole = [0.0, 0.0, DST.0 as f32, DST.1 as f32];
+    let image = present(
+        &ctx,
+        format,
+        whole,
+        Source::TargetFormatAsEncoded,
+        TEXTURE_RECT,
+        Draw::Texels,
+    );
+    assert!(wrong_copy_pixels(&image, 1, TEXTURE_RECT).len() > 500);
+}
+
+/// Only the texels, within a scissor inside the sheet: copied as they are on a `…Unorm`
+/// target, decoded for an `…UnormSrgb` one (one step of rounding at most).
+#[test]
+fn texels_only_draws_show_the_sheet_unchanged() {
+    let Some(ctx) = common::or_skip(GpuContext::new_headless()) else {
+        return;
+    };
+    // Pixels 10..37 × 7..26 lie inside SHEET.
+    let inside = [10, 7, 27, 19];
+    for (format, tolerance) in [
+        (wgpu::TextureFormat::Rgba8Unorm, 0),
+        (wgpu::TextureFormat::Rgba8UnormSrgb, 1),
+    ] {
+        let image = present(&ctx, format, SHEET, Source::Encoded, inside, Draw::Texels);
+        assert_eq!(
+            wrong_copy_pixels(&image, tolerance, inside),
+            Vec::<(u32, u32)>::new(),
+            "{format:?}"
+        );
+    }
 }

@@ -34,6 +34,8 @@ fn every_shader_parses_and_validates() {
         let module = validate(&name, &source);
         let expected: &[&str] = if name.starts_with("preview") {
             &["vs_main", "fs_main", "fs_one_sample"]
+        } else if name == "present" {
+            &["vs_main", "fs_main", "fs_copy"]
         } else {
             &["vs_main", "fs_main"]
         };
