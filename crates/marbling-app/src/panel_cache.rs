@@ -204,36 +204,58 @@ impl PanelCache {
             .create_command_encoder(&wgpu::CommandEncoderDescriptor {
                 label: Some("marbling panel cache"),
             });
-        let mut renderer = gpu.renderer.write();
-        let prepared =
-            renderer.update_buffers(gpu.device, gpu.queue, &mut encoder, &primitives, &screen);
-        let [r, g, b, a] = snapshot.clear_color.map(f64::from);
-        let mut pass = encoder
-            .begin_render_pass(&wgpu::RenderPassDescriptor {
-                label: Some("marbling panel cache"),
-                color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-                    view: &texture.view,
-                    resolve_target: None,
-                    depth_slice: None,
-                    ops: wgpu::Operations {
-                        load: wgpu::LoadOp::Clear(wgpu::Color { r, g, b, a }),
-                        store: wgpu::StoreOp::Store,
-                    },
-                })],
-                depth_stencil_attachment: None,
-                timestamp_writes: None,
-                occlusion_query_set: None,
-                multiview_mask: None,
-            })
-            .forget_lifetime();
-        renderer.render(&mut pass, &primitives, &screen);
-        drop(pass);
+        let prepared = record_egui(
+            (gpu.device, gpu.queue),
+            &mut gpu.renderer.write(),
+            &mut encoder,
+            &texture.view,
+            snapshot.clear_color,
+            &primitives,
+            &screen,
+        );
         // Submitted now, before eframe writes this frame's own vertices into the
         // renderer's buffers.
         gpu.queue
             .submit(prepared.into_iter().chain([encoder.finish()]));
         self.renders += 1;
     }
+}
+
+/// Records egui's `primitives` into `encoder` the way eframe draws its window: the
+/// renderer's buffers uploaded, then one pass into `view` cleared to `clear_color`.
+/// Returns the command buffers of paint callbacks' preparation, to be submitted before
+/// `encoder`'s.
+fn record_egui(
+    (device, queue): (&wgpu::Device, &wgpu::Queue),
+    renderer: &mut egui_wgpu::Renderer,
+    encoder: &mut wgpu::CommandEncoder,
+    view: &wgpu::TextureView,
+    clear_color: [f32; 4],
+    primitives: &[egui::ClippedPrimitive],
+    screen: &egui_wgpu::ScreenDescriptor,
+) -> Vec<wgpu::CommandBuffer> {
+    let prepared = renderer.update_buffers(device, queue, encoder, primitives, screen);
+    let [r, g, b, a] = clear_color.map(f64::from);
+    let mut pass = encoder
+        .begin_render_pass(&wgpu::RenderPassDescriptor {
+            label: Some("marbling panel cache"),
+            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+                view,
+                resolve_target: None,
+                depth_slice: None,
+                ops: wgpu::Operations {
+                    load: wgpu::LoadOp::Clear(wgpu::Color { r, g, b, a }),
+                    store: wgpu::StoreOp::Store,
+                },
+            })],
+            depth_stencil_attachment: None,
+            timestamp_writes: None,
+            occlusion_query_set: None,
+            multiview_mask: None,
+        })
+        .forget_lifetime();
+    renderer.render(&mut pass, primitives, screen);
+    prepared
 }
 
 impl PanelTexture {
@@ -392,30 +414,16 @@ mod tests {
                 pixels_per_point,
             };
             let mut encoder = device.create_command_encoder(&Default::default());
-            let prepared =
-                renderer.update_buffers(device, queue, &mut encoder, primitives, &screen);
             let target = RenderTarget::new(device, SIZE[0], SIZE[1], FORMAT);
-            let [r, g, b, a] = CLEAR.map(f64::from);
-            let mut pass = encoder
-                .begin_render_pass(&wgpu::RenderPassDescriptor {
-                    label: None,
-                    color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-                        view: &target.view,
-                        resolve_target: None,
-                        depth_slice: None,
-                        ops: wgpu::Operations {
-                            load: wgpu::LoadOp::Clear(wgpu::Color { r, g, b, a }),
-                            store: wgpu::StoreOp::Store,
-                        },
-                    })],
-                    depth_stencil_attachment: None,
-                    timestamp_writes: None,
-                    occlusion_query_set: None,
-                    multiview_mask: None,
-                })
-                .forget_lifetime();
-            renderer.render(&mut pass, primitives, &screen);
-            drop(pass);
+            let prepared = record_egui(
+                (device, queue),
+                &mut renderer,
+                &mut encoder,
+                &target.view,
+                CLEAR,
+                primitives,
+                &screen,
+            );
             let (buffer, padded) = copy_to_buffer(device, &mut encoder, &target);
             queue.submit(prepared.into_iter().chain([encoder.finish()]));
             let row = SIZE[0] as usize * 4;

@@ -135,11 +135,20 @@ fn expected(x: u32, y: u32, sheet: [f32; 4]) -> [u8; 3] {
 
 /// Pixels whose RGB differs from [`expected`] by more than `tolerance`.
 fn wrong_pixels(image: &[u8], tolerance: u8, sheet: [f32; 4]) -> Vec<(u32, u32)> {
+    differing_from(image, tolerance, |x, y| expected(x, y, sheet))
+}
+
+/// Pixels whose RGB differs from `want(x, y)` by more than `tolerance`.
+fn differing_from(
+    image: &[u8],
+    tolerance: u8,
+    want: impl Fn(u32, u32) -> [u8; 3],
+) -> Vec<(u32, u32)> {
     let mut wrong = Vec::new();
     for y in 0..DST.1 {
         for x in 0..DST.0 {
             let i = ((y * DST.0 + x) * 4) as usize;
-            let want = expected(x, y, sheet);
+            let want = want(x, y);
             if (0..3).any(|c| image[i + c].abs_diff(want[c]) > tolerance) {
                 wrong.push((x, y));
             }
@@ -193,17 +202,7 @@ fn expected_copy(x: u32, y: u32, rect: [u32; 4]) -> [u8; 3] {
 
 /// Pixels whose RGB differs from [`expected_copy`] by more than `tolerance`.
 fn wrong_copy_pixels(image: &[u8], tolerance: u8, rect: [u32; 4]) -> Vec<(u32, u32)> {
-    let mut wrong = Vec::new();
-    for y in 0..DST.1 {
-        for x in 0..DST.0 {
-            let i = ((y * DST.0 + x) * 4) as usize;
-            let want = expected_copy(x, y, rect);
-            if (0..3).any(|c| image[i + c].abs_diff(want[c]) > tolerance) {
-                wrong.push((x, y));
-            }
-        }
-    }
-    wrong
+    differing_from(image, tolerance, |x, y| expected_copy(x, y, rect))
 }
 
 /// A texture of the target's own format (the app's cached side panel) reaches it as it
