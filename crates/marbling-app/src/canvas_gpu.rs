@@ -1,8 +1,9 @@
 //! The canvas's GPU side. The exact render is drawn into an offscreen texture only when
 //! the design or the view changes, and every frame copies that texture 1:1 into egui's
 //! pass over the sheet in one cheap draw (the grey around it is the window's clear
-//! colour), so hovering never re-walks the ops. While a tool is dragged, the live preview is drawn straight into egui's pass
-//! over the sheet instead: one pass per frame, not two.
+//! colour), so hovering never re-walks the ops. While a tool is dragged, the live
+//! preview is drawn straight into egui's pass over the sheet instead: one pass per
+//! frame, not two.
 
 use eframe::egui_wgpu;
 use egui::{Pos2, Rect};

@@ -63,8 +63,9 @@ pub struct PanelCache {
     /// The texture, holding `last` when `holds_last`.
     texture: Option<Arc<PanelTexture>>,
     holds_last: bool,
-    /// The window size the last copy was painted into (from its callback), pixels.
-    painted_size: Arc<Mutex<Option<[u32; 2]>>>,
+    /// The window size the last copy was painted into (from its callback), pixels, with
+    /// egui's estimate of it at the time (see [`PanelCache::window_size`]).
+    painted_size: Arc<Mutex<Option<PaintedSize>>>,
     /// Frames drawn from the texture, and renders into it (for tests and `data-gpu-work`).
     pub copies: u64,
     pub renders: u64,
@@ -78,10 +79,19 @@ struct PanelTexture {
     size: [u32; 2],
 }
 
+/// A window size in pixels as egui estimated it and as the painter had it.
+#[derive(Clone, Copy)]
+struct PaintedSize {
+    estimated: [u32; 2],
+    actual: [u32; 2],
+}
+
 /// The paint callback standing in for the panel's shapes.
 struct PanelCopy {
     texture: Arc<PanelTexture>,
-    painted_size: Arc<Mutex<Option<[u32; 2]>>>,
+    /// egui's estimate of the window size when the callback was made.
+    estimated_size: [u32; 2],
+    painted_size: Arc<Mutex<Option<PaintedSize>>>,
 }
 
 impl PanelCache {
@@ -155,6 +165,7 @@ impl PanelCache {
             area,
             PanelCopy {
                 texture,
+                estimated_size: estimated_size(ctx, pixels_per_point),
                 painted_size: self.painted_size.clone(),
             },
         );
@@ -168,17 +179,16 @@ impl PanelCache {
         self.copies += 1;
     }
 
-    /// The window's size in physical pixels: what the last copy was painted into, else
-    /// egui's screen in points times the pixels per point.
+    /// The window's size in physical pixels: egui's screen in points times the pixels
+    /// per point, or what the last copy was really painted into when egui estimated the
+    /// same then (the two may differ by rounding; a resize changes the estimate, so a
+    /// stale painted size is never used).
     fn window_size(&self, ctx: &egui::Context, pixels_per_point: f32) -> [u32; 2] {
-        if let Some(size) = self.painted_size.lock().ok().and_then(|s| *s) {
-            return size;
+        let estimated = estimated_size(ctx, pixels_per_point);
+        match self.painted_size.lock().ok().and_then(|s| *s) {
+            Some(painted) if painted.estimated == estimated => painted.actual,
+            _ => estimated,
         }
-        let points = ctx.viewport_rect().size();
-        [
-            (points.x * pixels_per_point).round() as u32,
-            (points.y * pixels_per_point).round() as u32,
-        ]
     }
 
     /// Renders `snapshot`'s shapes into the texture (made or remade at the window's size).
@@ -219,6 +229,15 @@ impl PanelCache {
             .submit(prepared.into_iter().chain([encoder.finish()]));
         self.renders += 1;
     }
+}
+
+/// egui's screen in points times `pixels_per_point`, rounded: the window in pixels.
+fn estimated_size(ctx: &egui::Context, pixels_per_point: f32) -> [u32; 2] {
+    let points = ctx.viewport_rect().size();
+    [
+        (points.x * pixels_per_point).round() as u32,
+        (points.y * pixels_per_point).round() as u32,
+    ]
 }
 
 /// Records egui's `primitives` into `encoder` the way eframe draws its window: the
@@ -304,7 +323,10 @@ impl egui_wgpu::CallbackTrait for PanelCopy {
         // A window resized since the texture was made shows it this once (the panel
         // keeps its place at the left edge); the next frames render it at the new size.
         if let Ok(mut painted) = self.painted_size.lock() {
-            *painted = Some(info.screen_size_px);
+            *painted = Some(PaintedSize {
+                estimated: self.estimated_size,
+                actual: info.screen_size_px,
+            });
         }
         self.texture
             .presenter
