@@ -661,8 +661,9 @@ impl eframe::App for MarblingApp {
         self.controls.clear();
         // The window is cleared to the grey around the sheet and the canvas has no fill,
         // so no canvas pixel is drawn twice: on a software GPU each full-window fill costs
-        // milliseconds a frame (docs/BENCHMARKS.md). The side panel's fill costs nothing
-        // while the panel is unchanged: it is part of the panel's cached texture.
+        // milliseconds a frame (docs/BENCHMARKS.md). The side panel's and status bar's
+        // fills cost nothing while the panels are unchanged: they are part of the panels'
+        // cached texture.
         let layer = ui.layer_id();
         let shape_count = || ctx.graphics(|g| g.get(layer).map_or(0, |l| l.next_idx().0));
         let panel_start = shape_count();
@@ -676,18 +677,19 @@ impl eframe::App for MarblingApp {
             .show(ui, |ui| {
                 egui::ScrollArea::vertical().show(ui, |ui| self.side_panel(ui, frame));
             });
+        let panel_end = shape_count();
+        egui::Panel::bottom("marbling_status")
+            .frame(egui::Frame::side_top_panel(ui.style()))
+            .show_separator_line(false)
+            .show(ui, |ui| self.status_bar(ui));
         let clear_color = eframe::App::clear_color(self, &ctx.global_style().visuals);
         self.panel_cache.substitute(
             &ctx,
             frame.wgpu_render_state().map(Into::into),
             layer,
-            panel_start..shape_count(),
+            &[panel_start..panel_end, panel_end..shape_count()],
             clear_color,
         );
-        egui::Panel::bottom("marbling_status")
-            .frame(egui::Frame::side_top_panel(ui.style()))
-            .show_separator_line(false)
-            .show(ui, |ui| self.status_bar(ui));
         egui::CentralPanel::default()
             .frame(egui::Frame::central_panel(ui.style()).fill(egui::Color32::TRANSPARENT))
             .show(ui, |ui| self.canvas(ui, frame));

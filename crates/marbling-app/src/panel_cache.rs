@@ -1,14 +1,15 @@
-//! The side panel shown from a texture while it does not change.
+//! The side panel and status bar shown from a texture while they do not change.
 //!
 //! egui draws every shape again each frame. On a software GPU (SwiftShader, what headless
-//! Chromium uses where there is no GPU) the side panel's draws cost about a third of a
-//! frame while a tool is dragged over the canvas: ~3,000 triangles in six draws, each draw
-//! ~0.5 ms whatever it covers, and egui's fragment shader runs all of its branches for
-//! every pixel (docs/BENCHMARKS.md). While the panel's shapes are the same as in the
-//! previous frame (dragging or hovering a tool over the canvas), [`PanelCache`] renders
-//! them once into a texture with egui's own renderer and puts one callback in their place
-//! that copies that texture's pixels 1:1 (the present pipeline). As soon as they change
-//! (the pointer over a widget, a new history entry), egui draws them itself again.
+//! Chromium uses where there is no GPU) egui's draws are dear whatever they cover: its
+//! fragment shader runs all of its branches for every pixel, and every triangle costs
+//! SwiftShader's pixel routine a call per band of the target, so a status bar's hundred
+//! glyph triangles cost milliseconds (docs/BENCHMARKS.md). While the panels' shapes are the
+//! same as in the previous frame (dragging or hovering a tool over the canvas),
+//! [`PanelCache`] renders them once into a texture with egui's own renderer and puts, in
+//! place of each panel's shapes, one callback that copies that texture's pixels 1:1 within
+//! the panel (the present pipeline: one triangle). As soon as they change (the pointer over
+//! a widget, a new history entry), egui draws them itself again.
 //!
 //! The texture is rendered as eframe renders the window: the same shapes, tessellation,
 //! screen size, clear colour, renderer and target format, so its pixels are the ones egui
@@ -22,10 +23,11 @@ use marbling_gpu::{Placement, PresentSource, Presenter};
 use std::ops::Range;
 use std::sync::{Arc, Mutex};
 
-/// Everything the panel's pixels depend on.
+/// Everything the panels' pixels depend on.
 #[derive(Clone, Debug, PartialEq)]
 struct Snapshot {
-    shapes: Vec<ClippedShape>,
+    /// Each panel's shapes, in paint order.
+    panels: Vec<Vec<ClippedShape>>,
     /// The window's (canvas's) size, physical pixels.
     size_in_pixels: [u32; 2],
     pixels_per_point: f32,
@@ -95,38 +97,47 @@ struct PanelCopy {
 }
 
 impl PanelCache {
-    /// Replaces the shapes `range` of `layer` (the panel's, just painted this frame) by one
-    /// copy of their rendering when they are the same as in the previous frame, rendering
-    /// them into the texture first if it holds something else. Does nothing without a
-    /// wgpu renderer, or when the panel holds paint callbacks of its own.
+    /// Replaces the shapes of each panel in `panels` (ranges of `layer`'s shapes, just
+    /// painted this frame, in paint order and not overlapping) by one copy of their
+    /// rendering when they are all the same as in the previous frame, rendering them into
+    /// the texture first if it holds something else. Does nothing without a wgpu renderer,
+    /// or when a panel is empty or holds paint callbacks of its own.
     pub fn substitute(
         &mut self,
         ctx: &egui::Context,
         gpu: Option<PanelGpu<'_>>,
         layer: LayerId,
-        range: Range<usize>,
+        panels: &[Range<usize>],
         clear_color: [f32; 4],
     ) {
         let Some(gpu) = gpu else {
             return;
         };
-        let shapes: Vec<ClippedShape> = ctx.graphics(|g| {
-            g.get(layer).map_or_else(Vec::new, |list| {
-                list.all_entries()
-                    .skip(range.start)
-                    .take(range.len())
-                    .cloned()
-                    .collect()
-            })
+        let shapes: Vec<Vec<ClippedShape>> = ctx.graphics(|g| {
+            panels
+                .iter()
+                .map(|range| {
+                    g.get(layer).map_or_else(Vec::new, |list| {
+                        list.all_entries()
+                            .skip(range.start)
+                            .take(range.len())
+                            .cloned()
+                            .collect()
+                    })
+                })
+                .collect()
         });
-        if shapes.is_empty() || shapes.iter().any(|s| matches!(s.shape, Shape::Callback(_))) {
+        let cacheable = |p: &Vec<ClippedShape>| {
+            !p.is_empty() && !p.iter().any(|s| matches!(s.shape, Shape::Callback(_)))
+        };
+        if shapes.is_empty() || !shapes.iter().all(cacheable) {
             self.last = None;
             return;
         }
         let pixels_per_point = ctx.pixels_per_point();
         let size_in_pixels = self.window_size(ctx, pixels_per_point);
         let snapshot = Snapshot {
-            shapes,
+            panels: shapes,
             size_in_pixels,
             pixels_per_point,
             font_atlas: ctx.fonts(|f| f.font_image_size()),
@@ -155,26 +166,28 @@ impl PanelCache {
             egui::Pos2::ZERO,
             egui::vec2(size_in_pixels[0] as f32, size_in_pixels[1] as f32) / pixels_per_point,
         );
-        let area = snapshot
-            .shapes
-            .iter()
-            .map(|s| s.clip_rect)
-            .fold(Rect::NOTHING, |a, b| a.union(b))
-            .intersect(screen);
-        let copy = egui_wgpu::Callback::new_paint_callback(
-            area,
-            PanelCopy {
-                texture,
-                estimated_size: estimated_size(ctx, pixels_per_point),
-                painted_size: self.painted_size.clone(),
-            },
-        );
+        let estimated_size = estimated_size(ctx, pixels_per_point);
         ctx.graphics_mut(|g| {
             let list = g.entry(layer);
-            for i in range.clone() {
-                list.reset_shape(egui::layers::ShapeIdx(i));
+            for (range, shapes) in panels.iter().zip(&snapshot.panels) {
+                let area = shapes
+                    .iter()
+                    .map(|s| s.clip_rect)
+                    .fold(Rect::NOTHING, |a, b| a.union(b))
+                    .intersect(screen);
+                let copy = egui_wgpu::Callback::new_paint_callback(
+                    area,
+                    PanelCopy {
+                        texture: texture.clone(),
+                        estimated_size,
+                        painted_size: self.painted_size.clone(),
+                    },
+                );
+                for i in range.clone() {
+                    list.reset_shape(egui::layers::ShapeIdx(i));
+                }
+                list.set(egui::layers::ShapeIdx(range.start), area, copy.into());
             }
-            list.set(egui::layers::ShapeIdx(range.start), area, copy.into());
         });
         self.copies += 1;
     }
@@ -204,7 +217,8 @@ impl PanelCache {
         let Some(texture) = &self.texture else {
             return;
         };
-        let primitives = ctx.tessellate(snapshot.shapes.clone(), snapshot.pixels_per_point);
+        let shapes = snapshot.panels.iter().flatten().cloned().collect();
+        let primitives = ctx.tessellate(shapes, snapshot.pixels_per_point);
         let screen = egui_wgpu::ScreenDescriptor {
             size_in_pixels: size,
             pixels_per_point: snapshot.pixels_per_point,
@@ -371,9 +385,10 @@ mod tests {
             })
         }
 
-        /// One frame with a side panel headed `heading` (its shapes offered to the cache)
-        /// and a canvas label; returns the window's pixels (RGBA).
-        fn frame(&mut self, heading: &str) -> Vec<u8> {
+        /// One frame with a side panel headed `heading` and a status bar saying `status`
+        /// (their shapes offered to the cache) and a canvas label; returns the window's
+        /// pixels (RGBA).
+        fn frame(&mut self, heading: &str, status: &str) -> Vec<u8> {
             let input = egui::RawInput {
                 screen_rect: Some(Rect::from_min_size(
                     egui::Pos2::ZERO,
@@ -401,13 +416,15 @@ mod tests {
                     ui.label("Ink, palette and history");
                 });
                 let end = count(ui);
+                egui::Panel::bottom("status").show(ui, |ui| ui.label(status));
                 let panel_gpu = PanelGpu {
                     device: &gpu.device,
                     queue: &gpu.queue,
                     target_format: FORMAT,
                     renderer,
                 };
-                cache.substitute(ui.ctx(), Some(panel_gpu), layer, start..end, CLEAR);
+                let panels = [start..end, end..count(ui)];
+                cache.substitute(ui.ctx(), Some(panel_gpu), layer, &panels, CLEAR);
                 egui::CentralPanel::default().show(ui, |ui| ui.label("the canvas"));
             });
             let primitives = ctx.tessellate(output.shapes, output.pixels_per_point);
@@ -464,21 +481,21 @@ mod tests {
     }
 
     #[test]
-    fn an_unchanged_panel_is_copied_and_looks_exactly_as_egui_draws_it() {
+    fn unchanged_panels_are_copied_and_look_exactly_as_egui_draws_them() {
         let Some(mut window) = Window::new() else {
             return;
         };
         // egui sizes the panel in the first frame; the second is egui's own drawing of
         // the settled panel, different from the first.
-        window.frame("Tools");
-        let drawn = window.frame("Tools");
+        window.frame("Tools", "3 ops");
+        let drawn = window.frame("Tools", "3 ops");
         assert_eq!((window.cache.copies, window.cache.renders), (0, 0));
         // The second frame shows the same panel from the texture.
-        let copied = window.frame("Tools");
+        let copied = window.frame("Tools", "3 ops");
         assert_eq!((window.cache.copies, window.cache.renders), (1, 1));
         assert_eq!(differing(&drawn, &copied), 0);
         // Later frames copy it without rendering it again.
-        let again = window.frame("Tools");
+        let again = window.frame("Tools", "3 ops");
         assert_eq!((window.cache.copies, window.cache.renders), (2, 1));
         assert_eq!(differing(&drawn, &again), 0);
     }
@@ -488,19 +505,40 @@ mod tests {
         let Some(mut window) = Window::new() else {
             return;
         };
-        window.frame("Tools");
-        let tools = window.frame("Tools");
-        window.frame("Tools");
+        window.frame("Tools", "3 ops");
+        let tools = window.frame("Tools", "3 ops");
+        window.frame("Tools", "3 ops");
         // The heading changes: egui draws this frame itself, and it shows the change.
-        let ink = window.frame("Ink");
+        let ink = window.frame("Ink", "3 ops");
         assert_eq!((window.cache.copies, window.cache.renders), (1, 1));
         assert!(
             differing(&tools, &ink) > 50,
             "the comparison sees a new heading"
         );
         // From the next frame on, the new panel is copied from a new rendering.
-        let copied = window.frame("Ink");
+        let copied = window.frame("Ink", "3 ops");
         assert_eq!((window.cache.copies, window.cache.renders), (2, 2));
         assert_eq!(differing(&ink, &copied), 0);
+    }
+
+    #[test]
+    fn a_changed_status_bar_alone_is_noticed_too() {
+        let Some(mut window) = Window::new() else {
+            return;
+        };
+        window.frame("Tools", "3 ops");
+        let three = window.frame("Tools", "3 ops");
+        window.frame("Tools", "3 ops");
+        assert_eq!((window.cache.copies, window.cache.renders), (1, 1));
+        // Only the status bar changes: egui draws both panels itself this frame.
+        let four = window.frame("Tools", "4 ops");
+        assert_eq!((window.cache.copies, window.cache.renders), (1, 1));
+        assert!(
+            differing(&three, &four) > 5,
+            "the comparison sees a new digit"
+        );
+        let copied = window.frame("Tools", "4 ops");
+        assert_eq!((window.cache.copies, window.cache.renders), (2, 2));
+        assert_eq!(differing(&four, &copied), 0);
     }
 }
