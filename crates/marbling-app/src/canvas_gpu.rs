@@ -241,8 +241,6 @@ impl CanvasPlacement {
     fn placement(&self) -> Placement {
         Placement {
             origin: self.canvas_px.map(|v| v as f32),
-            sheet: self.sheet_px.map(|v| v as f32),
-            background: SURROUND,
         }
     }
 }
@@ -358,7 +356,7 @@ impl egui_wgpu::CallbackTrait for CanvasCallback {
             .filter(|(key, _)| self.request.pending.is_some() && *key == self.request.design_key);
         match preview {
             Some((_, cache)) => gpu.preview.draw(pass, cache),
-            None => gpu.presenter.draw_texels(pass, source),
+            None => gpu.presenter.draw(pass, source),
         }
     }
 }

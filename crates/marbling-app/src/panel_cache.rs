@@ -310,14 +310,7 @@ impl PanelTexture {
         let view = texture.create_view(&wgpu::TextureViewDescriptor::default());
         let presenter = Presenter::new(gpu.device, gpu.target_format);
         let mut source = presenter.source_in_target_format(gpu.device, &view);
-        source.place(
-            gpu.queue,
-            &Placement {
-                origin: [0.0, 0.0],
-                sheet: [0.0, 0.0, size[0] as f32, size[1] as f32],
-                background: [0, 0, 0],
-            },
-        );
+        source.place(gpu.queue, &Placement { origin: [0.0, 0.0] });
         Self {
             presenter,
             source,
@@ -342,9 +335,7 @@ impl egui_wgpu::CallbackTrait for PanelCopy {
                 actual: info.screen_size_px,
             });
         }
-        self.texture
-            .presenter
-            .draw_texels(pass, &self.texture.source);
+        self.texture.presenter.draw(pass, &self.texture.source);
     }
 }
 

@@ -53,8 +53,8 @@
 //! - [`PreviewRenderer`] + [`PreviewCache`]: live-editing frames (a cached committed
 //!   design plus one pending op), an approximation shown only while dragging; one
 //!   pipeline per [`PreviewKind`] of pending op.
-//! - [`Presenter`] + [`PresentSource`]: a rendered texture shown 1:1 in another pass
-//!   (the app's canvas), with a flat background around the sheet.
+//! - [`Presenter`] + [`PresentSource`]: a rendered texture shown 1:1 within the scissor
+//!   rectangle of another pass (the app's canvas and cached panels).
 
 mod bindings;
 mod compute;

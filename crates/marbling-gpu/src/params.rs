@@ -165,20 +165,12 @@ mod tests {
 }
 
 /// Parameters of the present pass ([`crate::Presenter`]).
-///
 /// Keep in sync with `struct PresentParams` in shaders/present.wgsl.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
 pub struct PresentParams {
     /// Target pixel (x, y) of the texture's texel (0, 0).
     pub origin: [f32; 2],
-    /// 1: decode the texels from sRGB (sRGB-encoded values for a …UnormSrgb target); 0:
-    /// write them as they are.
-    pub linear_target: u32,
-    /// Padding to the next 16 bytes.
-    pub _pad: u32,
-    /// The sheet in target pixels: min x, min y, max x, max y.
-    pub sheet: [f32; 4],
-    /// The colour outside the sheet, as written to the target (RGBA, 0–1).
-    pub background: [f32; 4],
+    /// Padding to 16 bytes.
+    pub _pad: [f32; 2],
 }

@@ -91,10 +91,7 @@ fn present_params_match_wgsl() {
         "PresentParams",
         &[
             ("origin", offset_of!(PresentParams, origin)),
-            ("linear_target", offset_of!(PresentParams, linear_target)),
             ("_pad", offset_of!(PresentParams, _pad)),
-            ("sheet", offset_of!(PresentParams, sheet)),
-            ("background", offset_of!(PresentParams, background)),
         ],
         size_of::<PresentParams>(),
     );

@@ -1,7 +1,7 @@
-//! The present pass copies texels 1:1 inside the sheet, paints the background outside
-//! it, and touches nothing outside the pass's viewport and scissor rectangle (the way
-//! the app draws its canvas inside egui's pass). A texture of the target's own format
-//! reaches it as it is.
+//! The present pass shows texels 1:1 within the pass's scissor rectangle and touches
+//! nothing outside it (the way the app draws its canvas and cached panels inside egui's
+//! pass): sRGB-encoded texels reach a `…Unorm` target as they are and an `…UnormSrgb`
+//! target decoded; a texture of the target's own format reaches it as it is.
 
 mod common;
 
@@ -9,13 +9,11 @@ use marbling_gpu::{GpuContext, Placement, Presenter, RenderTarget, copy_to_buffe
 
 const SRC: (u32, u32) = (37, 23);
 const DST: (u32, u32) = (64, 48);
-/// The canvas rectangle (viewport and scissor): x, y, width, height.
-const CANVAS: [u32; 4] = [5, 3, 55, 42];
 const ORIGIN: [u32; 2] = [9, 6];
-/// The sheet: min x, min y, max x, max y (smaller than the source). A pixel is inside
-/// when its centre is: x in 9..38, y in 6..27.
-const SHEET: [f32; 4] = [9.4, 6.5, 38.5, 26.6];
-const BACKGROUND: [u8; 3] = [48, 50, 52];
+/// The texture's placement in the target: x, y, width, height.
+const TEXTURE_RECT: [u32; 4] = [ORIGIN[0], ORIGIN[1], SRC.0, SRC.1];
+/// A scissor rectangle inside the texture's placement.
+const WITHIN: [u32; 4] = [12, 8, 20, 11];
 
 fn source_byte(x: u32, y: u32, c: u32) -> u8 {
     ((x * 7 + y * 13 + c * 61) % 256) as u8
@@ -33,29 +31,10 @@ enum Source {
     TargetFormatAsEncoded,
 }
 
-/// Which of the presenter's draws a test makes.
-#[derive(Clone, Copy, PartialEq)]
-enum Draw {
-    /// `Presenter::draw`: texels in the sheet, background around it.
-    Full,
-    /// `Presenter::draw_texels`: texels only, the scissor within the sheet.
-    Texels,
-}
-
-/// The texture's placement in the target: x, y, width, height.
-const TEXTURE_RECT: [u32; 4] = [ORIGIN[0], ORIGIN[1], SRC.0, SRC.1];
-
-/// Presents the test pattern (its bytes written into a texture bound as `kind`) with
-/// the sheet at `sheet`, within the viewport and scissor rectangle `rect`, into a
-/// cleared-to-black `format` target and reads it back.
-fn present(
-    ctx: &GpuContext,
-    format: wgpu::TextureFormat,
-    sheet: [f32; 4],
-    kind: Source,
-    rect: [u32; 4],
-    draw: Draw,
-) -> Vec<u8> {
+/// Presents the test pattern (its bytes written into a texture bound as `kind`) within
+/// the viewport and scissor rectangle `rect` of a cleared-to-black `format` target and
+/// reads it back.
+fn present(ctx: &GpuContext, format: wgpu::TextureFormat, kind: Source, rect: [u32; 4]) -> Vec<u8> {
     let (device, queue) = (&ctx.device, &ctx.queue);
     let source_format = match kind {
         Source::Encoded => wgpu::TextureFormat::Rgba8Unorm,
@@ -90,8 +69,6 @@ fn present(
         queue,
         &Placement {
             origin: ORIGIN.map(|v| v as f32),
-            sheet,
-            background: BACKGROUND,
         },
     );
     let target = RenderTarget::new(device, DST.0, DST.1, format);
@@ -102,10 +79,7 @@ fn present(
         let [x, y, w, h] = rect;
         pass.set_viewport(x as f32, y as f32, w as f32, h as f32, 0.0, 1.0);
         pass.set_scissor_rect(x, y, w, h);
-        match draw {
-            Draw::Full => presenter.draw(&mut pass, &bound),
-            Draw::Texels => presenter.draw_texels(&mut pass, &bound),
-        }
+        presenter.draw(&mut pass, &bound);
     }
     let (buffer, padded) = copy_to_buffer(device, &mut encoder, &target);
     queue.submit([encoder.finish()]);
@@ -118,80 +92,9 @@ fn present(
     out
 }
 
-/// What each target pixel must hold (RGB) with the sheet at `sheet`.
-fn expected(x: u32, y: u32, sheet: [f32; 4]) -> [u8; 3] {
-    let [cx, cy, cw, ch] = CANVAS;
-    if x < cx || y < cy || x >= cx + cw || y >= cy + ch {
-        return [0, 0, 0];
-    }
-    let [sx0, sy0, sx1, sy1] = sheet;
-    let (px, py) = (x as f32 + 0.5, y as f32 + 0.5);
-    if px < sx0 || py < sy0 || px >= sx1 || py >= sy1 {
-        return BACKGROUND;
-    }
-    let (u, v) = (x - ORIGIN[0], y - ORIGIN[1]);
-    [0, 1, 2].map(|c| source_byte(u, v, c))
-}
-
-/// Pixels whose RGB differs from [`expected`] by more than `tolerance`.
-fn wrong_pixels(image: &[u8], tolerance: u8, sheet: [f32; 4]) -> Vec<(u32, u32)> {
-    differing_from(image, tolerance, |x, y| expected(x, y, sheet))
-}
-
-/// Pixels whose RGB differs from `want(x, y)` by more than `tolerance`.
-fn differing_from(
-    image: &[u8],
-    tolerance: u8,
-    want: impl Fn(u32, u32) -> [u8; 3],
-) -> Vec<(u32, u32)> {
-    let mut wrong = Vec::new();
-    for y in 0..DST.1 {
-        for x in 0..DST.0 {
-            let i = ((y * DST.0 + x) * 4) as usize;
-            let want = want(x, y);
-            if (0..3).any(|c| image[i + c].abs_diff(want[c]) > tolerance) {
-                wrong.push((x, y));
-            }
-        }
-    }
-    wrong
-}
-
-#[test]
-fn texels_inside_the_sheet_background_around_it_nothing_beyond_the_canvas() {
-    let Some(ctx) = common::or_skip(GpuContext::new_headless()) else {
-        return;
-    };
-    let image = present(
-        &ctx,
-        wgpu::TextureFormat::Rgba8Unorm,
-        SHEET,
-        Source::Encoded,
-        CANVAS,
-        Draw::Full,
-    );
-    assert_eq!(wrong_pixels(&image, 0, SHEET), Vec::<(u32, u32)>::new());
-    // The comparison can fail: one changed byte is found.
-    let mut perturbed = image.clone();
-    let i = ((10 * DST.0 + 12) * 4) as usize;
-    perturbed[i] ^= 1;
-    assert_eq!(wrong_pixels(&perturbed, 0, SHEET), vec![(12, 10)]);
-}
-
-#[test]
-fn srgb_targets_show_the_same_colours() {
-    let Some(ctx) = common::or_skip(GpuContext::new_headless()) else {
-        return;
-    };
-    // Decoded to linear light by the shader and encoded again by the hardware: at most
-    // one step of rounding.
-    let format = wgpu::TextureFormat::Rgba8UnormSrgb;
-    let image = present(&ctx, format, SHEET, Source::Encoded, CANVAS, Draw::Full);
-    assert_eq!(wrong_pixels(&image, 1, SHEET), Vec::<(u32, u32)>::new());
-}
-
-/// What each target pixel must hold (RGB) after a copy within `rect`.
-fn expected_copy(x: u32, y: u32, rect: [u32; 4]) -> [u8; 3] {
+/// What each target pixel must hold (RGB) after a draw within `rect`: the texel under
+/// it inside, the clear colour (black) outside.
+fn expected(x: u32, y: u32, rect: [u32; 4]) -> [u8; 3] {
     let [rx, ry, rw, rh] = rect;
     if x < rx || y < ry || x >= rx + rw || y >= ry + rh {
         return [0, 0, 0];
@@ -200,34 +103,84 @@ fn expected_copy(x: u32, y: u32, rect: [u32; 4]) -> [u8; 3] {
     [0, 1, 2].map(|c| source_byte(u, v, c))
 }
 
-/// Pixels whose RGB differs from [`expected_copy`] by more than `tolerance`.
-fn wrong_copy_pixels(image: &[u8], tolerance: u8, rect: [u32; 4]) -> Vec<(u32, u32)> {
-    differing_from(image, tolerance, |x, y| expected_copy(x, y, rect))
+/// Pixels whose RGB differs from [`expected`] by more than `tolerance`.
+fn wrong_pixels(image: &[u8], tolerance: u8, rect: [u32; 4]) -> Vec<(u32, u32)> {
+    let mut wrong = Vec::new();
+    for y in 0..DST.1 {
+        for x in 0..DST.0 {
+            let i = ((y * DST.0 + x) * 4) as usize;
+            let want = expected(x, y, rect);
+            if (0..3).any(|c| image[i + c].abs_diff(want[c]) > tolerance) {
+                wrong.push((x, y));
+            }
+        }
+    }
+    wrong
 }
 
-/// A texture of the target's own format (the app's cached side panel) reaches it as it
-/// is, for `…Unorm` and `…UnormSrgb` targets alike, and only within the scissor.
+/// sRGB-encoded texels (the canvas's exact frame) reach a `…Unorm` target as they are;
+/// an `…UnormSrgb` target gets them decoded and encoded again by the hardware, at most
+/// one step of rounding off. Nothing outside the scissor is touched.
+#[test]
+fn encoded_texels_are_shown_unchanged_within_the_scissor() {
+    let Some(ctx) = common::or_skip(GpuContext::new_headless()) else {
+        return;
+    };
+    for (format, tolerance) in [
+        (wgpu::TextureFormat::Rgba8Unorm, 0),
+        (wgpu::TextureFormat::Rgba8UnormSrgb, 1),
+    ] {
+        for rect in [TEXTURE_RECT, WITHIN] {
+            let image = present(&ctx, format, Source::Encoded, rect);
+            assert_eq!(
+                wrong_pixels(&image, tolerance, rect),
+                Vec::<(u32, u32)>::new(),
+                "{format:?} {rect:?}"
+            );
+        }
+    }
+}
+
+/// The comparison can fail: one changed byte is found, and so is a copy one pixel off.
+#[test]
+fn the_comparison_sees_one_changed_byte_and_a_shifted_copy() {
+    let Some(ctx) = common::or_skip(GpuContext::new_headless()) else {
+        return;
+    };
+    let image = present(
+        &ctx,
+        wgpu::TextureFormat::Rgba8Unorm,
+        Source::Encoded,
+        TEXTURE_RECT,
+    );
+    let mut perturbed = image.clone();
+    let i = ((10 * DST.0 + 12) * 4) as usize;
+    perturbed[i] ^= 1;
+    assert_eq!(wrong_pixels(&perturbed, 0, TEXTURE_RECT), vec![(12, 10)]);
+    // The whole picture one pixel to the right.
+    let row = DST.0 as usize * 4;
+    let mut shifted = vec![0; image.len()];
+    for (to, from) in shifted.chunks_mut(row).zip(image.chunks(row)) {
+        to[4..].copy_from_slice(&from[..row - 4]);
+    }
+    assert!(wrong_pixels(&shifted, 0, TEXTURE_RECT).len() > 500);
+}
+
+/// A texture of the target's own format (the app's cached panels) reaches it as it is,
+/// for `…Unorm` and `…UnormSrgb` targets alike, and only within the scissor.
 #[test]
 fn a_texture_in_the_target_format_is_copied_as_it_is() {
     let Some(ctx) = common::or_skip(GpuContext::new_headless()) else {
         return;
     };
-    let within = [12, 8, 20, 11];
     for format in [
         wgpu::TextureFormat::Rgba8Unorm,
         wgpu::TextureFormat::Rgba8UnormSrgb,
     ] {
-        for rect in [TEXTURE_RECT, within] {
-            let image = present(
-                &ctx,
-                format,
-                SHEET,
-                Source::InTargetFormat,
-                rect,
-                Draw::Texels,
-            );
+        for rect in [TEXTURE_RECT, WITHIN] {
+            let image = present(&ctx, format, Source::InTargetFormat, rect);
             assert_eq!(
-                wrong_copy_pixels(&image, 0, rect),
+                wrong_pixels(&image, 0, rect),
                 Vec::<(u32, u32)>::new(),
                 "{format:?} {rect:?}"
             );
@@ -243,36 +196,6 @@ fn decoding_a_texture_in_the_target_format_again_is_caught() {
         return;
     };
     let format = wgpu::TextureFormat::Rgba8UnormSrgb;
-    let whole = [0.0, 0.0, DST.0 as f32, DST.1 as f32];
-    let image = present(
-        &ctx,
-        format,
-        whole,
-        Source::TargetFormatAsEncoded,
-        TEXTURE_RECT,
-        Draw::Texels,
-    );
-    assert!(wrong_copy_pixels(&image, 1, TEXTURE_RECT).len() > 500);
-}
-
-/// Only the texels, within a scissor inside the sheet: copied as they are on a `…Unorm`
-/// target, decoded for an `…UnormSrgb` one (one step of rounding at most).
-#[test]
-fn texels_only_draws_show_the_sheet_unchanged() {
-    let Some(ctx) = common::or_skip(GpuContext::new_headless()) else {
-        return;
-    };
-    // Pixels 10..37 × 7..26 lie inside SHEET.
-    let inside = [10, 7, 27, 19];
-    for (format, tolerance) in [
-        (wgpu::TextureFormat::Rgba8Unorm, 0),
-        (wgpu::TextureFormat::Rgba8UnormSrgb, 1),
-    ] {
-        let image = present(&ctx, format, SHEET, Source::Encoded, inside, Draw::Texels);
-        assert_eq!(
-            wrong_copy_pixels(&image, tolerance, inside),
-            Vec::<(u32, u32)>::new(),
-            "{format:?}"
-        );
-    }
+    let image = present(&ctx, format, Source::TargetFormatAsEncoded, TEXTURE_RECT);
+    assert!(wrong_pixels(&image, 1, TEXTURE_RECT).len() > 500);
 }

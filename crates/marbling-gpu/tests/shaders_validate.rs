@@ -35,7 +35,7 @@ fn every_shader_parses_and_validates() {
         let expected: &[&str] = if name.starts_with("preview") {
             &["vs_main", "fs_main", "fs_one_sample"]
         } else if name == "present" {
-            &["vs_main", "fs_main", "fs_copy"]
+            &["vs_main", "fs_copy", "fs_decode"]
         } else {
             &["vs_main", "fs_main"]
         };
