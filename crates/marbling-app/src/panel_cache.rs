@@ -355,6 +355,8 @@ mod tests {
         gpu: GpuContext,
         renderer: RwLock<egui_wgpu::Renderer>,
         cache: PanelCache,
+        /// The window's size, pixels (one pixel per point).
+        size: [u32; 2],
     }
 
     impl Window {
@@ -373,6 +375,7 @@ mod tests {
                 gpu,
                 renderer: RwLock::new(renderer),
                 cache: PanelCache::default(),
+                size: SIZE,
             })
         }
 
@@ -383,7 +386,7 @@ mod tests {
             let input = egui::RawInput {
                 screen_rect: Some(Rect::from_min_size(
                     egui::Pos2::ZERO,
-                    egui::vec2(SIZE[0] as f32, SIZE[1] as f32),
+                    egui::vec2(self.size[0] as f32, self.size[1] as f32),
                 )),
                 ..Default::default()
             };
@@ -392,6 +395,7 @@ mod tests {
                 gpu,
                 renderer,
                 cache,
+                ..
             } = self;
             let output = ctx.run_ui(input, |ui| {
                 let layer = ui.layer_id();
@@ -440,11 +444,12 @@ mod tests {
                 }
             }
             let screen = egui_wgpu::ScreenDescriptor {
-                size_in_pixels: SIZE,
+                size_in_pixels: self.size,
                 pixels_per_point,
             };
             let mut encoder = device.create_command_encoder(&Default::default());
-            let target = RenderTarget::new(device, SIZE[0], SIZE[1], FORMAT);
+            let [w, h] = self.size;
+            let target = RenderTarget::new(device, w, h, FORMAT);
             let prepared = record_egui(
                 (device, queue),
                 &mut renderer,
@@ -456,9 +461,9 @@ mod tests {
             );
             let (buffer, padded) = copy_to_buffer(device, &mut encoder, &target);
             queue.submit(prepared.into_iter().chain([encoder.finish()]));
-            let row = SIZE[0] as usize * 4;
-            let mut pixels = vec![0; row * SIZE[1] as usize];
-            read_buffer(&self.gpu, &buffer, padded, SIZE[0], SIZE[1], |y, b| {
+            let row = w as usize * 4;
+            let mut pixels = vec![0; row * h as usize];
+            read_buffer(&self.gpu, &buffer, padded, w, h, |y, b| {
                 pixels[y as usize * row..(y as usize + 1) * row].copy_from_slice(b);
             })
             .expect("readback");
@@ -531,5 +536,25 @@ mod tests {
         let copied = window.frame("Tools", "4 ops");
         assert_eq!((window.cache.copies, window.cache.renders), (2, 2));
         assert_eq!(differing(&four, &copied), 0);
+    }
+
+    #[test]
+    fn a_resized_window_is_drawn_by_egui_then_cached_at_its_new_size() {
+        let Some(mut window) = Window::new() else {
+            return;
+        };
+        window.frame("Tools", "3 ops");
+        window.frame("Tools", "3 ops");
+        window.frame("Tools", "3 ops");
+        assert_eq!((window.cache.copies, window.cache.renders), (1, 1));
+        // Taller and wider: the first frame at the new size is egui's own drawing.
+        window.size = [400, 300];
+        let resized = window.frame("Tools", "3 ops");
+        assert_eq!((window.cache.copies, window.cache.renders), (1, 1));
+        // Then the panels come from a texture made at the new size: a texture left at
+        // the old size would end 60 pixels above the status bar.
+        let copied = window.frame("Tools", "3 ops");
+        assert_eq!((window.cache.copies, window.cache.renders), (2, 2));
+        assert_eq!(differing(&resized, &copied), 0);
     }
 }
