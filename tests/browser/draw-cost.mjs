@@ -18,6 +18,8 @@ own.server.close();
 const site = await serve(path.join(import.meta.dirname, 'draw-cost'));
 const context = await browser.newContext({ viewport: { width: 1024, height: 768 }, deviceScaleFactor: 1 });
 const page = await context.newPage();
+page.on('console', (m) => { if (m.type() === 'error' || m.type() === 'warning') console.log(m.text()); });
+page.on('pageerror', (e) => console.log(String(e)));
 await page.goto(site.url);
 await page.waitForFunction(() => window.started === true);
 // Scissor rectangles: x, y, width, height.
@@ -38,6 +40,10 @@ const cases = {
   'tine + bilinear 2× texture, sheet': [{ fs: 'preview', rect: sheet, sampler: 'linear' }],
   'tine + nearest 2× texture, sheet': [{ fs: 'preview', rect: sheet }],
   'tine + bilinear 2× storage buffer, sheet': [{ fs: 'preview_buffer', rect: sheet }],
+  // A 700×8 strip (5,600 pixels) as 2 or 100 triangles, drawn like egui draws or flat.
+  'egui-like, strip, 2 triangles': [{ fs: 'egui_like strip', sampler: 'linear', vertices: 6 }],
+  'egui-like, strip, 100 triangles': [{ fs: 'egui_like strip', sampler: 'linear 50', vertices: 300 }],
+  'flat colour, strip, 100 triangles': [{ fs: 'flat strip', sampler: 'linear 50', vertices: 300 }],
 };
 const results = {};
 for (let round = 0; round < 3; round++) {
