@@ -4,6 +4,7 @@
 use crate::app::{ActiveGesture, MarblingApp};
 use crate::canvas_gpu::{CanvasCallback, CanvasPlacement, FrameRequest};
 use crate::overlay;
+use crate::overlay_gpu;
 use crate::tools::{Gesture, ops_for};
 use crate::view::ViewState;
 use eframe::egui_wgpu;
@@ -55,6 +56,9 @@ impl MarblingApp {
                 Color32::WHITE,
             );
         }
+        // The sheet's outline and the tool overlay: untextured shapes, drawn by the
+        // flat-mesh pipeline (`overlay_gpu.rs`) where there is a wgpu renderer.
+        let overlay_start = crate::panel_cache::shape_count(ui.ctx(), painter.layer_id());
         painter.rect_stroke(
             sheet,
             0.0,
@@ -72,6 +76,13 @@ impl MarblingApp {
         if self.mode == crate::mode::Mode::Marbling {
             overlay::draw(&painter, rect, &view, self, design_pointer);
         }
+        let overlay_end = crate::panel_cache::shape_count(ui.ctx(), painter.layer_id());
+        overlay_gpu::substitute(
+            ui.ctx(),
+            frame.wgpu_render_state().map(|rs| rs.target_format),
+            painter.layer_id(),
+            overlay_start..overlay_end,
+        );
     }
 
     /// Pan (middle drag, space + drag, two fingers) and zoom (wheel, pinch).

@@ -14,6 +14,7 @@ pub mod mode;
 mod noise_panel;
 pub mod noise_settings;
 mod overlay;
+mod overlay_gpu;
 pub mod palettes;
 mod panel;
 mod panel_cache;
@@ -22,6 +23,8 @@ pub mod playback;
 pub mod preview_quality;
 pub mod recovery;
 pub mod style;
+#[cfg(test)]
+mod test_window;
 pub mod thumbnails;
 pub mod tools;
 pub mod view;

@@ -245,6 +245,12 @@ impl PanelCache {
     }
 }
 
+/// The number of shapes painted so far this pass on `layer` (the index the next one
+/// gets).
+pub(crate) fn shape_count(ctx: &egui::Context, layer: LayerId) -> usize {
+    ctx.graphics(|g| g.get(layer).map_or(0, |l| l.next_idx().0))
+}
+
 /// egui's screen in points times `pixels_per_point`, rounded: the window in pixels.
 fn estimated_size(ctx: &egui::Context, pixels_per_point: f32) -> [u32; 2] {
     let points = ctx.viewport_rect().size();
@@ -258,7 +264,7 @@ fn estimated_size(ctx: &egui::Context, pixels_per_point: f32) -> [u32; 2] {
 /// renderer's buffers uploaded, then one pass into `view` cleared to `clear_color`.
 /// Returns the command buffers of paint callbacks' preparation, to be submitted before
 /// `encoder`'s.
-fn record_egui(
+pub(crate) fn record_egui(
     (device, queue): (&wgpu::Device, &wgpu::Queue),
     renderer: &mut egui_wgpu::Renderer,
     encoder: &mut wgpu::CommandEncoder,
@@ -342,40 +348,21 @@ impl egui_wgpu::CallbackTrait for PanelCopy {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use egui::mutex::RwLock;
-    use marbling_gpu::{GpuContext, RenderTarget, copy_to_buffer, read_buffer};
+    use crate::test_window::{CLEAR, Window, differing};
 
-    const FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8Unorm;
     const SIZE: [u32; 2] = [320, 240];
-    const CLEAR: [f32; 4] = [0.2, 0.2, 0.2, 1.0];
 
-    /// An egui context drawn by egui's wgpu renderer the way eframe draws a window.
-    struct Window {
-        ctx: egui::Context,
-        gpu: GpuContext,
-        renderer: RwLock<egui_wgpu::Renderer>,
+    /// A window whose side panel and status bar are offered to a panel cache.
+    struct Panels {
+        window: Window,
         cache: PanelCache,
-        /// The window's size, pixels (one pixel per point).
-        size: [u32; 2],
     }
 
-    impl Window {
+    impl Panels {
         fn new() -> Option<Self> {
-            let gpu = match GpuContext::new_headless() {
-                Ok(g) => g,
-                Err(e) if std::env::var("MARBLING_SKIP_GPU").is_ok_and(|v| v == "1") => {
-                    eprintln!("MARBLING_SKIP_GPU=1: skipping GPU test ({e})");
-                    return None;
-                }
-                Err(e) => panic!("GPU test cannot run: {e}"),
-            };
-            let renderer = egui_wgpu::Renderer::new(&gpu.device, FORMAT, Default::default());
             Some(Self {
-                ctx: egui::Context::default(),
-                gpu,
-                renderer: RwLock::new(renderer),
+                window: Window::new(SIZE)?,
                 cache: PanelCache::default(),
-                size: SIZE,
             })
         }
 
@@ -383,102 +370,28 @@ mod tests {
         /// (their shapes offered to the cache) and a canvas label; returns the window's
         /// pixels (RGBA).
         fn frame(&mut self, heading: &str, status: &str) -> Vec<u8> {
-            let input = egui::RawInput {
-                screen_rect: Some(Rect::from_min_size(
-                    egui::Pos2::ZERO,
-                    egui::vec2(self.size[0] as f32, self.size[1] as f32),
-                )),
-                ..Default::default()
-            };
-            let Self {
-                ctx,
-                gpu,
-                renderer,
-                cache,
-                ..
-            } = self;
-            let output = ctx.run_ui(input, |ui| {
+            let cache = &mut self.cache;
+            self.window.frame(|ui, gpu| {
                 let layer = ui.layer_id();
-                let count = |ui: &egui::Ui| {
-                    ui.ctx()
-                        .graphics(|g| g.get(layer).map_or(0, |l| l.next_idx().0))
-                };
-                let start = count(ui);
+                let start = shape_count(ui.ctx(), layer);
                 egui::Panel::left("panel").show(ui, |ui| {
                     ui.heading(heading);
                     let _ = ui.button("A button");
                     ui.add(egui::Slider::new(&mut 0.25_f32, 0.0..=1.0));
                     ui.label("Ink, palette and history");
                 });
-                let end = count(ui);
+                let end = shape_count(ui.ctx(), layer);
                 egui::Panel::bottom("status").show(ui, |ui| ui.label(status));
-                let panel_gpu = PanelGpu {
-                    device: &gpu.device,
-                    queue: &gpu.queue,
-                    target_format: FORMAT,
-                    renderer,
-                };
-                let panels = [start..end, end..count(ui)];
-                cache.substitute(ui.ctx(), Some(panel_gpu), layer, &panels, CLEAR);
+                let panels = [start..end, end..shape_count(ui.ctx(), layer)];
+                cache.substitute(ui.ctx(), Some(gpu), layer, &panels, CLEAR);
                 egui::CentralPanel::default().show(ui, |ui| ui.label("the canvas"));
-            });
-            let primitives = ctx.tessellate(output.shapes, output.pixels_per_point);
-            let mut textures = output.textures_delta;
-            let pixels = self.draw(&mut textures, &primitives, output.pixels_per_point);
-            textures.clear();
-            pixels
-        }
-
-        /// Draws as eframe does: textures, buffers, one pass cleared to [`CLEAR`].
-        fn draw(
-            &self,
-            textures: &mut egui::TexturesDelta,
-            primitives: &[egui::ClippedPrimitive],
-            pixels_per_point: f32,
-        ) -> Vec<u8> {
-            let (device, queue) = (&self.gpu.device, &self.gpu.queue);
-            let mut renderer = self.renderer.write();
-            for (id, deltas) in textures.set.drain() {
-                for delta in &deltas {
-                    renderer.update_texture(device, queue, id, delta);
-                }
-            }
-            let screen = egui_wgpu::ScreenDescriptor {
-                size_in_pixels: self.size,
-                pixels_per_point,
-            };
-            let mut encoder = device.create_command_encoder(&Default::default());
-            let [w, h] = self.size;
-            let target = RenderTarget::new(device, w, h, FORMAT);
-            let prepared = record_egui(
-                (device, queue),
-                &mut renderer,
-                &mut encoder,
-                &target.view,
-                CLEAR,
-                primitives,
-                &screen,
-            );
-            let (buffer, padded) = copy_to_buffer(device, &mut encoder, &target);
-            queue.submit(prepared.into_iter().chain([encoder.finish()]));
-            let row = w as usize * 4;
-            let mut pixels = vec![0; row * h as usize];
-            read_buffer(&self.gpu, &buffer, padded, w, h, |y, b| {
-                pixels[y as usize * row..(y as usize + 1) * row].copy_from_slice(b);
             })
-            .expect("readback");
-            pixels
         }
-    }
-
-    /// Pixels that differ between two windows.
-    fn differing(a: &[u8], b: &[u8]) -> usize {
-        a.chunks(4).zip(b.chunks(4)).filter(|(p, q)| p != q).count()
     }
 
     #[test]
     fn unchanged_panels_are_copied_and_look_exactly_as_egui_draws_them() {
-        let Some(mut window) = Window::new() else {
+        let Some(mut window) = Panels::new() else {
             return;
         };
         // egui sizes the panel in the first frame; the second is egui's own drawing of
@@ -498,7 +411,7 @@ mod tests {
 
     #[test]
     fn a_changed_panel_is_drawn_by_egui_and_then_cached_anew() {
-        let Some(mut window) = Window::new() else {
+        let Some(mut window) = Panels::new() else {
             return;
         };
         window.frame("Tools", "3 ops");
@@ -519,7 +432,7 @@ mod tests {
 
     #[test]
     fn a_changed_status_bar_alone_is_noticed_too() {
-        let Some(mut window) = Window::new() else {
+        let Some(mut window) = Panels::new() else {
             return;
         };
         window.frame("Tools", "3 ops");
@@ -540,7 +453,7 @@ mod tests {
 
     #[test]
     fn a_resized_window_is_drawn_by_egui_then_cached_at_its_new_size() {
-        let Some(mut window) = Window::new() else {
+        let Some(mut window) = Panels::new() else {
             return;
         };
         window.frame("Tools", "3 ops");
@@ -548,7 +461,7 @@ mod tests {
         window.frame("Tools", "3 ops");
         assert_eq!((window.cache.copies, window.cache.renders), (1, 1));
         // Taller and wider: the first frame at the new size is egui's own drawing.
-        window.size = [400, 300];
+        window.window.size = [400, 300];
         let resized = window.frame("Tools", "3 ops");
         assert_eq!((window.cache.copies, window.cache.renders), (1, 1));
         // Then the panels come from a texture made at the new size: a texture left at
