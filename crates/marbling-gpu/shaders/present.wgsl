@@ -1,9 +1,11 @@
 // Shows a rendered texture 1:1 in part of a render pass (the app's canvas, its cached
-// panels): target pixel p shows texel p − origin (textureLoad: no filtering, clamped to
-// the texture's edge), nothing is blended. The pass's scissor rectangle says which
-// pixels are drawn. Both entry points are straight-line code: a software GPU runs every
-// branch of a shader for every pixel, so the choice between copying and decoding is made
-// by picking the pipeline, not by a uniform. `common.wgsl` is prepended.
+// panels): target pixel p shows texel p − origin, nothing is blended. The texel is
+// sampled at its centre with a nearest-texel sampler clamped to the texture's edge:
+// exactly the texel, and cheaper than textureLoad on SwiftShader (docs/BENCHMARKS.md).
+// The pass's scissor rectangle says which pixels are drawn. Both entry points are
+// straight-line code: a software GPU runs every branch of a shader for every pixel, so
+// the choice between copying and decoding is made by picking the pipeline, not by a
+// uniform. `common.wgsl` is prepended.
 
 // Keep in sync with `PresentParams` in src/params.rs (checked by tests/layout.rs).
 struct PresentParams {
@@ -14,17 +16,18 @@ struct PresentParams {
 
 @group(0) @binding(0) var<uniform> params: PresentParams;
 @group(0) @binding(1) var image: texture_2d<f32>;
+@group(0) @binding(2) var nearest: sampler;
 
 @vertex
 fn vs_main(@builtin(vertex_index) vertex: u32) -> @builtin(position) vec4<f32> {
     return fullscreen_position(vertex);
 }
 
-// The texel under target pixel `position`.
+// The texel under target pixel `position` (a pixel centre; `origin` is whole pixels, so
+// the sample point is the texel's centre).
 fn texel_at(position: vec2<f32>) -> vec4<f32> {
-    let last = vec2<i32>(textureDimensions(image)) - vec2<i32>(1);
-    let texel = clamp(vec2<i32>(floor(position - params.origin)), vec2<i32>(0), last);
-    return textureLoad(image, texel, 0);
+    let size = vec2<f32>(textureDimensions(image));
+    return textureSampleLevel(image, nearest, (position - params.origin) / size, 0.0);
 }
 
 // Texels that need no conversion, written as they are (a …Unorm target showing

@@ -1,6 +1,6 @@
 //! Showing a rendered texture 1:1 inside someone else's render pass (the app's canvas and
-//! cached panels, in egui's pass): texels are copied with `textureLoad` within the pass's
-//! scissor rectangle, nothing is filtered or blended (shaders/present.wgsl). The exact
+//! cached panels, in egui's pass): texels are copied, sampled at their centres with a
+//! nearest-texel sampler, within the pass's scissor rectangle, nothing is filtered or blended (shaders/present.wgsl). The exact
 //! bytes of the render reach the screen, and on software GPUs (SwiftShader) such a draw
 //! costs a fraction of egui's textured, blended image (docs/BENCHMARKS.md, "Where the
 //! time goes").
@@ -17,6 +17,8 @@ pub struct Presenter {
     copy_pipeline: wgpu::RenderPipeline,
     /// `fs_decode`: sRGB-encoded texels for an `…UnormSrgb` target.
     decode_pipeline: wgpu::RenderPipeline,
+    /// Nearest-texel, clamped to the edge.
+    sampler: wgpu::Sampler,
     /// The target is `…UnormSrgb`.
     srgb_target: bool,
 }
@@ -51,6 +53,12 @@ impl Presenter {
             entries: &[
                 bindings::uniform::<PresentParams>(0, fragment),
                 bindings::texture_2d(1, fragment, false),
+                wgpu::BindGroupLayoutEntry {
+                    binding: 2,
+                    visibility: fragment,
+                    ty: wgpu::BindingType::Sampler(wgpu::SamplerBindingType::NonFiltering),
+                    count: None,
+                },
             ],
         });
         let pipeline_layout = bindings::pipeline_layout(device, "marbling present", &layout);
@@ -65,10 +73,15 @@ impl Presenter {
                     format,
                 )
             });
+        let sampler = device.create_sampler(&wgpu::SamplerDescriptor {
+            label: Some("marbling present"),
+            ..Default::default()
+        });
         Self {
             layout,
             copy_pipeline,
             decode_pipeline,
+            sampler,
             srgb_target: format.is_srgb(),
         }
     }
@@ -108,6 +121,10 @@ impl Presenter {
                 wgpu::BindGroupEntry {
                     binding: 1,
                     resource: wgpu::BindingResource::TextureView(view),
+                },
+                wgpu::BindGroupEntry {
+                    binding: 2,
+                    resource: wgpu::BindingResource::Sampler(&self.sampler),
                 },
             ],
         });
