@@ -8,27 +8,14 @@
 // rest by thread. Results: docs/BENCHMARKS.md, "eighth session".
 import { execFileSync, spawn } from 'node:child_process';
 import { launch } from './harness.mjs';
-import { tineOverSheet, wiggle } from './probe.mjs';
+import { skipDraws, tineOverSheet, wiggle } from './probe.mjs';
 
 const SECONDS = 6;
 const HZ = 999;
 const [skip = '^$', ...extra] = process.argv.slice(2);
 const { browser, site } = await launch('webgpu', extra);
 const context = await browser.newContext({ viewport: { width: 1024, height: 768 }, deviceScaleFactor: 1 });
-await context.addInitScript((skip) => {
-  const re = new RegExp(skip);
-  const labels = new WeakMap();
-  const D = GPUDevice.prototype;
-  const create = D.createRenderPipeline;
-  D.createRenderPipeline = function (desc) { const p = create.call(this, desc); labels.set(p, desc.label ?? '?'); return p; };
-  const P = GPURenderPassEncoder.prototype;
-  const setPipeline = P.setPipeline;
-  P.setPipeline = function (p) { this.__label = labels.get(p) ?? '?'; return setPipeline.call(this, p); };
-  for (const k of ['draw', 'drawIndexed']) {
-    const f = P[k];
-    P[k] = function (...a) { return re.test(`${this.__label} ${a[0]}`) ? undefined : f.apply(this, a); };
-  }
-}, skip);
+await skipDraws(context, skip);
 const page = await context.newPage();
 await page.goto(site.url);
 await page.waitForFunction(() => document.body.dataset.previewReady === '1', null, { timeout: 240_000 });

@@ -1,7 +1,7 @@
-// Shared by the diagnosis scripts (drag-rate, skip-draws, trace, gpu-calls, ab-drag;
-// not run by npm test): the gallery design with its live-preview cache built, the tine
-// tool chosen, and the pointer wiggled over the sheet; and the perf test's gesture
-// (`sweep`, used by perf.test.mjs too).
+// Shared by the diagnosis scripts (drag-rate, skip-draws, jit-profile, trace, gpu-calls,
+// ab-drag; not run by npm test): the gallery design with its live-preview cache built,
+// the tine tool chosen, and the pointer wiggled over the sheet; WebGPU draws skipped by
+// pipeline label; and the perf test's gesture (`sweep`, used by perf.test.mjs too).
 import { attr, sheet } from './harness.mjs';
 
 /** Waits for the preview cache of the shown design, picks the tine tool (key 3) and
@@ -39,4 +39,36 @@ export async function sweep(page, x, y, ms, step = 5, amplitude = 40) {
   await page.mouse.move(x, y);
   const frames = Number(await attr(page, 'data-frames')) - f0;
   return (1000 * frames) / (Date.now() - t0);
+}
+
+/** Makes every page of `context` skip the WebGPU draws whose "LABEL COUNT" (the render
+ *  pipeline's label, the draw's vertex or index count) matches the regex `skip`, and
+ *  count the draws per label in `window.drawn`. */
+export async function skipDraws(context, skip) {
+  await context.addInitScript((skip) => {
+    const re = new RegExp(skip);
+    const labels = new WeakMap();
+    window.drawn = {};
+    const D = GPUDevice.prototype;
+    for (const k of ['createRenderPipeline', 'createRenderPipelineAsync']) {
+      const f = D[k];
+      D[k] = function (desc) {
+        const r = f.call(this, desc);
+        if (r instanceof Promise) return r.then((p) => { labels.set(p, desc.label ?? '?'); return p; });
+        labels.set(r, desc.label ?? '?');
+        return r;
+      };
+    }
+    const P = GPURenderPassEncoder.prototype;
+    const setPipeline = P.setPipeline;
+    P.setPipeline = function (p) { this.__label = labels.get(p) ?? '?'; return setPipeline.call(this, p); };
+    for (const k of ['draw', 'drawIndexed']) {
+      const f = P[k];
+      P[k] = function (...a) {
+        window.drawn[this.__label] = (window.drawn[this.__label] ?? 0) + 1;
+        if (re.test(`${this.__label} ${a[0]}`)) return undefined;
+        return f.apply(this, a);
+      };
+    }
+  }, skip);
 }

@@ -3,36 +3,11 @@
 // which bounds what each pipeline costs: node skip-draws.mjs SKIP [flags…]. SKIP is
 // matched against "LABEL COUNT" (COUNT: the draw's vertex or index count).
 import { launch } from './harness.mjs';
-import { tineOverSheet, wiggle } from './probe.mjs';
+import { skipDraws, tineOverSheet, wiggle } from './probe.mjs';
 const [skip = '^$', ...extra] = process.argv.slice(2);
 const { browser, site } = await launch('webgpu', extra);
 const context = await browser.newContext({ viewport: { width: 1024, height: 768 }, deviceScaleFactor: 1 });
-await context.addInitScript((skip) => {
-  const re = new RegExp(skip);
-  const labels = new WeakMap();
-  window.drawn = {};
-  const D = GPUDevice.prototype;
-  for (const k of ['createRenderPipeline', 'createRenderPipelineAsync']) {
-    const f = D[k];
-    D[k] = function (desc) {
-      const r = f.call(this, desc);
-      if (r instanceof Promise) return r.then((p) => { labels.set(p, desc.label ?? '?'); return p; });
-      labels.set(r, desc.label ?? '?');
-      return r;
-    };
-  }
-  const P = GPURenderPassEncoder.prototype;
-  const setPipeline = P.setPipeline;
-  P.setPipeline = function (p) { this.__label = labels.get(p) ?? '?'; return setPipeline.call(this, p); };
-  for (const k of ['draw', 'drawIndexed']) {
-    const f = P[k];
-    P[k] = function (...a) {
-      window.drawn[this.__label] = (window.drawn[this.__label] ?? 0) + 1;
-      if (re.test(`${this.__label} ${a[0]}`)) return undefined;
-      return f.apply(this, a);
-    };
-  }
-}, skip);
+await skipDraws(context, skip);
 const page = await context.newPage();
 await page.goto(site.url);
 const at = await tineOverSheet(page);

@@ -665,7 +665,7 @@ impl eframe::App for MarblingApp {
         // fills cost nothing while the panels are unchanged: they are part of the panels'
         // cached texture.
         let layer = ui.layer_id();
-        let shape_count = || crate::panel_cache::shape_count(&ctx, layer);
+        let shape_count = || crate::layer_shapes::count(&ctx, layer);
         let panel_start = shape_count();
         egui::Panel::left("marbling_tools")
             .frame(egui::Frame::side_top_panel(ui.style()))

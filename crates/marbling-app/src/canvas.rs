@@ -58,7 +58,7 @@ impl MarblingApp {
         }
         // The sheet's outline and the tool overlay: untextured shapes, drawn by the
         // flat-mesh pipeline (`overlay_gpu.rs`) where there is a wgpu renderer.
-        let overlay_start = crate::panel_cache::shape_count(ui.ctx(), painter.layer_id());
+        let overlay_start = crate::layer_shapes::count(ui.ctx(), painter.layer_id());
         painter.rect_stroke(
             sheet,
             0.0,
@@ -76,7 +76,7 @@ impl MarblingApp {
         if self.mode == crate::mode::Mode::Marbling {
             overlay::draw(&painter, rect, &view, self, design_pointer);
         }
-        let overlay_end = crate::panel_cache::shape_count(ui.ctx(), painter.layer_id());
+        let overlay_end = crate::layer_shapes::count(ui.ctx(), painter.layer_id());
         overlay_gpu::substitute(
             ui.ctx(),
             frame.wgpu_render_state().map(|rs| rs.target_format),

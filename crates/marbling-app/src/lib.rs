@@ -10,6 +10,7 @@ pub mod export;
 pub mod gallery;
 pub mod gpu_errors;
 pub mod history;
+mod layer_shapes;
 pub mod mode;
 mod noise_panel;
 pub mod noise_settings;

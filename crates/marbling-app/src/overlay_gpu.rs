@@ -9,8 +9,9 @@
 //! [`marbling_gpu::FlatMeshRenderer`] in a paint callback: the same triangles, colours
 //! and blending, without the texture lookup and without egui's dithering.
 
+use crate::layer_shapes;
 use eframe::egui_wgpu;
-use egui::epaint::{ClippedShape, Primitive, Shape, WHITE_UV};
+use egui::epaint::{Primitive, Shape, WHITE_UV};
 use egui::{LayerId, Rect};
 use marbling_gpu::{FlatMeshRenderer, FlatVertex};
 use std::ops::Range;
@@ -44,15 +45,7 @@ pub fn substitute(
     let Some(target_format) = target_format else {
         return false;
     };
-    let shapes: Vec<ClippedShape> = ctx.graphics(|g| {
-        g.get(layer).map_or_else(Vec::new, |list| {
-            list.all_entries()
-                .skip(range.start)
-                .take(range.len())
-                .cloned()
-                .collect()
-        })
-    });
+    let shapes = layer_shapes::get(ctx, layer, range.clone());
     if shapes.is_empty() || shapes.iter().any(|s| matches!(s.shape, Shape::Callback(_))) {
         return false;
     }
@@ -88,13 +81,7 @@ pub fn substitute(
             .push((primitive.clip_rect, start..flat.indices.len() as u32));
     }
     let callback = egui_wgpu::Callback::new_paint_callback(area, flat);
-    ctx.graphics_mut(|g| {
-        let list = g.entry(layer);
-        for i in range.clone() {
-            list.reset_shape(egui::layers::ShapeIdx(i));
-        }
-        list.set(egui::layers::ShapeIdx(range.start), area, callback.into());
-    });
+    layer_shapes::replace(ctx, layer, range, area, callback.into());
     true
 }
 
@@ -163,7 +150,7 @@ impl egui_wgpu::CallbackTrait for FlatShapes {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::panel_cache::shape_count;
+    use crate::layer_shapes::count as shape_count;
     use crate::test_window::{FORMAT, Window, differing};
     use egui::{Color32, Pos2, Stroke};
 

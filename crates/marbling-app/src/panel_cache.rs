@@ -16,6 +16,7 @@
 //! would draw. It assumes eframe's default render options, which `main.rs` uses: no MSAA
 //! and no depth buffer.
 
+use crate::layer_shapes;
 use eframe::egui_wgpu;
 use egui::epaint::{ClippedShape, Shape};
 use egui::{LayerId, Rect};
@@ -113,20 +114,10 @@ impl PanelCache {
         let Some(gpu) = gpu else {
             return;
         };
-        let shapes: Vec<Vec<ClippedShape>> = ctx.graphics(|g| {
-            panels
-                .iter()
-                .map(|range| {
-                    g.get(layer).map_or_else(Vec::new, |list| {
-                        list.all_entries()
-                            .skip(range.start)
-                            .take(range.len())
-                            .cloned()
-                            .collect()
-                    })
-                })
-                .collect()
-        });
+        let shapes: Vec<Vec<ClippedShape>> = panels
+            .iter()
+            .map(|range| layer_shapes::get(ctx, layer, range.clone()))
+            .collect();
         let cacheable = |p: &Vec<ClippedShape>| {
             !p.is_empty() && !p.iter().any(|s| matches!(s.shape, Shape::Callback(_)))
         };
@@ -167,28 +158,22 @@ impl PanelCache {
             egui::vec2(size_in_pixels[0] as f32, size_in_pixels[1] as f32) / pixels_per_point,
         );
         let estimated_size = estimated_size(ctx, pixels_per_point);
-        ctx.graphics_mut(|g| {
-            let list = g.entry(layer);
-            for (range, shapes) in panels.iter().zip(&snapshot.panels) {
-                let area = shapes
-                    .iter()
-                    .map(|s| s.clip_rect)
-                    .fold(Rect::NOTHING, |a, b| a.union(b))
-                    .intersect(screen);
-                let copy = egui_wgpu::Callback::new_paint_callback(
-                    area,
-                    PanelCopy {
-                        texture: texture.clone(),
-                        estimated_size,
-                        painted_size: self.painted_size.clone(),
-                    },
-                );
-                for i in range.clone() {
-                    list.reset_shape(egui::layers::ShapeIdx(i));
-                }
-                list.set(egui::layers::ShapeIdx(range.start), area, copy.into());
-            }
-        });
+        for (range, shapes) in panels.iter().zip(&snapshot.panels) {
+            let area = shapes
+                .iter()
+                .map(|s| s.clip_rect)
+                .fold(Rect::NOTHING, |a, b| a.union(b))
+                .intersect(screen);
+            let copy = egui_wgpu::Callback::new_paint_callback(
+                area,
+                PanelCopy {
+                    texture: texture.clone(),
+                    estimated_size,
+                    painted_size: self.painted_size.clone(),
+                },
+            );
+            layer_shapes::replace(ctx, layer, range.clone(), area, copy.into());
+        }
         self.copies += 1;
     }
 
@@ -243,12 +228,6 @@ impl PanelCache {
             .submit(prepared.into_iter().chain([encoder.finish()]));
         self.renders += 1;
     }
-}
-
-/// The number of shapes painted so far this pass on `layer` (the index the next one
-/// gets).
-pub(crate) fn shape_count(ctx: &egui::Context, layer: LayerId) -> usize {
-    ctx.graphics(|g| g.get(layer).map_or(0, |l| l.next_idx().0))
 }
 
 /// egui's screen in points times `pixels_per_point`, rounded: the window in pixels.
@@ -373,16 +352,16 @@ mod tests {
             let cache = &mut self.cache;
             self.window.frame(|ui, gpu| {
                 let layer = ui.layer_id();
-                let start = shape_count(ui.ctx(), layer);
+                let start = layer_shapes::count(ui.ctx(), layer);
                 egui::Panel::left("panel").show(ui, |ui| {
                     ui.heading(heading);
                     let _ = ui.button("A button");
                     ui.add(egui::Slider::new(&mut 0.25_f32, 0.0..=1.0));
                     ui.label("Ink, palette and history");
                 });
-                let end = shape_count(ui.ctx(), layer);
+                let end = layer_shapes::count(ui.ctx(), layer);
                 egui::Panel::bottom("status").show(ui, |ui| ui.label(status));
-                let panels = [start..end, end..shape_count(ui.ctx(), layer)];
+                let panels = [start..end, end..layer_shapes::count(ui.ctx(), layer)];
                 cache.substitute(ui.ctx(), Some(gpu), layer, &panels, CLEAR);
                 egui::CentralPanel::default().show(ui, |ui| ui.label("the canvas"));
             })
