@@ -1,5 +1,7 @@
 //! The playground app: state, what changes it, and the frame loop.
 
+use crate::action::Action;
+use crate::autosave;
 use crate::canvas_gpu::{CanvasGpu, CanvasStatus};
 use crate::export::{ExportSize, ExportStep, PngExport, export_file_name};
 use crate::gpu_errors::GpuErrors;
@@ -13,7 +15,7 @@ use crate::recovery::{self, LostFlag, ParkedState};
 use crate::tools::{Gesture, ToolKind, ToolSettings};
 use crate::view::ViewState;
 use crate::{History, PALETTES};
-use marbling_core::{Antialias, Design, DesignError, Op, Rgb8, decode_share, share_fragment};
+use marbling_core::{Antialias, Design, DesignError, Rgb8, decode_share, share_fragment};
 use std::sync::{Arc, Mutex};
 
 /// A line shown in the status bar; errors also go to `data-error`.
@@ -67,6 +69,22 @@ pub struct MarblingApp {
     /// False when no wgpu render state exists (the canvas then says so).
     pub(crate) gpu: bool,
     pub(crate) autosave_pending: bool,
+    /// The autosave's sequence number and the design not yet written (taken by the
+    /// page-hide handler, which may run between frames).
+    pub(crate) unsaved: Arc<Mutex<Unsaved>>,
+    /// When the autosave was last written, ms since 1970.
+    pub(crate) last_autosave_ms: f64,
+    /// Storage writes waiting for a frame (key, value).
+    pub(crate) pending_writes: Vec<(&'static str, String)>,
+    /// The preferences last stored, and when.
+    pub(crate) stored_prefs: (Option<crate::prefs::Prefs>, f64),
+    /// *Recent designs* (kept in storage).
+    pub(crate) recent: crate::recent::Recent,
+    /// True when the recent list must be written.
+    pub(crate) recent_pending: bool,
+    /// Thumbnails of recent designs, by share fragment (made on first show).
+    /// (`None`: too large to draw one quickly, or unreadable).
+    pub(crate) recent_thumbnails: std::collections::HashMap<String, Option<egui::TextureHandle>>,
     pub(crate) hooks: Vec<(&'static str, Option<String>)>,
     pub(crate) new_size: [u32; 2],
     /// The sheet's top-left corner on the page (physical pixels) and the scale.
@@ -101,6 +119,32 @@ pub struct MarblingApp {
     pub(crate) panel_cache: crate::panel_cache::PanelCache,
 }
 
+/// The autosave state shared with the page-hide handler.
+#[derive(Debug, Default)]
+pub struct Unsaved {
+    /// Sequence number of the last record written.
+    pub seq: u64,
+    /// The design waiting to be written, if any.
+    pub design: Option<Arc<Design>>,
+}
+
+impl Unsaved {
+    /// Writes the waiting design now, if any (the page is being hidden).
+    pub fn flush(&mut self, store: impl FnOnce(&str, &str) -> Result<(), String>) {
+        if let Some(d) = self.design.take() {
+            let seq = self.seq + 1;
+            if store(
+                autosave::slot(seq),
+                &autosave::encode(seq, platform::now_ms(), &d),
+            )
+            .is_ok()
+            {
+                self.seq = seq;
+            }
+        }
+    }
+}
+
 /// Default canvas of a new design, design pixels.
 pub const NEW_SIZE: [u32; 2] = [1024, 768];
 
@@ -133,15 +177,43 @@ impl MarblingApp {
             app.info("the GPU device was lost: the renderer was restarted, your work is kept");
             return app;
         }
-        if let Some(json) = platform::load_autosave(cc.storage) {
-            match Design::from_json(&json) {
-                Ok(d) => app.history.replace(d),
-                Err(e) => app.error(format!(
-                    "autosave could not be restored: {}",
-                    first_line(&e)
-                )),
+        let load = |key: &str| platform::load_string(cc.storage, key);
+        let found = autosave::newest(
+            [load(autosave::SLOTS[0]), load(autosave::SLOTS[1])],
+            load(autosave::LEGACY_KEY),
+        );
+        if let Some(r) = found.record {
+            app.history = History::new(r.design);
+            if let Ok(mut u) = app.unsaved.lock() {
+                u.seq = r.seq;
             }
         }
+        for (key, why) in found.unreadable {
+            // Kept where no autosave overwrites it.
+            if let Some(text) = load(&key) {
+                app.pending_writes.push((autosave::UNREADABLE_KEY, text));
+            }
+            app.error(format!(
+                "the autosave could not be restored ({why}); its text is kept under {}",
+                autosave::UNREADABLE_KEY
+            ));
+        }
+        if let Some(text) = load(crate::prefs::KEY) {
+            match crate::prefs::Prefs::decode(&text, app.prefs()) {
+                Ok(p) => app.set_prefs(p),
+                Err(e) => log::warn!("{e}"),
+            }
+        }
+        app.stored_prefs.0 = Some(app.prefs());
+        if let Some(text) = load(crate::recent::KEY) {
+            app.recent = crate::recent::Recent::decode(&text);
+        }
+        let unsaved = app.unsaved.clone();
+        platform::on_page_hide(move || {
+            if let Ok(mut u) = unsaved.lock() {
+                u.flush(platform::store_now);
+            }
+        });
         app.refresh();
         app.check_fragment();
         app
@@ -172,6 +244,13 @@ impl MarblingApp {
             backend,
             gpu,
             autosave_pending: false,
+            unsaved: Default::default(),
+            last_autosave_ms: f64::NEG_INFINITY,
+            pending_writes: Vec::new(),
+            stored_prefs: (None, f64::NEG_INFINITY),
+            recent: Default::default(),
+            recent_pending: false,
+            recent_thumbnails: Default::default(),
             hooks: Vec::new(),
             new_size: NEW_SIZE,
             sheet_on_page: None,
@@ -190,6 +269,25 @@ impl MarblingApp {
             noise_analysis: None,
             panel_cache: Default::default(),
         }
+    }
+
+    /// The preferences now in force.
+    pub(crate) fn prefs(&self) -> crate::prefs::Prefs {
+        crate::prefs::Prefs {
+            tool: self.tool,
+            settings: self.settings,
+            palette: self.palette,
+            ink: self.ink,
+            antialias: self.antialias,
+        }
+    }
+
+    fn set_prefs(&mut self, p: crate::prefs::Prefs) {
+        self.tool = p.tool;
+        self.settings = p.settings;
+        self.palette = p.palette;
+        self.ink = p.ink;
+        self.antialias = p.antialias;
     }
 
     /// The editing state a restarted renderer must keep.
@@ -281,52 +379,10 @@ impl MarblingApp {
 
     /// Replaces the design's noise background and overlays (`what` for the status bar).
     pub(crate) fn set_surface(&mut self, surface: Surface, what: &str) {
-        self.history.set_surface(surface);
-        self.set_mode(Mode::Marbling);
-        self.refresh();
-        self.autosave_pending = true;
-        self.info(format!("design surface: {what}"));
-    }
-
-    /// Appends ops made by a tool, then autosaves.
-    pub(crate) fn commit(&mut self, ops: Vec<Op>) {
-        if ops.is_empty() {
-            return;
-        }
-        self.playback = None;
-        for op in ops {
-            self.history.push(op);
-        }
-        self.refresh();
-        self.autosave_pending = true;
-    }
-
-    /// Replaces the design (New, Open, link, gallery) and fits it on the canvas.
-    pub(crate) fn load(&mut self, design: Design, from: &str) {
-        self.mode = Mode::Marbling;
-        self.playback = None;
-        self.active = None;
-        self.history.replace(design);
-        self.view = None;
-        self.refresh();
-        self.autosave_pending = true;
-        self.info(format!("opened {from}"));
-    }
-
-    pub(crate) fn undo(&mut self) {
-        if self.history.undo() {
-            self.playback = None;
-            self.refresh();
-            self.autosave_pending = true;
-        }
-    }
-
-    pub(crate) fn redo(&mut self) {
-        if self.history.redo() {
-            self.playback = None;
-            self.refresh();
-            self.autosave_pending = true;
-        }
+        self.apply(Action::SetSurface {
+            surface,
+            what: what.to_owned(),
+        });
     }
 
     pub(crate) fn error(&mut self, text: impl Into<String>) {
@@ -350,7 +406,11 @@ impl MarblingApp {
             return;
         };
         match Design::from_json(text) {
-            Ok(d) => self.load(d, name),
+            Ok(design) => self.apply(Action::Load {
+                design,
+                from: name.to_owned(),
+                from_link: false,
+            }),
             Err(e) => self.error(format!("{name}: {}", first_line(&e))),
         }
     }
@@ -367,7 +427,12 @@ impl MarblingApp {
             return;
         };
         match decode_share(&f) {
-            Ok(d) => self.load(d, "share link"),
+            Ok(design) if &design == self.history.design() => {}
+            Ok(design) => self.apply(Action::Load {
+                design,
+                from: "share link".to_owned(),
+                from_link: true,
+            }),
             Err(e) => self.error(first_line_of(&e.to_string())),
         }
     }
@@ -379,14 +444,6 @@ impl MarblingApp {
             platform::base_url(),
             share_fragment(self.history.design())
         )
-    }
-
-    /// Starts a new blank design with the palette's paper colour.
-    pub(crate) fn new_design(&mut self) {
-        let bg = PALETTES[self.palette].background;
-        let mut d = blank(self.new_size);
-        d.background = bg;
-        self.load(d, "a new design");
     }
 
     /// Starts Export PNG of the current design at the chosen size.
@@ -473,9 +530,9 @@ impl MarblingApp {
             )
         });
         if r {
-            self.redo();
+            self.apply(Action::Redo);
         } else if u {
-            self.undo();
+            self.apply(Action::Undo);
         }
         // Number keys 1–7 pick the tools in panel order (when no text field has focus).
         if !ctx.egui_wants_keyboard_input() {
@@ -516,12 +573,73 @@ impl MarblingApp {
         }
     }
 
-    fn autosave(&mut self, frame: &mut eframe::Frame) {
-        if !std::mem::take(&mut self.autosave_pending) {
+    /// Writes what storage is owed: waiting writes, the recent list, and the autosave
+    /// (at most one every [`autosave::MIN_INTERVAL_MS`]; the page-hide handler writes
+    /// a waiting one when the page goes away). A full storage drops the oldest recent
+    /// designs first, then says the design was not autosaved.
+    fn autosave(&mut self, frame: &mut eframe::Frame, ctx: &egui::Context) {
+        let prefs = self.prefs();
+        let now = platform::now_ms();
+        if self.stored_prefs.0 != Some(prefs)
+            && now - self.stored_prefs.1 >= autosave::MIN_INTERVAL_MS
+        {
+            self.pending_writes
+                .push((crate::prefs::KEY, prefs.encode()));
+            self.stored_prefs = (Some(prefs), now);
+        } else if self.stored_prefs.0 != Some(prefs) {
+            ctx.request_repaint_after(std::time::Duration::from_secs(1));
+        }
+        for (key, value) in std::mem::take(&mut self.pending_writes) {
+            if let Err(e) = platform::store_string(frame, key, &value) {
+                self.error(format!("{key}: {e}"));
+            }
+        }
+        if std::mem::take(&mut self.recent_pending) {
+            while let Err(e) =
+                platform::store_string(frame, crate::recent::KEY, &self.recent.encode())
+            {
+                if !self.recent.drop_oldest() {
+                    self.error(format!("recent designs were not saved: {e}"));
+                    break;
+                }
+            }
+        }
+        if !self.autosave_pending {
             return;
         }
-        if let Err(e) = platform::autosave(frame, &self.history.design().to_json_compact()) {
-            self.error(e);
+        let wait = self.last_autosave_ms + autosave::MIN_INTERVAL_MS - now;
+        if wait > 0.0 {
+            if let Ok(mut u) = self.unsaved.lock()
+                && u.design
+                    .as_ref()
+                    .is_none_or(|d| **d != *self.history.design())
+            {
+                u.design = Some(Arc::new(self.history.design().clone()));
+            }
+            ctx.request_repaint_after(std::time::Duration::from_secs_f64(wait / 1000.0));
+            return;
+        }
+        self.autosave_pending = false;
+        self.last_autosave_ms = now;
+        let Ok(mut u) = self.unsaved.lock() else {
+            return;
+        };
+        u.design = None;
+        let seq = u.seq + 1;
+        let text = autosave::encode(seq, now, self.history.design());
+        let mut result = platform::store_string(frame, autosave::slot(seq), &text);
+        while result.is_err() && self.recent.drop_oldest() {
+            let _ = platform::store_string(frame, crate::recent::KEY, &self.recent.encode());
+            result = platform::store_string(frame, autosave::slot(seq), &text);
+        }
+        match result {
+            Ok(()) => u.seq = seq,
+            Err(e) => {
+                drop(u);
+                self.error(format!(
+                    "the design was not autosaved ({e}): use Save JSON to keep it"
+                ));
+            }
         }
     }
 
@@ -701,8 +819,21 @@ impl eframe::App for MarblingApp {
         for e in self.gpu_errors.take() {
             self.error(e);
         }
-        self.autosave(frame);
+        self.autosave(frame, &ctx);
         self.update_hooks(&ctx);
+    }
+
+    /// Natively eframe calls this on exit: the waiting autosave is written.
+    fn save(&mut self, storage: &mut dyn eframe::Storage) {
+        if let Ok(mut u) = self.unsaved.lock() {
+            if self.autosave_pending && u.design.is_none() {
+                u.design = Some(Arc::new(self.history.design().clone()));
+            }
+            u.flush(|key, value| {
+                storage.set_string(key, value.to_owned());
+                Ok(())
+            });
+        }
     }
 }
 

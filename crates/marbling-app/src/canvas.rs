@@ -169,7 +169,7 @@ impl MarblingApp {
                 let done = self.active.take();
                 if let Some(a) = done {
                     let ops = ops_for(a.tool, &self.settings, &a.gesture, self.ink, a.seed);
-                    self.commit(ops);
+                    self.apply(crate::action::Action::Commit(ops));
                 }
             }
         }
@@ -207,14 +207,13 @@ impl MarblingApp {
             [op] if !matches!(op, Op::Spray(_)) => (self.shown.clone(), self.key, Some(*op)),
             many => {
                 // Several ops at once (spray, a rake of separate tines): exact render of
-                // the design with them appended.
+                // the design with them appended, keyed by what they are, so the
+                // preview follows every change of the stroke.
                 let mut d = (*self.shown).clone();
                 d.ops.extend_from_slice(many);
                 (
                     Arc::new(d),
-                    self.key
-                        .wrapping_mul(1_000_003)
-                        .wrapping_add(many.len() as u64 + (1 << 40)),
+                    (self.key.wrapping_mul(1_000_003) ^ fingerprint(many)) | (1 << 63),
                     None,
                 )
             }
@@ -246,6 +245,18 @@ impl MarblingApp {
         ui.painter()
             .add(egui_wgpu::Callback::new_paint_callback(rect, callback));
     }
+}
+
+/// A hash of `ops`' exact values (two lists differ in it unless they are equal, with
+/// the odds of a 64-bit hash collision).
+fn fingerprint(ops: &[Op]) -> u64 {
+    use std::hash::{Hash, Hasher};
+    let mut h = std::collections::hash_map::DefaultHasher::new();
+    for op in ops {
+        // Debug prints every f64 exactly (shortest round-trip form).
+        format!("{op:?}").hash(&mut h);
+    }
+    h.finish()
 }
 
 /// Vertical wheel movement this frame, points (up is positive), taken from the raw

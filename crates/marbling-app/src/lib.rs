@@ -3,13 +3,16 @@
 //! history of operations with undo/redo, the tools that turn pointer gestures into
 //! operations, palettes, share links, autosave and the example gallery.
 
+mod action;
 mod app;
+pub mod autosave;
 mod canvas;
 pub mod canvas_gpu;
 pub mod export;
 pub mod gallery;
 pub mod gpu_errors;
 pub mod history;
+mod labels;
 mod layer_shapes;
 pub mod mode;
 mod noise_panel;
@@ -21,7 +24,9 @@ mod panel;
 mod panel_cache;
 pub mod platform;
 pub mod playback;
+pub mod prefs;
 pub mod preview_quality;
+pub mod recent;
 pub mod recovery;
 pub mod style;
 #[cfg(test)]
@@ -30,6 +35,7 @@ pub mod thumbnails;
 pub mod tools;
 pub mod view;
 
+pub use action::Action;
 pub use app::{MarblingApp, Message};
 pub use history::History;
 pub use palettes::{PALETTES, Palette};

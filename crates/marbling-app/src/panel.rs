@@ -2,6 +2,7 @@
 //! the status bar.
 
 use crate::PALETTES;
+use crate::action::Action;
 use crate::app::MarblingApp;
 use crate::export::ExportSize;
 use crate::gallery::EXAMPLES;
@@ -45,6 +46,8 @@ impl MarblingApp {
         ui.separator();
         self.history_section(ui);
         ui.separator();
+        self.recent_section(ui);
+        ui.separator();
         self.gallery_section(ui);
     }
 
@@ -55,7 +58,7 @@ impl MarblingApp {
                 .on_hover_text("A blank sheet of the size below");
             self.control("new", &new);
             if new.clicked() {
-                self.new_design();
+                self.apply(Action::NewSheet);
             }
             let open = ui.button("Open…").on_hover_text("Open a design JSON file");
             self.control("open", &open);
@@ -291,11 +294,10 @@ impl MarblingApp {
             ui.label("ink");
             let bg = self.history.design().background;
             let mut rgb = [bg.r, bg.g, bg.b];
-            if egui::color_picker::color_edit_button_srgb(ui, &mut rgb).changed() {
-                self.history
-                    .set_background(Rgb8::new(rgb[0], rgb[1], rgb[2]));
-                self.refresh();
-                self.autosave_pending = true;
+            let paper = egui::color_picker::color_edit_button_srgb(ui, &mut rgb);
+            self.control("paper-color", &paper);
+            if paper.changed() {
+                self.apply(Action::SetPaperColor(Rgb8::new(rgb[0], rgb[1], rgb[2])));
             }
             ui.label("paper");
         });
@@ -306,31 +308,27 @@ impl MarblingApp {
         ui.horizontal(|ui| {
             let undo = ui
                 .add_enabled(self.history.can_undo(), egui::Button::new("Undo"))
-                .on_hover_text("Ctrl/Cmd+Z");
+                .on_hover_text("Ctrl/Cmd+Z: takes the last gesture back");
             self.control("undo", &undo);
             if undo.clicked() {
-                self.undo();
+                self.apply(Action::Undo);
             }
             let redo = ui
                 .add_enabled(self.history.can_redo(), egui::Button::new("Redo"))
                 .on_hover_text("Ctrl/Cmd+Shift+Z");
             self.control("redo", &redo);
             if redo.clicked() {
-                self.redo();
+                self.apply(Action::Redo);
             }
             let playing = self.playback.is_some();
             let play = ui.add_enabled(
-                self.history.can_undo(),
+                !self.history.design().ops.is_empty(),
                 egui::Button::new(if playing { "Stop" } else { "Play" }),
             );
             self.control("play", &play);
             if play.clicked() {
-                self.playback = if playing {
-                    None
-                } else {
-                    Some(Playback::start())
-                };
-                self.history.view(None);
+                self.apply(Action::View(None));
+                self.playback = (!playing).then(Playback::start);
                 self.refresh();
             }
         });
@@ -339,32 +337,150 @@ impl MarblingApp {
                 .text("ops/s")
                 .logarithmic(true),
         );
-        let n = self.history.design().ops.len();
-        let shown = self.history.shown_len();
+        let n = self.history.steps().len();
+        let shown = self.history.shown_steps();
         let mut clicked = None;
+        let mut rows_drawn = Vec::new();
         egui::ScrollArea::vertical()
             .max_height(180.0)
             .id_salt("history")
+            .stick_to_bottom(true)
             .show_rows(ui, 18.0, n + 1, |ui, rows| {
                 for i in rows {
-                    let (label, upto) = if i == 0 {
-                        ("blank sheet".to_owned(), 0)
+                    let label = if i == 0 {
+                        "start".to_owned()
                     } else {
-                        (
-                            format!("{i}. {}", self.history.design().ops[i - 1].type_name()),
-                            i,
-                        )
+                        format!("{i}. {}", self.history.steps()[i - 1].label)
                     };
-                    if ui.selectable_label(upto == shown, label).clicked() {
-                        clicked = Some(upto);
+                    let r = ui.selectable_label(i == shown, label);
+                    if r.clicked() {
+                        clicked = Some(i);
                     }
+                    rows_drawn.push((format!("history-{i}"), r));
                 }
             });
-        if let Some(k) = clicked {
-            self.playback = None;
-            self.history.view(Some(k));
-            self.refresh();
+        for (name, r) in rows_drawn {
+            self.control(name, &r);
         }
+        if let Some(k) = clicked {
+            self.apply(Action::View(Some(k)));
+        }
+        if self.history.is_viewing_earlier() {
+            ui.label(
+                RichText::new(format!(
+                    "Showing step {shown} of {n}. Editing now starts a new branch; the later steps stay restorable below."
+                ))
+                .weak(),
+            );
+        }
+        let branches: Vec<String> = self
+            .history
+            .branches()
+            .iter()
+            .map(|b| b.label.clone())
+            .collect();
+        if !branches.is_empty() {
+            ui.label(RichText::new("Abandoned branches (click to restore)").weak());
+            for (i, label) in branches.iter().enumerate().rev() {
+                let r = ui
+                    .button(format!("↺ {label}"))
+                    .on_hover_text("Brings this design back as a new step (undoable)");
+                self.control(format!("restore-{i}"), &r);
+                if r.clicked() {
+                    self.apply(Action::Restore(i));
+                }
+            }
+        }
+    }
+
+    fn recent_section(&mut self, ui: &mut egui::Ui) {
+        let count = self.recent.entries.len();
+        let header = egui::CollapsingHeader::new(format!("Recent designs ({count})"))
+            .id_salt("recent")
+            .show(ui, |ui| {
+                if count == 0 {
+                    ui.label(
+                        RichText::new(
+                            "Designs replaced by New, Open, a link or the gallery are kept here.",
+                        )
+                        .weak(),
+                    );
+                }
+                let mut open = None;
+                let mut made_one = false;
+                for i in 0..count {
+                    let e = self.recent.entries[i].clone();
+                    let thumb = match self.recent_thumbnails.get(&e.fragment) {
+                        Some(t) => t.clone(),
+                        None if !made_one => {
+                            made_one = true;
+                            let t =
+                                crate::thumbnails::recent_thumbnail(&self.recent, i).map(|img| {
+                                    ui.ctx().load_texture(
+                                        format!("recent {i}"),
+                                        img,
+                                        egui::TextureOptions::LINEAR,
+                                    )
+                                });
+                            self.recent_thumbnails.insert(e.fragment.clone(), t.clone());
+                            t
+                        }
+                        None => {
+                            ui.ctx().request_repaint();
+                            None
+                        }
+                    };
+                    let r = ui
+                        .horizontal(|ui| {
+                            let size = egui::vec2(64.0, 48.0);
+                            match &thumb {
+                                Some(t) => {
+                                    ui.add(
+                                        egui::Image::new((t.id(), size)).fit_to_exact_size(size),
+                                    );
+                                }
+                                None => {
+                                    let (rect, _) =
+                                        ui.allocate_exact_size(size, egui::Sense::hover());
+                                    ui.painter().rect_stroke(
+                                        rect,
+                                        2.0,
+                                        ui.visuals().widgets.noninteractive.bg_stroke,
+                                        egui::StrokeKind::Inside,
+                                    );
+                                    ui.painter().text(
+                                        rect.center(),
+                                        egui::Align2::CENTER_CENTER,
+                                        "no preview",
+                                        egui::FontId::proportional(10.0),
+                                        ui.visuals().weak_text_color(),
+                                    );
+                                }
+                            }
+                            ui.vertical(|ui| {
+                                ui.label(format!(
+                                    "{} · {} ops · {}×{}",
+                                    crate::recent::date_label(e.saved_ms),
+                                    e.ops,
+                                    e.size[0],
+                                    e.size[1]
+                                ));
+                                ui.label(RichText::new(&e.label).weak());
+                            });
+                        })
+                        .response
+                        .interact(egui::Sense::click())
+                        .on_hover_text("Restore this design (undoable)");
+                    self.control(format!("recent-{i}"), &r);
+                    if r.clicked() {
+                        open = Some(i);
+                    }
+                }
+                if let Some(i) = open {
+                    self.apply(Action::OpenRecent(i));
+                }
+            });
+        self.control("recent", &header.header_response);
     }
 
     fn gallery_section(&mut self, ui: &mut egui::Ui) {

@@ -11,9 +11,6 @@ pub type PickSlot = std::sync::Arc<std::sync::Mutex<Option<PickedFile>>>;
 /// The id of the page's `<canvas>` the app draws into.
 pub const CANVAS_ID: &str = "marbling_canvas";
 
-/// Storage key of the autosaved design.
-pub const AUTOSAVE_KEY: &str = "marbling.autosave.v1";
-
 #[cfg(target_arch = "wasm32")]
 mod imp {
     use super::{PickSlot, PickedFile};
@@ -47,23 +44,70 @@ mod imp {
         }
     }
 
-    /// The autosaved design, if any.
-    pub fn load_autosave(_storage: Option<&dyn eframe::Storage>) -> Option<String> {
-        window()?
-            .local_storage()
-            .ok()??
-            .get_item(super::AUTOSAVE_KEY)
-            .ok()?
+    /// Removes a `#d=…` link from the address bar without reloading or adding a history
+    /// entry (after an edit, so a reload shows the edited design, not the link's).
+    pub fn clear_fragment() {
+        let Some(w) = window() else { return };
+        let l = w.location();
+        let url = format!(
+            "{}{}",
+            l.pathname().unwrap_or_default(),
+            l.search().unwrap_or_default()
+        );
+        if let Ok(h) = w.history() {
+            let _ = h.replace_state_with_url(&wasm_bindgen::JsValue::NULL, "", Some(&url));
+        }
     }
 
-    /// Saves the design now (browser local storage, so a reload restores it).
-    pub fn autosave(_frame: &mut eframe::Frame, json: &str) -> Result<(), String> {
+    /// The value stored under `key` (browser local storage), if any.
+    pub fn load_string(_storage: Option<&dyn eframe::Storage>, key: &str) -> Option<String> {
+        window()?.local_storage().ok()??.get_item(key).ok()?
+    }
+
+    /// Stores `value` under `key` now (browser local storage).
+    pub fn store_string(_frame: &mut eframe::Frame, key: &str, value: &str) -> Result<(), String> {
+        store_now(key, value)
+    }
+
+    /// Stores `value` under `key` without an eframe frame (page-hide handlers).
+    pub fn store_now(key: &str, value: &str) -> Result<(), String> {
         let storage = window()
             .and_then(|w| w.local_storage().ok().flatten())
             .ok_or("browser storage is not available")?;
         storage
-            .set_item(super::AUTOSAVE_KEY, json)
-            .map_err(|_| "browser storage is full: the design was not autosaved".to_owned())
+            .set_item(key, value)
+            .map_err(|_| "browser storage is full".to_owned())
+    }
+
+    /// Milliseconds since 1970 (the page's clock).
+    pub fn now_ms() -> f64 {
+        js_sys::Date::now()
+    }
+
+    /// Calls `f` when the page is hidden or unloaded (tab switch, close, reload): the
+    /// last moment to save.
+    pub fn on_page_hide(f: impl Fn() + 'static) {
+        use wasm_bindgen::closure::Closure;
+        let Some(w) = window() else { return };
+        let f = std::rc::Rc::new(f);
+        let hide = {
+            let f = f.clone();
+            Closure::<dyn Fn(web_sys::Event)>::new(move |_: web_sys::Event| f())
+        };
+        let _ = w.add_event_listener_with_callback("pagehide", hide.as_ref().unchecked_ref());
+        hide.forget();
+        let Some(document) = w.document() else { return };
+        let doc = document.clone();
+        let visibility = Closure::<dyn Fn(web_sys::Event)>::new(move |_: web_sys::Event| {
+            if doc.visibility_state() == web_sys::VisibilityState::Hidden {
+                f();
+            }
+        });
+        let _ = document.add_event_listener_with_callback(
+            "visibilitychange",
+            visibility.as_ref().unchecked_ref(),
+        );
+        visibility.forget();
     }
 
     /// Offers `bytes` as a download named `name`.
@@ -172,19 +216,35 @@ mod imp {
     /// Desktop windows have no address bar.
     pub fn set_fragment(_fragment: &str) {}
 
-    /// The autosaved design, if any.
-    pub fn load_autosave(storage: Option<&dyn eframe::Storage>) -> Option<String> {
-        storage?.get_string(super::AUTOSAVE_KEY)
+    /// Desktop windows have no address bar.
+    pub fn clear_fragment() {}
+
+    /// The value stored under `key` (eframe's app storage), if any.
+    pub fn load_string(storage: Option<&dyn eframe::Storage>, key: &str) -> Option<String> {
+        storage?.get_string(key)
     }
 
-    /// Saves the design now (eframe's app storage, flushed to disk).
-    pub fn autosave(frame: &mut eframe::Frame, json: &str) -> Result<(), String> {
-        let storage = frame
-            .storage_mut()
-            .ok_or("no app storage: the design was not autosaved")?;
-        storage.set_string(super::AUTOSAVE_KEY, json.to_owned());
+    /// Stores `value` under `key` now (eframe's app storage, flushed to disk).
+    pub fn store_string(frame: &mut eframe::Frame, key: &str, value: &str) -> Result<(), String> {
+        let storage = frame.storage_mut().ok_or("no app storage")?;
+        storage.set_string(key, value.to_owned());
         storage.flush();
         Ok(())
+    }
+
+    /// Milliseconds since 1970.
+    pub fn now_ms() -> f64 {
+        std::time::SystemTime::now()
+            .duration_since(std::time::UNIX_EPOCH)
+            .map_or(0.0, |d| d.as_secs_f64() * 1000.0)
+    }
+
+    /// Desktop windows save on exit instead (`eframe::App::save`).
+    pub fn on_page_hide(_f: impl Fn() + 'static) {}
+
+    /// Desktop windows store through eframe's storage ([`store_string`]).
+    pub fn store_now(_key: &str, _value: &str) -> Result<(), String> {
+        Err("no page storage".to_owned())
     }
 
     /// Asks where to save `bytes` and writes them there.

@@ -106,3 +106,28 @@ mod tests {
         assert!(err.starts_with("gallery thumbnail broken:"), "{err}");
     }
 }
+
+/// Largest op-samples (pixels × ops) spent on one recent-design thumbnail: about a
+/// tenth of a second of the CPU renderer in a browser.
+pub const MAX_THUMBNAIL_WORK: f64 = 2.0e7;
+
+/// A 64 × 48 px (or less) thumbnail of recent design `i`, drawn exactly by the CPU
+/// renderer with one sample per pixel; `None` when it cannot be read or would take
+/// more than [`MAX_THUMBNAIL_WORK`].
+pub fn recent_thumbnail(recent: &crate::recent::Recent, i: usize) -> Option<ColorImage> {
+    let design = recent.design(i).ok()?;
+    let scale = (64.0 / f64::from(design.width)).min(48.0 / f64::from(design.height));
+    let pixels = f64::from(design.width) * f64::from(design.height) * scale * scale;
+    if pixels * design.ops.len() as f64 > MAX_THUMBNAIL_WORK {
+        return None;
+    }
+    let opts = marbling_core::RenderOptions {
+        scale,
+        antialias: marbling_core::Antialias::None,
+    };
+    let img = marbling_core::render(&design, &opts).ok()?;
+    Some(ColorImage::from_rgba_unmultiplied(
+        [img.width as usize, img.height as usize],
+        &img.pixels,
+    ))
+}

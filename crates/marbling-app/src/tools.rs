@@ -5,7 +5,8 @@ use marbling_core::synth::SplitMix64;
 use marbling_core::{Circular, Drop, Op, Point, Rake, Rgb8, Spray, Tine, Vec2, Vortex, Wavy};
 
 /// The tools of the side panel.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "kebab-case")]
 pub enum ToolKind {
     /// Click to drop ink; press and hold to grow the drop.
     Drop,
@@ -49,8 +50,10 @@ impl ToolKind {
     }
 }
 
-/// Every tool parameter of the side panel (design pixels unless stated).
-#[derive(Clone, Copy, Debug, PartialEq)]
+/// Every tool parameter of the side panel (design pixels unless stated). Stored with
+/// the other preferences (`prefs.rs`); a missing field takes its default.
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+#[serde(default)]
 pub struct ToolSettings {
     /// Radius of a drop on a plain click.
     pub drop_radius: f64,
@@ -152,9 +155,18 @@ impl Gesture {
     }
 }
 
-/// The ops a gesture makes with a tool; empty when the gesture is too small to mean
-/// anything (a click with a comb). `seed` makes spray droplets reproducible.
+/// The ops a gesture makes with a tool, rounded to what can matter ([`Op::rounded`], so
+/// the document and its link hold exactly what was previewed); empty when the gesture
+/// is too small to mean anything (a click with a comb). `seed` makes spray droplets
+/// reproducible.
 pub fn ops_for(kind: ToolKind, s: &ToolSettings, g: &Gesture, color: Rgb8, seed: u64) -> Vec<Op> {
+    unrounded_ops(kind, s, g, color, seed)
+        .iter()
+        .map(Op::rounded)
+        .collect()
+}
+
+fn unrounded_ops(kind: ToolKind, s: &ToolSettings, g: &Gesture, color: Rgb8, seed: u64) -> Vec<Op> {
     let (a, b) = (g.start, g.end());
     let drag = b - a;
     let len = drag.hypot();
@@ -367,7 +379,8 @@ mod tests {
         else {
             panic!()
         };
-        assert!((w.angle - std::f64::consts::FRAC_PI_2).abs() < 1e-12);
+        // Angles are rounded to 1e-4 rad (`Op::rounded`).
+        assert!((w.angle - std::f64::consts::FRAC_PI_2).abs() <= 0.5e-4);
     }
 
     #[test]
@@ -383,8 +396,9 @@ mod tests {
             panic!()
         };
         assert!((c.radius - 100.0).abs() < 1e-9);
+        // Strengths are rounded to 0.01 design px (`Op::rounded`).
         assert!(
-            (c.alpha - 50.0 * std::f64::consts::PI).abs() < 1e-6,
+            (c.alpha - 50.0 * std::f64::consts::PI).abs() <= 0.005,
             "{}",
             c.alpha
         );

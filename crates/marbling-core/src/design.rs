@@ -1,6 +1,6 @@
 //! The design document: canvas size, background and the history of operations.
 
-use crate::{NoiseBackground, Op, Overlay, Rgb8};
+use crate::{GestureSpan, NoiseBackground, Op, Overlay, Rgb8};
 
 /// Largest accepted canvas side, design pixels.
 pub const MAX_SIDE: u32 = 16_384;
@@ -34,6 +34,9 @@ pub struct Design {
     pub overlays: Vec<Overlay>,
     /// Operations, oldest first.
     pub ops: Vec<Op>,
+    /// Runs of two or more ops made by one gesture, sorted and disjoint (see
+    /// [`crate::GestureSpan`]); every other op is a gesture of its own.
+    pub gestures: Vec<GestureSpan>,
 }
 
 impl Design {
@@ -46,6 +49,7 @@ impl Design {
             background_noise: None,
             overlays: Vec::new(),
             ops: Vec::new(),
+            gestures: Vec::new(),
         }
     }
 

@@ -14,7 +14,10 @@
 use crate::design::{CURRENT_VERSION, SUPPORTED_VERSIONS};
 use crate::surface::{GrainKind, NoiseBackground, NoiseLayer, Overlay, Palette};
 use crate::validate::Checker;
-use crate::{Circular, Design, Drop, Op, Rake, Rgb8, Spray, Tine, ValidationErrors, Vortex, Wavy};
+use crate::{
+    Circular, Design, Drop, GestureSpan, Op, Rake, Rgb8, Spray, Tine, ValidationErrors, Vortex,
+    Wavy,
+};
 use kurbo::{Point, Vec2};
 use serde_json::{Map, Value, json};
 
@@ -43,8 +46,16 @@ const TOP_FIELDS: &[&str] = &[
     "background",
     "overlays",
     "ops",
+    "gestures",
 ];
-const TOP_FIELDS_V1: &[&str] = &["version", "width", "height", "background", "ops"];
+const TOP_FIELDS_V1: &[&str] = &[
+    "version",
+    "width",
+    "height",
+    "background",
+    "ops",
+    "gestures",
+];
 
 /// Field names of each op type, `type` first, in the order they are written.
 fn op_fields(kind: &str) -> Option<&'static [&'static str]> {
@@ -383,6 +394,10 @@ impl Reader {
             }
             None => None,
         };
+        let gestures = self.gestures(obj.get("gestures"));
+        if let (Some(ops), Some(gestures)) = (&ops, &gestures) {
+            self.c.gestures(gestures, ops.len());
+        }
         let (background, background_noise) = background?;
         Some(Design {
             width: width?,
@@ -391,7 +406,50 @@ impl Reader {
             background_noise,
             overlays: overlays?,
             ops: ops?,
+            gestures: gestures?,
         })
+    }
+
+    /// `"gestures": [[first, count], …]` (absent: none); the spans' order and bounds
+    /// are checked by [`Checker::gestures`].
+    fn gestures(&mut self, v: Option<&Value>) -> Option<Vec<GestureSpan>> {
+        let items = match v {
+            None => return Some(Vec::new()),
+            Some(Value::Array(items)) => items,
+            Some(other) => {
+                self.c.push(
+                    "gestures",
+                    format!(
+                        "must be an array of [first, count] pairs, got {}",
+                        type_of(other)
+                    ),
+                );
+                return None;
+            }
+        };
+        let mut spans = Vec::with_capacity(items.len());
+        let mut ok = true;
+        for (i, item) in items.iter().enumerate() {
+            let pair = item.as_array().filter(|a| a.len() == 2).and_then(|a| {
+                let first = usize::try_from(a[0].as_u64()?).ok()?;
+                let count = usize::try_from(a[1].as_u64()?).ok()?;
+                Some(GestureSpan { first, count })
+            });
+            match pair {
+                Some(span) => spans.push(span),
+                None => {
+                    ok = false;
+                    self.c.push(
+                        format!("gestures[{i}]"),
+                        format!(
+                            "must be [first, count], two whole numbers, got {}",
+                            short(item)
+                        ),
+                    );
+                }
+            }
+        }
+        ok.then_some(spans)
     }
 
     /// A noise spec at `path`, its problems reported under that path.
@@ -603,7 +661,19 @@ impl Design {
             "ops".into(),
             Value::Array(self.ops.iter().map(op_value).collect()),
         );
+        if !self.gestures.is_empty() {
+            m.insert("gestures".into(), self.gestures_value());
+        }
         Value::Object(m)
+    }
+
+    fn gestures_value(&self) -> Value {
+        Value::Array(
+            self.gestures
+                .iter()
+                .map(|g| json!([g.first, g.count]))
+                .collect(),
+        )
     }
 
     fn background_value(&self) -> Value {
@@ -635,11 +705,11 @@ impl Design {
             out += if i == 0 { "\n    " } else { ",\n    " };
             out += &op_value(op).to_string();
         }
-        out += if self.ops.is_empty() {
-            "]\n}\n"
-        } else {
-            "\n  ]\n}\n"
-        };
+        out += if self.ops.is_empty() { "]" } else { "\n  ]" };
+        if !self.gestures.is_empty() {
+            out += &format!(",\n  \"gestures\": {}", self.gestures_value());
+        }
+        out += "\n}\n";
         out
     }
 

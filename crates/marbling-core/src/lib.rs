@@ -10,6 +10,7 @@ pub mod color;
 pub mod compare;
 mod compiled;
 mod design;
+mod gestures;
 mod image;
 mod json;
 mod ops;
@@ -24,10 +25,13 @@ mod walk;
 pub use color::Rgb8;
 pub use compiled::CompiledOp;
 pub use design::{CURRENT_VERSION, Design, MAX_OPS, MAX_SIDE, SUPPORTED_VERSIONS};
+pub use gestures::GestureSpan;
 pub use image::{PngError, RgbaImage};
 pub use json::DesignError;
 pub use kurbo::{Point, Vec2};
-pub use ops::{Back, Circular, Drop, OP_TYPES, Op, Rake, Spray, Tine, Vortex, Wavy};
+pub use ops::{
+    ANGLE_STEP, Back, Circular, Drop, LENGTH_STEP, OP_TYPES, Op, Rake, Spray, Tine, Vortex, Wavy,
+};
 pub use render::{
     MAX_OUTPUT_PIXELS, MAX_OUTPUT_SIDE, RenderError, RenderOptions, output_size, render,
     render_with_progress,

@@ -109,6 +109,38 @@ impl Checker {
         }
     }
 
+    /// Gesture spans: at least 2 ops each, inside the `ops` list, sorted and disjoint.
+    pub(crate) fn gestures(&mut self, spans: &[crate::GestureSpan], ops: usize) {
+        let mut end = 0;
+        for (i, g) in spans.iter().enumerate() {
+            let path = format!("gestures[{i}]");
+            if g.count < 2 {
+                self.push(
+                    path,
+                    format!(
+                        "a gesture has at least 2 ops, got {} (a lone op needs no entry)",
+                        g.count
+                    ),
+                );
+            } else if g.first.saturating_add(g.count) > ops {
+                self.push(
+                    path,
+                    format!(
+                        "ops {}..{} lie past the last op ({ops} ops)",
+                        g.first,
+                        g.first.saturating_add(g.count)
+                    ),
+                );
+            } else if g.first < end {
+                self.push(
+                    path,
+                    format!("starts at op {} inside gestures[{}], which ends at op {end}; gestures are sorted and disjoint", g.first, i - 1),
+                );
+            }
+            end = end.max(g.first.saturating_add(g.count));
+        }
+    }
+
     /// Checks the values of op number `i`.
     pub(crate) fn op(&mut self, i: usize, op: &Op) {
         let f = |name: &str| format!("ops[{i}].{name}");
@@ -174,6 +206,7 @@ impl Design {
         for (i, op) in self.ops.iter().enumerate() {
             c.op(i, op);
         }
+        c.gestures(&self.gestures, self.ops.len());
         if let Some(n) = &self.background_noise {
             let k = n.palette.stops.len();
             if !(2..=crate::MAX_PALETTE_STOPS).contains(&k) {

@@ -272,7 +272,7 @@ fn unknown_fields_are_rejected() {
     );
     assert_error(
         &variant("\"version\": 1,", "\"version\": 1, \"title\": \"x\","),
-        "title: unknown field; expected one of version, width, height, background, ops",
+        "title: unknown field; expected one of version, width, height, background, ops, gestures",
     );
 }
 
@@ -325,5 +325,53 @@ fn every_error_is_reported_at_once() {
             "ops[2].lambda: must be > 0, got 0",
             "ops[3].spacing: must be > 0, got -1"
         ]
+    );
+}
+
+/// `gestures` ([[first, count], …]): each rule has its message and JSON path.
+#[test]
+fn gesture_spans_are_read_written_and_checked() {
+    let with =
+        |g: &str| DESIGN_MD_EXAMPLE.replacen("\n  ] }", &format!("\n  ], \"gestures\": {g} }}"), 1);
+    assert!(DESIGN_MD_EXAMPLE.contains("\n  ] }"));
+    let d = Design::from_json(&with("[[0, 2], [3, 4]]")).expect("valid");
+    assert_eq!(d.gesture_sizes(), vec![2, 1, 4]);
+    let back = Design::from_json(&d.to_json_pretty()).expect("valid");
+    assert_eq!(back, d);
+    assert!(
+        d.to_json_compact()
+            .ends_with(r#""gestures":[[0,2],[3,4]]}"#)
+    );
+    // Without gestures nothing is written: documents made op by op are unchanged.
+    let plain = Design::from_json(DESIGN_MD_EXAMPLE).expect("valid");
+    assert!(!plain.to_json_pretty().contains("gestures"));
+    assert_error(
+        &with("[[0, 1]]"),
+        "gestures[0]: a gesture has at least 2 ops, got 1 (a lone op needs no entry)",
+    );
+    assert_error(
+        &with("[[6, 2]]"),
+        "gestures[0]: ops 6..8 lie past the last op (7 ops)",
+    );
+    assert_error(
+        &with("[[0, 3], [2, 2]]"),
+        "gestures[1]: starts at op 2 inside gestures[0], which ends at op 3; gestures are sorted and disjoint",
+    );
+    assert_error(
+        &with("[[0, -2]]"),
+        "gestures[0]: must be [first, count], two whole numbers, got [0,-2]",
+    );
+    assert_error(
+        &with("{}"),
+        "gestures: must be an array of [first, count] pairs, got an object",
+    );
+    // Designs built in code are checked the same way.
+    let mut bad = plain.clone();
+    bad.gestures = vec![marbling_core::GestureSpan { first: 5, count: 9 }];
+    assert!(
+        bad.validate()
+            .unwrap_err()
+            .to_string()
+            .contains("gestures[0]: ops 5..14")
     );
 }

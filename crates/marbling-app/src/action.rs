@@ -1,0 +1,253 @@
+//! Everything that changes the design goes through [`MarblingApp::apply`]: panels,
+//! keys and the canvas say what the user asked for as an [`Action`], and this file
+//! says what happens then (history step, refresh, autosave, recent designs, link).
+
+use crate::app::MarblingApp;
+use crate::history::{Paper, Surface};
+use crate::mode::Mode;
+use crate::platform;
+use marbling_core::{Design, Op, Rgb8};
+
+/// What the user asked for.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Action {
+    /// A tool's gesture: its ops become one history step.
+    Commit(Vec<Op>),
+    /// The design becomes `design` (Open, the gallery, a share link); the previous one
+    /// stays one undo away and goes to *Recent designs*.
+    Load {
+        /// The design to show.
+        design: Design,
+        /// Where it came from, for the history list and the status bar.
+        from: String,
+        /// True for a `#d=` link in the address bar (which then stays there).
+        from_link: bool,
+    },
+    /// A blank sheet of the chosen size with the palette's paper.
+    NewSheet,
+    /// Takes the newest step back.
+    Undo,
+    /// Puts the most recently undone step back.
+    Redo,
+    /// Shows the state after the first `n` steps (`None`: all of them).
+    View(Option<usize>),
+    /// Restores abandoned branch `i` as a new step.
+    Restore(usize),
+    /// Restores entry `i` of *Recent designs*.
+    OpenRecent(usize),
+    /// A plain paper colour (it replaces a noise background).
+    SetPaperColor(Rgb8),
+    /// A noise background and grain overlays; `what` names the change.
+    SetSurface {
+        /// The new background and overlays.
+        surface: Surface,
+        /// What changed ("noise background", "paper-grain").
+        what: String,
+    },
+}
+
+impl MarblingApp {
+    /// Carries out `action`: the only place where the design and its history change.
+    pub(crate) fn apply(&mut self, action: Action) {
+        let changed = match action {
+            Action::Commit(ops) => match self.history.push_ops(ops) {
+                Ok(()) => true,
+                Err(e) => {
+                    self.error(e.to_string());
+                    false
+                }
+            },
+            Action::Load {
+                design,
+                from,
+                from_link,
+            } => {
+                self.replace_document(design, format!("opened {from}"));
+                self.info(format!("opened {from}"));
+                if from_link {
+                    self.after_change();
+                    return;
+                }
+                true
+            }
+            Action::NewSheet => {
+                let mut d = crate::app::blank(self.new_size);
+                d.background = crate::PALETTES[self.palette].background;
+                self.replace_document(
+                    d,
+                    format!("new sheet {}×{}", self.new_size[0], self.new_size[1]),
+                );
+                self.info("a new design (Undo brings the previous one back)");
+                true
+            }
+            Action::Undo => self.history.undo(),
+            Action::Redo => self.history.redo(),
+            Action::View(n) => {
+                self.history.view(n);
+                self.playback = None;
+                self.refresh();
+                return;
+            }
+            Action::Restore(i) => self.history.restore(i),
+            Action::OpenRecent(i) => match self.recent.design(i) {
+                Ok(d) => {
+                    let label = self.recent.entries[i].label.clone();
+                    self.replace_document(d, format!("restored recent design ({label})"));
+                    true
+                }
+                Err(e) => {
+                    self.error(e);
+                    false
+                }
+            },
+            Action::SetPaperColor(c) => {
+                let mut paper = Paper::of(&self.history.shown());
+                paper.background = c;
+                paper.background_noise = None;
+                self.history.push_paper(paper, c.to_string(), true);
+                true
+            }
+            Action::SetSurface {
+                surface: (background, overlays),
+                what,
+            } => {
+                let mut paper = Paper::of(&self.history.shown());
+                paper.background_noise = background;
+                paper.overlays = overlays;
+                self.history.push_paper(paper, what.clone(), false);
+                self.set_mode(Mode::Marbling);
+                self.info(format!("design surface: {what}"));
+                true
+            }
+        };
+        if changed {
+            // The address bar's link no longer shows the design: drop it, so a reload
+            // shows the edited design (from the autosave) instead of the link's.
+            if self
+                .last_fragment
+                .as_deref()
+                .is_some_and(|f| f.split('&').any(|p| p.starts_with("d=")))
+            {
+                platform::clear_fragment();
+                self.last_fragment = None;
+            }
+            self.after_change();
+        }
+    }
+
+    /// The design changed: stop playback, redraw, autosave soon.
+    fn after_change(&mut self) {
+        self.playback = None;
+        self.refresh();
+        self.autosave_pending = true;
+    }
+
+    /// A new document step; the design it replaces goes to *Recent designs*.
+    fn replace_document(&mut self, design: Design, label: String) {
+        let current = self.history.design();
+        if !current.ops.is_empty() || current.uses_v2() {
+            let kept = current.clone();
+            self.recent
+                .push(&kept, format!("before {label}"), platform::now_ms());
+            self.recent_pending = true;
+        }
+        let resized = (design.width, design.height) != (current.width, current.height);
+        self.mode = Mode::Marbling;
+        self.active = None;
+        self.history.push_document(design, label);
+        if resized {
+            self.view = None;
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::history::EditError;
+    use marbling_core::{MAX_OPS, Point, Spray};
+
+    fn app() -> MarblingApp {
+        MarblingApp::with_design(
+            Design::new(40, 30, Rgb8::new(250, 250, 250)),
+            "test".into(),
+            false,
+        )
+    }
+
+    fn spray(x: f64) -> Op {
+        Op::Spray(Spray {
+            center: Point::new(x, 5.0),
+            radius: 2.0,
+            color: Rgb8::new(0, 0, 0),
+        })
+    }
+
+    #[test]
+    fn a_stroke_then_new_then_undo_leaves_the_stroke_and_keeps_a_recent_copy() {
+        let mut a = app();
+        a.apply(Action::Commit(
+            (0..30).map(|i| spray(f64::from(i))).collect(),
+        ));
+        let stroke = a.history.design().clone();
+        assert_eq!(a.shown.ops.len(), 30);
+        a.apply(Action::NewSheet);
+        assert!(a.history.design().ops.is_empty());
+        assert_eq!(a.recent.entries.len(), 1);
+        assert!(a.autosave_pending && a.recent_pending);
+        a.apply(Action::Undo);
+        assert_eq!(a.history.design(), &stroke);
+        a.apply(Action::Undo);
+        assert!(a.history.design().ops.is_empty());
+        a.apply(Action::OpenRecent(0));
+        assert_eq!(a.history.design(), &stroke);
+    }
+
+    #[test]
+    fn paper_colour_is_an_undoable_step_that_keeps_the_ops() {
+        let mut a = app();
+        a.apply(Action::Commit(vec![spray(1.0)]));
+        a.apply(Action::SetPaperColor(Rgb8::new(10, 20, 30)));
+        assert_eq!(a.shown.background, Rgb8::new(10, 20, 30));
+        assert_eq!(a.history.steps().last().unwrap().label, "paper #0a141e");
+        a.apply(Action::Undo);
+        assert_eq!(a.shown.background, Rgb8::new(250, 250, 250));
+        assert_eq!(a.shown.ops.len(), 1);
+    }
+
+    #[test]
+    fn an_edit_past_the_cap_is_refused_with_a_message_and_nothing_is_saved() {
+        let mut d = Design::new(40, 30, Rgb8::new(250, 250, 250));
+        d.ops = (0..MAX_OPS).map(|i| spray(i as f64 % 40.0)).collect();
+        let mut a = MarblingApp::with_design(d.clone(), "test".into(), false);
+        a.apply(Action::Commit(vec![spray(3.0)]));
+        let m = a.message.clone().expect("a message");
+        assert!(m.error);
+        assert_eq!(
+            m.text,
+            EditError::TooManyOps {
+                have: MAX_OPS,
+                adding: 1
+            }
+            .to_string()
+        );
+        assert_eq!(a.history.design(), &d);
+        assert!(!a.autosave_pending);
+    }
+
+    #[test]
+    fn viewing_an_earlier_step_then_editing_keeps_the_later_steps_restorable() {
+        let mut a = app();
+        for i in 0..4 {
+            a.apply(Action::Commit(vec![spray(f64::from(i))]));
+        }
+        let full = a.history.design().clone();
+        a.apply(Action::View(Some(1)));
+        assert_eq!(a.shown.ops.len(), 1);
+        a.apply(Action::Commit(vec![spray(30.0), spray(31.0)]));
+        assert_eq!(a.shown.ops.len(), 3);
+        assert_eq!(a.history.branches().len(), 1);
+        a.apply(Action::Restore(0));
+        assert_eq!(a.history.design(), &full);
+    }
+}

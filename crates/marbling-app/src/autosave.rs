@@ -1,0 +1,164 @@
+//! Autosave records: the design with a sequence number and the time it was saved,
+//! written alternately to two storage slots so that a write cut short (a crash, a
+//! closed tab) leaves the previous copy whole; the reader takes the newest readable one.
+//!
+//! Writes are debounced by the app: at most one every [`MIN_INTERVAL_MS`], and a last
+//! one when the page is hidden or the window closes.
+
+use marbling_core::Design;
+use serde_json::Value;
+
+/// The two storage slots, written in turn.
+pub const SLOTS: [&str; 2] = ["marbling.autosave.a", "marbling.autosave.b"];
+/// Where earlier versions kept the autosave (a bare design document); read when
+/// neither slot holds one.
+pub const LEGACY_KEY: &str = "marbling.autosave.v1";
+/// Where an autosave that could not be read is moved, so that nothing overwrites it.
+pub const UNREADABLE_KEY: &str = "marbling.autosave.unreadable";
+/// Shortest time between two autosave writes while edits keep coming, milliseconds.
+pub const MIN_INTERVAL_MS: f64 = 1000.0;
+
+/// One autosave record.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Record {
+    /// Increases with every write; the larger one of the two slots is the newer.
+    pub seq: u64,
+    /// When it was written, milliseconds since 1970.
+    pub saved_ms: f64,
+    /// The design.
+    pub design: Design,
+}
+
+impl Record {
+    /// The slot this record is written to.
+    pub fn slot(&self) -> &'static str {
+        slot(self.seq)
+    }
+
+    /// The stored text: `{"seq":…,"saved":…,"design":{…}}`.
+    pub fn encode(&self) -> String {
+        encode(self.seq, self.saved_ms, &self.design)
+    }
+
+    /// Reads a stored record; `Err` says why it is unreadable.
+    pub fn decode(text: &str) -> Result<Record, String> {
+        let v: Value = serde_json::from_str(text).map_err(|e| e.to_string())?;
+        let seq = v["seq"].as_u64().ok_or("no \"seq\"")?;
+        let saved_ms = v["saved"].as_f64().ok_or("no \"saved\"")?;
+        let design = Design::from_json(&v["design"].to_string()).map_err(|e| e.to_string())?;
+        Ok(Record {
+            seq,
+            saved_ms,
+            design,
+        })
+    }
+}
+
+/// The stored text of a record of `design` (see [`Record::encode`]).
+pub fn encode(seq: u64, saved_ms: f64, design: &Design) -> String {
+    format!(
+        "{{\"seq\":{seq},\"saved\":{},\"design\":{}}}",
+        saved_ms.round(),
+        design.to_json_compact()
+    )
+}
+
+/// The slot a record with sequence number `seq` is written to.
+pub fn slot(seq: u64) -> &'static str {
+    SLOTS[(seq % 2) as usize]
+}
+
+/// What start-up finds in storage.
+#[derive(Debug, Default)]
+pub struct Found {
+    /// The newest readable record.
+    pub record: Option<Record>,
+    /// Slots (or the legacy key) whose text could not be read, with the reason;
+    /// only those newer than the record matter (see [`newest`]).
+    pub unreadable: Vec<(String, String)>,
+}
+
+/// The newest readable record among the two slots (their texts as stored), else the
+/// legacy document. A slot that cannot be read is reported only when no older slot
+/// could stand in for it.
+pub fn newest(slots: [Option<String>; 2], legacy: Option<String>) -> Found {
+    let mut found = Found::default();
+    let mut records = Vec::new();
+    for (key, text) in SLOTS.iter().zip(slots) {
+        let Some(text) = text else { continue };
+        match Record::decode(&text) {
+            Ok(r) => records.push(r),
+            Err(e) => found.unreadable.push(((*key).to_owned(), e)),
+        }
+    }
+    found.record = records.into_iter().max_by_key(|r| r.seq);
+    if found.record.is_none()
+        && let Some(text) = legacy
+    {
+        match Design::from_json(&text) {
+            Ok(design) => {
+                found.record = Some(Record {
+                    seq: 0,
+                    saved_ms: 0.0,
+                    design,
+                })
+            }
+            Err(e) => found
+                .unreadable
+                .push((LEGACY_KEY.to_owned(), crate::app::first_line(&e))),
+        }
+    }
+    if found.record.is_some() {
+        // The other slot was the older copy, torn while being replaced: nothing is lost.
+        found.unreadable.clear();
+    }
+    found
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use marbling_core::synth::{Mix, random_design};
+
+    fn record(seq: u64, ops: usize) -> Record {
+        Record {
+            seq,
+            saved_ms: 1_700_000_000_000.0 + seq as f64,
+            design: random_design(seq, 64, 48, ops, Mix::Mixed),
+        }
+    }
+
+    #[test]
+    fn records_round_trip_and_alternate_slots() {
+        let r = record(7, 20);
+        assert_eq!(Record::decode(&r.encode()).unwrap(), r);
+        assert_ne!(record(7, 1).slot(), record(8, 1).slot());
+        assert!(Record::decode("{\"seq\":1}").is_err());
+    }
+
+    #[test]
+    fn the_newest_readable_slot_wins_and_a_torn_write_loses_nothing() {
+        let (old, new) = (record(4, 10), record(5, 12));
+        let found = newest([Some(old.encode()), Some(new.encode())], None);
+        assert_eq!(found.record.unwrap(), new);
+        // The newer write was cut short: the older copy is whole and is taken.
+        let torn = new.encode()[..40].to_owned();
+        let found = newest([Some(old.encode()), Some(torn)], None);
+        assert_eq!(found.record.unwrap(), old);
+        assert!(found.unreadable.is_empty());
+        // Nothing readable: the reason is reported.
+        let found = newest([Some("{".into()), None], None);
+        assert!(found.record.is_none());
+        assert_eq!(found.unreadable[0].0, SLOTS[0]);
+    }
+
+    #[test]
+    fn the_legacy_autosave_is_read_when_no_slot_holds_one() {
+        let d = random_design(3, 30, 20, 5, Mix::Mixed);
+        let found = newest([None, None], Some(d.to_json_compact()));
+        assert_eq!(found.record.unwrap().design, d);
+        let found = newest([None, None], Some("[]".into()));
+        assert!(found.record.is_none());
+        assert_eq!(found.unreadable[0].0, LEGACY_KEY);
+    }
+}
