@@ -49,6 +49,7 @@ pub enum Action {
 impl MarblingApp {
     /// Carries out `action`: the only place where the design and its history change.
     pub(crate) fn apply(&mut self, action: Action) {
+        let pristine = std::mem::take(&mut self.pristine);
         let changed = match action {
             Action::Commit(ops) => match self.history.push_ops(ops) {
                 Ok(()) => true,
@@ -62,7 +63,13 @@ impl MarblingApp {
                 from,
                 from_link,
             } => {
-                self.replace_document(design, format!("opened {from}"));
+                if pristine && from_link {
+                    // Nothing to keep: the link's design starts the history.
+                    self.view = None;
+                    self.history = crate::History::new(design);
+                } else {
+                    self.replace_document(design, format!("opened {from}"));
+                }
                 self.info(format!("opened {from}"));
                 if from_link {
                     self.after_change();

@@ -69,9 +69,9 @@ pub struct MarblingApp {
     /// False when no wgpu render state exists (the canvas then says so).
     pub(crate) gpu: bool,
     pub(crate) autosave_pending: bool,
-    /// The autosave's sequence number and the design not yet written (taken by the
-    /// page-hide handler, which may run between frames).
-    pub(crate) unsaved: Arc<Mutex<Unsaved>>,
+    /// True while the design is the start-up example nobody has touched (a link then
+    /// replaces it instead of stacking on it).
+    pub(crate) pristine: bool,
     /// When the autosave was last written, ms since 1970.
     pub(crate) last_autosave_ms: f64,
     /// Storage writes waiting for a frame (key, value).
@@ -119,32 +119,6 @@ pub struct MarblingApp {
     pub(crate) panel_cache: crate::panel_cache::PanelCache,
 }
 
-/// The autosave state shared with the page-hide handler.
-#[derive(Debug, Default)]
-pub struct Unsaved {
-    /// Sequence number of the last record written.
-    pub seq: u64,
-    /// The design waiting to be written, if any.
-    pub design: Option<Arc<Design>>,
-}
-
-impl Unsaved {
-    /// Writes the waiting design now, if any (the page is being hidden).
-    pub fn flush(&mut self, store: impl FnOnce(&str, &str) -> Result<(), String>) {
-        if let Some(d) = self.design.take() {
-            let seq = self.seq + 1;
-            if store(
-                autosave::slot(seq),
-                &autosave::encode(seq, platform::now_ms(), &d),
-            )
-            .is_ok()
-            {
-                self.seq = seq;
-            }
-        }
-    }
-}
-
 /// Default canvas of a new design, design pixels.
 pub const NEW_SIZE: [u32; 2] = [1024, 768];
 
@@ -169,8 +143,10 @@ impl MarblingApp {
         let fallback =
             Design::from_json(crate::gallery::EXAMPLES[0].json).unwrap_or_else(|_| blank(NEW_SIZE));
         let mut app = Self::with_design(fallback, backend, gpu);
+        app.pristine = true;
         app.lost = lost;
         app.gpu_errors = gpu_errors;
+        autosave::flush_on_page_hide();
         if let Some(parked) = recovery::take_parked() {
             app.unpark(parked);
             app.refresh();
@@ -183,10 +159,9 @@ impl MarblingApp {
             load(autosave::LEGACY_KEY),
         );
         if let Some(r) = found.record {
+            app.pristine = false;
             app.history = History::new(r.design);
-            if let Ok(mut u) = app.unsaved.lock() {
-                u.seq = r.seq;
-            }
+            autosave::unsaved().seq = r.seq;
         }
         for (key, why) in found.unreadable {
             // Kept where no autosave overwrites it.
@@ -208,12 +183,6 @@ impl MarblingApp {
         if let Some(text) = load(crate::recent::KEY) {
             app.recent = crate::recent::Recent::decode(&text);
         }
-        let unsaved = app.unsaved.clone();
-        platform::on_page_hide(move || {
-            if let Ok(mut u) = unsaved.lock() {
-                u.flush(platform::store_now);
-            }
-        });
         app.refresh();
         app.check_fragment();
         app
@@ -244,7 +213,7 @@ impl MarblingApp {
             backend,
             gpu,
             autosave_pending: false,
-            unsaved: Default::default(),
+            pristine: false,
             last_autosave_ms: f64::NEG_INFINITY,
             pending_writes: Vec::new(),
             stored_prefs: (None, f64::NEG_INFINITY),
@@ -321,7 +290,9 @@ impl MarblingApp {
         }
         self.parked = true;
         self.export = None;
+        // Written in this frame, whatever the debounce says.
         self.autosave_pending = true;
+        self.last_autosave_ms = f64::NEG_INFINITY;
         recovery::park(self.park_state());
         if cfg!(target_arch = "wasm32") {
             self.info("the GPU device was lost: restarting the renderer…");
@@ -609,10 +580,10 @@ impl MarblingApp {
         }
         let wait = self.last_autosave_ms + autosave::MIN_INTERVAL_MS - now;
         if wait > 0.0 {
-            if let Ok(mut u) = self.unsaved.lock()
-                && u.design
-                    .as_ref()
-                    .is_none_or(|d| **d != *self.history.design())
+            let mut u = autosave::unsaved();
+            if u.design
+                .as_ref()
+                .is_none_or(|d| **d != *self.history.design())
             {
                 u.design = Some(Arc::new(self.history.design().clone()));
             }
@@ -621,9 +592,7 @@ impl MarblingApp {
         }
         self.autosave_pending = false;
         self.last_autosave_ms = now;
-        let Ok(mut u) = self.unsaved.lock() else {
-            return;
-        };
+        let mut u = autosave::unsaved();
         u.design = None;
         let seq = u.seq + 1;
         let text = autosave::encode(seq, now, self.history.design());
@@ -743,6 +712,9 @@ impl MarblingApp {
                 (recovery::recoveries() > 0).then(|| recovery::recoveries().to_string()),
             ),
         ];
+        if ready {
+            recovery::note_drawn();
+        }
         for (name, value) in &wanted {
             if !self.hooks.contains(&(*name, value.clone())) {
                 platform::set_body_attribute(name, value.as_deref());
@@ -825,15 +797,14 @@ impl eframe::App for MarblingApp {
 
     /// Natively eframe calls this on exit: the waiting autosave is written.
     fn save(&mut self, storage: &mut dyn eframe::Storage) {
-        if let Ok(mut u) = self.unsaved.lock() {
-            if self.autosave_pending && u.design.is_none() {
-                u.design = Some(Arc::new(self.history.design().clone()));
-            }
-            u.flush(|key, value| {
-                storage.set_string(key, value.to_owned());
-                Ok(())
-            });
+        let mut u = autosave::unsaved();
+        if self.autosave_pending && u.design.is_none() {
+            u.design = Some(Arc::new(self.history.design().clone()));
         }
+        u.flush(|key, value| {
+            storage.set_string(key, value.to_owned());
+            Ok(())
+        });
     }
 }
 

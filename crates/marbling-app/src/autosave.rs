@@ -7,6 +7,7 @@
 
 use marbling_core::Design;
 use serde_json::Value;
+use std::sync::{Arc, Mutex, MutexGuard};
 
 /// The two storage slots, written in turn.
 pub const SLOTS: [&str; 2] = ["marbling.autosave.a", "marbling.autosave.b"];
@@ -66,6 +67,49 @@ pub fn encode(seq: u64, saved_ms: f64, design: &Design) -> String {
 /// The slot a record with sequence number `seq` is written to.
 pub fn slot(seq: u64) -> &'static str {
     SLOTS[(seq % 2) as usize]
+}
+
+/// The autosave's sequence number and the design not yet written: one per page (it
+/// outlives a renderer restart), shared with the page-hide handler, which may run
+/// between frames.
+#[derive(Debug, Default)]
+pub struct Unsaved {
+    /// Sequence number of the last record written.
+    pub seq: u64,
+    /// The design waiting to be written, if any.
+    pub design: Option<Arc<Design>>,
+}
+
+impl Unsaved {
+    /// Writes the waiting design now, if any (the page is being hidden).
+    pub fn flush(&mut self, store: impl FnOnce(&str, &str) -> Result<(), String>) {
+        if let Some(d) = self.design.take() {
+            let seq = self.seq + 1;
+            if store(slot(seq), &encode(seq, crate::platform::now_ms(), &d)).is_ok() {
+                self.seq = seq;
+            }
+        }
+    }
+}
+
+static UNSAVED: Mutex<Unsaved> = Mutex::new(Unsaved {
+    seq: 0,
+    design: None,
+});
+
+/// The page's autosave state (a poisoned lock is taken over: the state stays usable).
+pub fn unsaved() -> MutexGuard<'static, Unsaved> {
+    UNSAVED
+        .lock()
+        .unwrap_or_else(std::sync::PoisonError::into_inner)
+}
+
+/// Writes the waiting autosave when the page is hidden or closed (registered once).
+pub fn flush_on_page_hide() {
+    static ONCE: std::sync::Once = std::sync::Once::new();
+    ONCE.call_once(|| {
+        crate::platform::on_page_hide(|| unsaved().flush(crate::platform::store_now))
+    });
 }
 
 /// What start-up finds in storage.

@@ -69,10 +69,12 @@ pub struct Step {
 pub struct Branch {
     /// What the restore entry shows.
     pub label: String,
+    /// The design where the branch left the history.
+    pub fork: Design,
+    /// The abandoned steps, oldest first.
+    pub steps: Vec<Step>,
     /// The design at the branch's last step.
     pub design: Design,
-    /// How many steps were abandoned.
-    pub steps: usize,
 }
 
 /// Why an edit was not made; the history is unchanged.
@@ -267,12 +269,16 @@ impl History {
         });
     }
 
-    /// Restores branch `i` as a new step (the branch stays listed).
+    /// Restores branch `i`: a step back to where it forked, then its steps again, so
+    /// undo walks back through them one by one (the branch stays listed).
     pub fn restore(&mut self, i: usize) -> bool {
         let Some(b) = self.branches.get(i).cloned() else {
             return false;
         };
-        self.push_document(b.design, format!("restored {}", b.label));
+        self.push_document(b.fork, format!("back to the fork of {}", b.label));
+        for step in b.steps {
+            self.push(step);
+        }
         true
     }
 
@@ -289,26 +295,27 @@ impl History {
 
     /// Keeps steps `at..` and the undone steps as a branch, then drops them.
     fn abandon_from(&mut self, at: usize) {
-        let mut tip = self.clone();
-        tip.viewing = None;
-        while tip.redo() {}
-        let n = tip.steps.len() - at;
-        if n > 0 {
-            let last = &tip.steps[tip.steps.len() - 1].label;
+        let fork = self.fold(at);
+        let mut abandoned = self.steps.split_off(at.min(self.steps.len()));
+        abandoned.extend(self.undone.drain(..).rev());
+        self.design = fork.clone();
+        if let Some(last) = abandoned.last() {
+            let n = abandoned.len();
             let label = if n == 1 {
-                last.clone()
+                last.label.clone()
             } else {
-                format!("{n} steps, up to “{last}”")
+                format!("{n} steps, up to “{}”", last.label)
             };
+            let mut design = fork.clone();
+            for s in &abandoned {
+                apply(&mut design, &s.change);
+            }
             self.branches.push(Branch {
                 label,
-                design: tip.design,
-                steps: n,
+                fork,
+                steps: abandoned,
+                design,
             });
-        }
-        if at < self.steps.len() {
-            self.steps.truncate(at);
-            self.design = self.fold(at);
         }
     }
 
@@ -504,11 +511,16 @@ mod tests {
         h.push_ops(vec![spray(9.0)]).unwrap();
         assert_eq!(xs(h.design()), vec![0.0, 0.5, 1.0, 1.5, 9.0]);
         assert_eq!(h.branches().len(), 1);
-        assert_eq!(h.branches()[0].steps, 3);
+        assert_eq!(h.branches()[0].steps.len(), 3);
         assert_eq!(h.branches()[0].design, full);
         assert!(h.restore(0));
         assert_eq!(h.design(), &full);
-        // Restoring is a step: undo goes back to the branch made by the edit.
+        // The restored steps come back one by one: undo walks through them, then to
+        // the fork, then to the edit that made the branch.
+        assert!(h.undo());
+        assert_eq!(h.design().ops.len(), 8);
+        assert!(h.undo() && h.undo());
+        assert_eq!(h.design().ops.len(), 4);
         assert!(h.undo());
         assert_eq!(xs(h.design()), vec![0.0, 0.5, 1.0, 1.5, 9.0]);
     }

@@ -55,6 +55,15 @@ mod web {
             while !recovery::take_restart_request() {
                 sleep_ms(100).await;
             }
+            if recovery::give_up() {
+                fail(&format!(
+                    "the GPU device was lost {} times in a row without drawing a frame: the \
+                     playground stopped trying. Your design is autosaved; reload the page \
+                     to go on (a smaller view or fewer ops may help)",
+                    recovery::MAX_RESTARTS_IN_A_ROW + 1
+                ));
+                return;
+            }
             log::warn!("restarting the renderer after a lost GPU device");
             runner.destroy();
             canvas = fresh_canvas(&c);

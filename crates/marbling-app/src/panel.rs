@@ -80,6 +80,21 @@ impl MarblingApp {
             self.control("copy-link", &copy);
             if copy.clicked() {
                 let link = self.share_link();
+                if link.len() > marbling_core::MAX_LINK_CHARS {
+                    let json = self.history.design().to_json_pretty();
+                    let saved =
+                        platform::save_file("design.json", "application/json", json.as_bytes());
+                    self.error(format!(
+                        "the link would be {} characters, more than browsers accept ({}): {}",
+                        link.len(),
+                        marbling_core::MAX_LINK_CHARS,
+                        match saved {
+                            Ok(()) => "the design was saved as JSON instead".to_owned(),
+                            Err(e) => e,
+                        }
+                    ));
+                    return;
+                }
                 if let Some((_, fragment)) = link.split_once('#') {
                     platform::set_fragment(fragment);
                     self.last_fragment = Some(fragment.to_owned());

@@ -43,6 +43,14 @@ static RESTART: AtomicBool = AtomicBool::new(false);
 /// How many times the renderer was restarted (shown as `data-recovered`).
 static RECOVERIES: AtomicU32 = AtomicU32::new(0);
 
+/// Restarts since the last exact frame was drawn.
+static IN_A_ROW: AtomicU32 = AtomicU32::new(0);
+
+/// Restarts in a row (with no exact frame drawn between them) after which the page
+/// stops trying: a design whose frames outlast the driver's watchdog would otherwise
+/// lose the device forever.
+pub const MAX_RESTARTS_IN_A_ROW: u32 = 3;
+
 /// Parks `state` and asks for a restart.
 pub fn park(state: ParkedState) {
     PARKED.with(|p| *p.borrow_mut() = Some(state));
@@ -59,8 +67,20 @@ pub fn take_restart_request() -> bool {
     let asked = RESTART.swap(false, Ordering::SeqCst);
     if asked {
         RECOVERIES.fetch_add(1, Ordering::SeqCst);
+        IN_A_ROW.fetch_add(1, Ordering::SeqCst);
     }
     asked
+}
+
+/// The renderer drew an exact frame: the restarts so far succeeded.
+pub fn note_drawn() {
+    IN_A_ROW.store(0, Ordering::SeqCst);
+}
+
+/// True when the renderer was restarted more than [`MAX_RESTARTS_IN_A_ROW`] times
+/// without drawing a frame between: the start-up loop gives up and says so.
+pub fn give_up() -> bool {
+    IN_A_ROW.load(Ordering::SeqCst) > MAX_RESTARTS_IN_A_ROW
 }
 
 /// Restarts so far.
@@ -127,6 +147,18 @@ mod tests {
         assert!(take_restart_request());
         assert!(!take_restart_request());
         assert_eq!(recoveries(), before + 1);
+        // Restarts that never reach a drawn frame are given up on after a few.
+        note_drawn();
+        for _ in 0..MAX_RESTARTS_IN_A_ROW {
+            RESTART.store(true, Ordering::SeqCst);
+            assert!(take_restart_request());
+            assert!(!give_up());
+        }
+        RESTART.store(true, Ordering::SeqCst);
+        assert!(take_restart_request());
+        assert!(give_up());
+        note_drawn();
+        assert!(!give_up());
         let parked = take_parked().expect("parked");
         assert_eq!(parked.history, history);
         assert_eq!(parked.tool, ToolKind::Rake);

@@ -38,7 +38,8 @@ pub use render::{
 };
 pub use sampling::Antialias;
 pub use share::{
-    MAX_LINK_JSON_BYTES, ShareError, decode_share, encode_share_payload, share_fragment,
+    MAX_LINK_CHARS, MAX_LINK_JSON_BYTES, ShareError, decode_share, encode_share_payload,
+    share_fragment,
 };
 pub use surface::{
     GrainKind, MAX_PALETTE_STOPS, NoiseBackground, NoiseLayer, OVERLAY_TYPES, Overlay, Palette,

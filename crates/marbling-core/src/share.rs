@@ -7,6 +7,9 @@ use base64::engine::general_purpose::URL_SAFE_NO_PAD;
 
 /// Largest inflated design accepted from a link, bytes (100,000 ops fit easily).
 pub const MAX_LINK_JSON_BYTES: usize = 64 << 20;
+/// Longest share link offered, characters: Chromium's limit on URL length (2 MiB);
+/// a longer design is saved as JSON instead.
+pub const MAX_LINK_CHARS: usize = 2 << 20;
 /// DEFLATE effort: the best compression miniz offers (links are short-lived to make).
 const LEVEL: u8 = 9;
 

@@ -375,3 +375,28 @@ fn gesture_spans_are_read_written_and_checked() {
             .contains("gestures[0]: ops 5..14")
     );
 }
+
+/// Rounding ops as the app does at commit (`Op::rounded`) keeps the picture and makes
+/// links much shorter: the stone example's link shrinks to less than half.
+#[test]
+fn rounded_ops_make_short_links() {
+    let stone = Design::from_json(include_str!("../../../examples/designs/stone.json"))
+        .expect("valid example");
+    let mut rounded = stone.clone();
+    rounded.ops = stone.ops.iter().map(Op::rounded).collect();
+    let (full, short) = (
+        marbling_core::share_fragment(&stone).len(),
+        marbling_core::share_fragment(&rounded).len(),
+    );
+    println!(
+        "stone, {} ops: link {full} → {short} characters rounded ({:.1} per op)",
+        stone.ops.len(),
+        short as f64 / stone.ops.len() as f64
+    );
+    assert!(short * 2 < full, "{full} → {short}");
+    // The link holds exactly the rounded design.
+    assert_eq!(
+        marbling_core::decode_share(&marbling_core::share_fragment(&rounded)).unwrap(),
+        rounded
+    );
+}

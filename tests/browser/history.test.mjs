@@ -1,0 +1,176 @@
+// The editor's history as a user meets it, in Chromium on WebGL2 (the history does not
+// depend on the GPU path): a gesture is one undo, its preview follows the drag, a
+// linked design keeps its edits across a reload, New and the paper colour are undoable,
+// editing an earlier step keeps the later ones restorable, and replaced designs are in
+// Recent designs. One browser for all of them; a 5-op design keeps each frame cheap.
+import { after, before, describe, test } from 'node:test';
+import assert from 'node:assert/strict';
+import { execFileSync } from 'node:child_process';
+import fs from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
+import {
+  MARBLING, READY_MS, SHOTS, attr, clickControl, controls, decode, differing, download, launch, openPage, sheet, shootSheet,
+  waitOps,
+} from './harness.mjs';
+
+const SMALL = {
+  version: 1, width: 300, height: 200, background: '#f4ecd8',
+  ops: [
+    { type: 'drop', center: [80, 100], radius: 40, color: '#1d3557' },
+    { type: 'drop', center: [200, 90], radius: 50, color: '#e63946' },
+    { type: 'drop', center: [150, 140], radius: 30, color: '#2a9d8f' },
+  ],
+};
+const N = SMALL.ops.length;
+
+/** The `#d=` fragment of `design` (made by the CLI, like a shared link). */
+function fragment(design, name) {
+  const file = path.join(os.tmpdir(), `marbling-history-${process.pid}-${name}.json`);
+  fs.writeFileSync(file, JSON.stringify(design));
+  const link = execFileSync(MARBLING, ['link', file, '--base', 'http://x/']).toString().trim();
+  return link.slice(link.indexOf('#'));
+}
+
+/** Preferences stored before the page loads (the app restores them). */
+function prefs(tool, settings) {
+  return JSON.stringify({ tool, settings, palette: 0, ink: '#1d3557', antialias: 'rgss' });
+}
+
+/** Waits until the design shows more than `n` ops and its exact frame is drawn. */
+async function waitMoreOps(page, n) {
+  await page.waitForFunction((k) => Number(document.body.dataset.ops) > k && document.body.dataset.ready === '1', n, { timeout: READY_MS });
+  return Number(await attr(page, 'data-ops'));
+}
+
+/** A screenshot of the sheet while the button is held (no pointer parking). */
+async function shootHeld(page, s) {
+  await page.waitForTimeout(600);
+  const clip = { x: Math.round(s.x), y: Math.round(s.y), width: Math.floor(SMALL.width * s.scale), height: Math.floor(SMALL.height * s.scale) };
+  return decode(await page.screenshot({ clip, timeout: READY_MS }));
+}
+
+/** Drags from `a` to `b` (page pixels) in `steps`, shooting the preview halfway and at the end. */
+async function dragWithShots(page, s, a, b, steps) {
+  await page.mouse.move(a.x, a.y);
+  await page.mouse.down();
+  const at = (t) => ({ x: a.x + (b.x - a.x) * t, y: a.y + (b.y - a.y) * t });
+  for (let i = 1; i <= steps / 2; i++) await page.mouse.move(at(i / steps).x, at(i / steps).y);
+  const half = await shootHeld(page, s);
+  for (let i = steps / 2 + 1; i <= steps; i++) await page.mouse.move(at(i / steps).x, at(i / steps).y);
+  const full = await shootHeld(page, s);
+  await page.mouse.up();
+  return { half, full };
+}
+
+describe('history on webgl2', () => {
+  let browser;
+  let site;
+  before(async () => {
+    ({ browser, site } = await launch('webgl2'));
+  });
+  after(async () => {
+    await browser?.close();
+    site?.server.close();
+  });
+
+  test('a spray stroke and a 9-tine rake are one undo each, and their previews follow the drag', async () => {
+    const context = await browser.newContext({ viewport: { width: 1300, height: 820 }, deviceScaleFactor: 1, acceptDownloads: true });
+    await context.addInitScript((p) => localStorage.setItem('marbling.prefs.v1', p), prefs('spray', { rake_tines: 9, spray_density: 6 }));
+    const page = await context.newPage();
+    const errors = [];
+    page.on('pageerror', (e) => errors.push(String(e)));
+    await page.goto(site.url + fragment(SMALL, 'stroke'));
+    await waitOps(page, N);
+    const s = await sheet(page);
+    const p = (x, y) => ({ x: s.x + x * s.scale, y: s.y + y * s.scale });
+    const before = await shootSheet(page, SMALL.width, SMALL.height);
+
+    const spray = await dragWithShots(page, s, p(30, 40), p(270, 60), 16);
+    assert.ok(differing(before.img, spray.half, 8) > 0.001, 'no spray preview halfway');
+    assert.ok(differing(spray.half, spray.full, 8) > 0.001, 'the spray preview did not follow the drag');
+    const sprayed = await waitMoreOps(page, N + 1);
+    const droplets = sprayed - N;
+    // The stroke is one gesture in the saved document.
+    const saved = JSON.parse((await download(page, 'save-json')).bytes.toString('utf8'));
+    assert.deepEqual(saved.gestures, [[N, droplets]]);
+
+    await page.keyboard.press('4'); // rake, 9 tines from the stored preferences
+    const rake = await dragWithShots(page, s, p(150, 20), p(150, 120), 10);
+    assert.ok(differing(rake.half, rake.full, 8) > 0.001, 'the rake preview froze during the drag');
+    await waitOps(page, sprayed + 9);
+    await page.screenshot({ path: path.join(SHOTS, 'history-stroke-rake-webgl2.png'), timeout: READY_MS });
+
+    await page.keyboard.press('Control+z');
+    await waitOps(page, sprayed);
+    await page.keyboard.press('Control+z');
+    await waitOps(page, N);
+    const undone = await shootSheet(page, SMALL.width, SMALL.height);
+    assert.ok(differing(before.img, undone.img, 2) < 0.001, 'two undos did not restore the design');
+    await page.keyboard.press('Control+Shift+z');
+    await waitOps(page, sprayed);
+    assert.deepEqual(errors, []);
+    await context.close();
+  });
+
+  test('a linked design keeps its edits across a reload; New, paper and an earlier-step edit are all recoverable', async () => {
+    // Tall enough that the whole side panel (history, recent designs) is on screen.
+    const { page, context, errors } = await openPage(browser, site, fragment(SMALL, 'link'), { width: 1300, height: 1300 });
+    await waitOps(page, N);
+    const s = await sheet(page);
+    await page.mouse.click(s.x + 60 * s.scale, s.y + 40 * s.scale);
+    await waitOps(page, N + 1);
+    assert.equal(await page.evaluate(() => location.hash), '', 'the edited link is still in the address bar');
+    const edited = await shootSheet(page, SMALL.width, SMALL.height);
+    await page.reload();
+    await waitOps(page, N + 1);
+    const reloaded = await shootSheet(page, SMALL.width, SMALL.height);
+    assert.ok(differing(edited.img, reloaded.img, 2) < 0.001, 'the reload lost the edit');
+
+    // Show an earlier step, draw: the later steps become a branch that can be restored.
+    const rows = Object.keys(await controls(page)).filter((k) => k.startsWith('history-')).map((k) => Number(k.slice(8)));
+    const last = Math.max(...rows);
+    await clickControl(page, `history-${last - 2}`);
+    await waitOps(page, N - 1);
+    await page.mouse.click(s.x + 250 * s.scale, s.y + 170 * s.scale);
+    await waitOps(page, N);
+    await clickControl(page, 'restore-0');
+    await waitOps(page, N + 1);
+    const restored = await shootSheet(page, SMALL.width, SMALL.height);
+    assert.ok(differing(edited.img, restored.img, 2) < 0.001, 'the restored branch differs from the edited design');
+
+    // New, then Undo: the design is back.
+    await clickControl(page, 'new');
+    await waitOps(page, 0);
+    await page.keyboard.press('Control+z');
+    await waitOps(page, N + 1);
+
+    // The paper colour: a pick in the picker is a step that Undo takes back.
+    const c = (await controls(page))['paper-color'];
+    await page.mouse.click(c.x + c.w / 2, c.y + c.h / 2);
+    await page.waitForTimeout(500);
+    await page.screenshot({ path: path.join(SHOTS, 'history-paper-picker-webgl2.png'), timeout: READY_MS });
+    await page.mouse.click(c.x + 30, c.y + c.h + 120);
+    await page.keyboard.press('Escape');
+    await page.waitForTimeout(300);
+    await page.waitForFunction(() => document.body.dataset.ready === '1', null, { timeout: READY_MS });
+    const painted = await shootSheet(page, SMALL.width, SMALL.height);
+    assert.ok(differing(restored.img, painted.img, 8) > 0.2, 'the paper colour did not change the sheet');
+    await page.keyboard.press('Control+z');
+    await page.waitForTimeout(300);
+    await waitOps(page, N + 1);
+    const unpainted = await shootSheet(page, SMALL.width, SMALL.height);
+    assert.ok(differing(restored.img, unpainted.img, 2) < 0.001, 'undo did not restore the paper');
+
+    // The design New replaced is in Recent designs; restoring it is one more step.
+    await clickControl(page, 'recent');
+    await page.waitForFunction(() => (document.body.dataset.controls ?? '').includes('recent-0='), null, { timeout: READY_MS });
+    await clickControl(page, 'new');
+    await waitOps(page, 0);
+    await clickControl(page, 'recent-0');
+    await waitOps(page, N + 1);
+    await page.screenshot({ path: path.join(SHOTS, 'history-recent-webgl2.png'), timeout: READY_MS });
+    assert.deepEqual(errors, []);
+    await context.close();
+  });
+});
