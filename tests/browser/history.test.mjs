@@ -75,8 +75,11 @@ describe('history on webgl2', () => {
   });
 
   test('a spray stroke and a 9-tine rake are one undo each, and their previews follow the drag', async () => {
-    const context = await browser.newContext({ viewport: { width: 1300, height: 820 }, deviceScaleFactor: 1, acceptDownloads: true });
-    await context.addInitScript((p) => localStorage.setItem('marbling.prefs.v1', p), prefs('spray', { rake_tines: 9, spray_density: 6 }));
+    // A small window: every drag frame of a multi-op gesture is an exact render.
+    const context = await browser.newContext({ viewport: { width: 900, height: 640 }, deviceScaleFactor: 1, acceptDownloads: true });
+    await context.addInitScript((p) => localStorage.setItem('marbling.prefs.v1', p), prefs('spray', { rake_tines: 9, spray_density: 2 }));
+    const t0 = Date.now();
+    const log = (what) => console.log(`history: ${what} after ${((Date.now() - t0) / 1000).toFixed(1)} s`);
     const page = await context.newPage();
     const errors = [];
     page.on('pageerror', (e) => errors.push(String(e)));
@@ -86,7 +89,9 @@ describe('history on webgl2', () => {
     const p = (x, y) => ({ x: s.x + x * s.scale, y: s.y + y * s.scale });
     const before = await shootSheet(page, SMALL.width, SMALL.height);
 
-    const spray = await dragWithShots(page, s, p(30, 40), p(270, 60), 16);
+    log('loaded');
+    const spray = await dragWithShots(page, s, p(30, 40), p(270, 60), 8);
+    log('sprayed');
     assert.ok(differing(before.img, spray.half, 8) > 0.001, 'no spray preview halfway');
     assert.ok(differing(spray.half, spray.full, 8) > 0.001, 'the spray preview did not follow the drag');
     const sprayed = await waitMoreOps(page, N + 1);
@@ -96,7 +101,9 @@ describe('history on webgl2', () => {
     assert.deepEqual(saved.gestures, [[N, droplets]]);
 
     await page.keyboard.press('4'); // rake, 9 tines from the stored preferences
-    const rake = await dragWithShots(page, s, p(150, 20), p(150, 120), 10);
+    log('saved');
+    const rake = await dragWithShots(page, s, p(150, 20), p(150, 120), 6);
+    log('raked');
     assert.ok(differing(rake.half, rake.full, 8) > 0.001, 'the rake preview froze during the drag');
     await waitOps(page, sprayed + 9);
     await page.screenshot({ path: path.join(SHOTS, 'history-stroke-rake-webgl2.png'), timeout: READY_MS });
@@ -109,6 +116,7 @@ describe('history on webgl2', () => {
     assert.ok(differing(before.img, undone.img, 2) < 0.001, 'two undos did not restore the design');
     await page.keyboard.press('Control+Shift+z');
     await waitOps(page, sprayed);
+    log('undone and redone');
     assert.deepEqual(errors, []);
     await context.close();
   });
@@ -148,10 +156,19 @@ describe('history on webgl2', () => {
     // The paper colour: a pick in the picker is a step that Undo takes back.
     const c = (await controls(page))['paper-color'];
     await page.mouse.click(c.x + c.w / 2, c.y + c.h / 2);
-    await page.waitForTimeout(500);
+    // The picker opens below the button: a saturation/value square, about 275 px wide.
+    await page.waitForTimeout(1500);
+    // A press held over a few frames (egui's picker follows the held pointer).
+    await page.mouse.move(c.x + 200, c.y + 250);
+    await page.mouse.down();
+    await page.waitForTimeout(400);
+    await page.mouse.move(c.x + 205, c.y + 255);
+    await page.waitForTimeout(400);
+    await page.mouse.up();
+    await page.waitForTimeout(1000);
     await page.screenshot({ path: path.join(SHOTS, 'history-paper-picker-webgl2.png'), timeout: READY_MS });
-    await page.mouse.click(c.x + 30, c.y + c.h + 120);
-    await page.keyboard.press('Escape');
+    // A click on the status bar's empty end closes the picker (Escape does not).
+    await page.mouse.click(1290, 1292);
     await page.waitForTimeout(300);
     await page.waitForFunction(() => document.body.dataset.ready === '1', null, { timeout: READY_MS });
     const painted = await shootSheet(page, SMALL.width, SMALL.height);

@@ -50,6 +50,8 @@ impl MarblingApp {
     /// Carries out `action`: the only place where the design and its history change.
     pub(crate) fn apply(&mut self, action: Action) {
         let pristine = std::mem::take(&mut self.pristine);
+        let size = |d: &Design| (d.width, d.height);
+        let shown_size = size(&self.shown);
         let changed = match action {
             Action::Commit(ops) => match self.history.push_ops(ops) {
                 Ok(()) => true,
@@ -73,6 +75,7 @@ impl MarblingApp {
                 self.info(format!("opened {from}"));
                 if from_link {
                     self.after_change();
+                    self.fit_if_resized(shown_size);
                     return;
                 }
                 true
@@ -93,6 +96,7 @@ impl MarblingApp {
                 self.history.view(n);
                 self.playback = None;
                 self.refresh();
+                self.fit_if_resized(shown_size);
                 return;
             }
             Action::Restore(i) => self.history.restore(i),
@@ -100,6 +104,7 @@ impl MarblingApp {
                 Ok(d) => {
                     let label = self.recent.entries[i].label.clone();
                     self.replace_document(d, format!("restored recent design ({label})"));
+                    self.info("restored a recent design (Undo goes back)");
                     true
                 }
                 Err(e) => {
@@ -139,6 +144,7 @@ impl MarblingApp {
                 self.last_fragment = None;
             }
             self.after_change();
+            self.fit_if_resized(shown_size);
         }
     }
 
@@ -147,6 +153,13 @@ impl MarblingApp {
         self.playback = None;
         self.refresh();
         self.autosave_pending = true;
+    }
+
+    /// A sheet of another size (New, Open, or undoing either) is fitted to the canvas.
+    fn fit_if_resized(&mut self, before: (u32, u32)) {
+        if (self.shown.width, self.shown.height) != before {
+            self.view = None;
+        }
     }
 
     /// A new document step; the design it replaces goes to *Recent designs*.
@@ -158,13 +171,9 @@ impl MarblingApp {
                 .push(&kept, format!("before {label}"), platform::now_ms());
             self.recent_pending = true;
         }
-        let resized = (design.width, design.height) != (current.width, current.height);
         self.mode = Mode::Marbling;
         self.active = None;
         self.history.push_document(design, label);
-        if resized {
-            self.view = None;
-        }
     }
 }
 
@@ -202,8 +211,13 @@ mod tests {
         assert!(a.history.design().ops.is_empty());
         assert_eq!(a.recent.entries.len(), 1);
         assert!(a.autosave_pending && a.recent_pending);
+        a.view = Some(crate::view::ViewState::fit(&a.shown, [800.0, 600.0]));
         a.apply(Action::Undo);
         assert_eq!(a.history.design(), &stroke);
+        assert!(
+            a.view.is_none(),
+            "the 40×30 sheet is fitted again after the undo"
+        );
         a.apply(Action::Undo);
         assert!(a.history.design().ops.is_empty());
         a.apply(Action::OpenRecent(0));
@@ -216,7 +230,10 @@ mod tests {
         a.apply(Action::Commit(vec![spray(1.0)]));
         a.apply(Action::SetPaperColor(Rgb8::new(10, 20, 30)));
         assert_eq!(a.shown.background, Rgb8::new(10, 20, 30));
-        assert_eq!(a.history.steps().last().unwrap().label, "paper #0a141e");
+        assert_eq!(
+            a.history.steps().last().expect("a value").label,
+            "paper #0a141e"
+        );
         a.apply(Action::Undo);
         assert_eq!(a.shown.background, Rgb8::new(250, 250, 250));
         assert_eq!(a.shown.ops.len(), 1);

@@ -175,7 +175,7 @@ mod tests {
     #[test]
     fn records_round_trip_and_alternate_slots() {
         let r = record(7, 20);
-        assert_eq!(Record::decode(&r.encode()).unwrap(), r);
+        assert_eq!(Record::decode(&r.encode()).expect("a value"), r);
         assert_ne!(record(7, 1).slot(), record(8, 1).slot());
         assert!(Record::decode("{\"seq\":1}").is_err());
     }
@@ -184,11 +184,11 @@ mod tests {
     fn the_newest_readable_slot_wins_and_a_torn_write_loses_nothing() {
         let (old, new) = (record(4, 10), record(5, 12));
         let found = newest([Some(old.encode()), Some(new.encode())], None);
-        assert_eq!(found.record.unwrap(), new);
+        assert_eq!(found.record.expect("a value"), new);
         // The newer write was cut short: the older copy is whole and is taken.
         let torn = new.encode()[..40].to_owned();
         let found = newest([Some(old.encode()), Some(torn)], None);
-        assert_eq!(found.record.unwrap(), old);
+        assert_eq!(found.record.expect("a value"), old);
         assert!(found.unreadable.is_empty());
         // Nothing readable: the reason is reported.
         let found = newest([Some("{".into()), None], None);
@@ -200,7 +200,7 @@ mod tests {
     fn the_legacy_autosave_is_read_when_no_slot_holds_one() {
         let d = random_design(3, 30, 20, 5, Mix::Mixed);
         let found = newest([None, None], Some(d.to_json_compact()));
-        assert_eq!(found.record.unwrap().design, d);
+        assert_eq!(found.record.expect("a value").design, d);
         let found = newest([None, None], Some("[]".into()));
         assert!(found.record.is_none());
         assert_eq!(found.unreadable[0].0, LEGACY_KEY);

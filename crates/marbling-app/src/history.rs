@@ -275,7 +275,7 @@ impl History {
         let Some(b) = self.branches.get(i).cloned() else {
             return false;
         };
-        self.push_document(b.fork, format!("back to the fork of {}", b.label));
+        self.push_document(b.fork, format!("restore branch: {}", b.label));
         for step in b.steps {
             self.push(step);
         }
@@ -432,11 +432,11 @@ mod tests {
     #[test]
     fn a_stroke_is_one_step_undone_and_redone_whole() {
         let mut h = History::new(blank());
-        h.push_ops(vec![spray(0.0)]).unwrap();
+        h.push_ops(vec![spray(0.0)]).expect("a value");
         h.push_ops((1..=340).map(|i| spray(f64::from(i))).collect())
-            .unwrap();
+            .expect("a value");
         h.push_ops((0..9).map(|i| tine(f64::from(i))).collect())
-            .unwrap();
+            .expect("a value");
         assert_eq!(h.steps().len(), 3);
         assert_eq!(h.steps()[1].label, "spray stroke, 340 droplets");
         assert_eq!(h.steps()[2].label, "rake ↓ 9 tines");
@@ -454,10 +454,10 @@ mod tests {
     #[test]
     fn grouping_survives_a_round_trip_through_json() {
         let mut h = History::new(blank());
-        h.push_ops(vec![spray(0.0)]).unwrap();
+        h.push_ops(vec![spray(0.0)]).expect("a value");
         h.push_ops(vec![spray(1.0), spray(2.0), spray(3.0)])
-            .unwrap();
-        h.push_ops(vec![spray(4.0)]).unwrap();
+            .expect("a value");
+        h.push_ops(vec![spray(4.0)]).expect("a value");
         let json = h.design().to_json_pretty();
         assert!(json.contains("\"gestures\": [[1,3]]"), "{json}");
         let back = Design::from_json(&json).expect("valid");
@@ -473,7 +473,7 @@ mod tests {
     #[test]
     fn new_then_undo_restores_the_design_and_paper_is_undoable() {
         let mut h = History::new(blank());
-        h.push_ops(vec![spray(0.0), spray(1.0)]).unwrap();
+        h.push_ops(vec![spray(0.0), spray(1.0)]).expect("a value");
         let made = h.design().clone();
         h.push_document(Design::new(30, 20, Rgb8::new(9, 9, 9)), "new sheet");
         assert_eq!((h.design().width, h.design().ops.len()), (30, 0));
@@ -499,7 +499,7 @@ mod tests {
         let mut h = History::new(blank());
         for i in 0..5 {
             h.push_ops(vec![spray(f64::from(i)), spray(f64::from(i) + 0.5)])
-                .unwrap();
+                .expect("a value");
         }
         let full = h.design().clone();
         h.view(Some(2));
@@ -508,7 +508,7 @@ mod tests {
         h.view(Some(99));
         assert_eq!(h.shown_steps(), 5);
         h.view(Some(2));
-        h.push_ops(vec![spray(9.0)]).unwrap();
+        h.push_ops(vec![spray(9.0)]).expect("a value");
         assert_eq!(xs(h.design()), vec![0.0, 0.5, 1.0, 1.5, 9.0]);
         assert_eq!(h.branches().len(), 1);
         assert_eq!(h.branches()[0].steps.len(), 3);
@@ -528,10 +528,10 @@ mod tests {
     #[test]
     fn a_new_step_after_undo_keeps_the_undone_steps_as_a_branch() {
         let mut h = History::new(blank());
-        h.push_ops(vec![spray(1.0)]).unwrap();
-        h.push_ops(vec![spray(2.0)]).unwrap();
+        h.push_ops(vec![spray(1.0)]).expect("a value");
+        h.push_ops(vec![spray(2.0)]).expect("a value");
         h.undo();
-        h.push_ops(vec![spray(3.0)]).unwrap();
+        h.push_ops(vec![spray(3.0)]).expect("a value");
         assert!(!h.can_redo());
         assert_eq!(xs(h.design()), vec![1.0, 3.0]);
         assert_eq!(xs(&h.branches()[0].design), vec![1.0, 2.0]);
@@ -540,12 +540,12 @@ mod tests {
     #[test]
     fn earlier_states_fold_over_documents_and_paper() {
         let mut h = History::new(blank());
-        h.push_ops(vec![spray(1.0)]).unwrap();
+        h.push_ops(vec![spray(1.0)]).expect("a value");
         let mut other = Design::new(20, 20, Rgb8::new(5, 5, 5));
         other.ops = vec![spray(7.0), spray(8.0)];
         other.set_gesture_sizes([2]);
         h.push_document(other.clone(), "opened other.json");
-        h.push_ops(vec![spray(9.0)]).unwrap();
+        h.push_ops(vec![spray(9.0)]).expect("a value");
         let mut p = Paper::of(h.design());
         p.background = Rgb8::new(0, 0, 200);
         h.push_paper(p, "paper", false);
@@ -568,7 +568,7 @@ mod tests {
         let before = h.clone();
         let err = h
             .push_ops((0..11).map(|i| spray(f64::from(i))).collect())
-            .unwrap_err();
+            .expect_err("an error");
         assert_eq!(
             err,
             EditError::TooManyOps {
@@ -579,7 +579,7 @@ mod tests {
         assert!(err.to_string().contains("nothing was added"));
         assert_eq!(h, before);
         h.push_ops((0..10).map(|i| spray(f64::from(i))).collect())
-            .unwrap();
+            .expect("a value");
         assert_eq!(h.design().ops.len(), MAX_OPS);
         assert!(h.design().validate().is_ok());
     }

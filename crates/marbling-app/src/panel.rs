@@ -472,20 +472,36 @@ impl MarblingApp {
                                     );
                                 }
                             }
+                            // Labels that cannot be selected, so a click anywhere on
+                            // the entry opens it.
                             ui.vertical(|ui| {
-                                ui.label(format!(
-                                    "{} · {} ops · {}×{}",
-                                    crate::recent::date_label(e.saved_ms),
-                                    e.ops,
-                                    e.size[0],
-                                    e.size[1]
-                                ));
-                                ui.label(RichText::new(&e.label).weak());
+                                ui.add(
+                                    egui::Label::new(format!(
+                                        "{} · {} ops · {}×{}",
+                                        crate::recent::date_label(e.saved_ms),
+                                        e.ops,
+                                        e.size[0],
+                                        e.size[1]
+                                    ))
+                                    .selectable(false),
+                                );
+                                ui.add(
+                                    egui::Label::new(RichText::new(&e.label).weak())
+                                        .selectable(false),
+                                );
                             });
                         })
                         .response
                         .interact(egui::Sense::click())
                         .on_hover_text("Restore this design (undoable)");
+                    if r.hovered() {
+                        ui.painter().rect_stroke(
+                            r.rect.expand(1.0),
+                            2,
+                            ui.visuals().widgets.hovered.fg_stroke,
+                            egui::StrokeKind::Outside,
+                        );
+                    }
                     self.control(format!("recent-{i}"), &r);
                     if r.clicked() {
                         open = Some(i);

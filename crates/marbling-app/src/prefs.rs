@@ -81,9 +81,9 @@ mod tests {
         p.settings.rake_tines = 9;
         p.palette = 2;
         p.antialias = Antialias::Grid4;
-        assert_eq!(Prefs::decode(&p.encode(), defaults).unwrap(), p);
+        assert_eq!(Prefs::decode(&p.encode(), defaults).expect("a value"), p);
         let partial = r##"{"tool":"spray","settings":{"spray_spread":99.0},"palette":1,"ink":"#ff0000","antialias":"?"}"##;
-        let q = Prefs::decode(partial, defaults).unwrap();
+        let q = Prefs::decode(partial, defaults).expect("a value");
         assert_eq!((q.tool, q.settings.spray_spread), (ToolKind::Spray, 99.0));
         assert_eq!(q.settings.drop_radius, ToolSettings::default().drop_radius);
         assert_eq!(
@@ -92,7 +92,7 @@ mod tests {
         );
         assert!(
             Prefs::decode("{", defaults)
-                .unwrap_err()
+                .expect_err("an error")
                 .starts_with("preferences: ")
         );
     }

@@ -141,7 +141,7 @@ mod tests {
         let back = Recent::decode(&r.encode());
         assert_eq!(back, r);
         assert_eq!(
-            back.design(0).unwrap(),
+            back.design(0).expect("a value"),
             random_design(29, 40, 30, 5, Mix::Mixed)
         );
         // Keeping the same design again moves it to the top instead of doubling it.

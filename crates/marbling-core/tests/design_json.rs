@@ -370,7 +370,7 @@ fn gesture_spans_are_read_written_and_checked() {
     bad.gestures = vec![marbling_core::GestureSpan { first: 5, count: 9 }];
     assert!(
         bad.validate()
-            .unwrap_err()
+            .expect_err("an error")
             .to_string()
             .contains("gestures[0]: ops 5..14")
     );
@@ -396,7 +396,7 @@ fn rounded_ops_make_short_links() {
     assert!(short * 2 < full, "{full} → {short}");
     // The link holds exactly the rounded design.
     assert_eq!(
-        marbling_core::decode_share(&marbling_core::share_fragment(&rounded)).unwrap(),
+        marbling_core::decode_share(&marbling_core::share_fragment(&rounded)).expect("a value"),
         rounded
     );
 }
