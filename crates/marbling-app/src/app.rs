@@ -614,25 +614,39 @@ impl MarblingApp {
 
     /// Keeps the `<body>` automation hooks current (only changed values are written).
     fn update_hooks(&mut self, ctx: &egui::Context) {
-        let ready = {
+        // Recorded: the exact frame of this design and view is in the canvas texture's
+        // commands. Ready: the GPU has also finished it (the queue's work-done callback).
+        let (recorded, finished) = {
             let st = self.status.lock().ok();
             let drawn = st.as_ref().and_then(|s| {
                 s.drawn
                     .as_ref()
                     .map(|r| (r.design_key, r.pending.is_none()))
             });
-            self.gpu
-                && self.active.is_none()
-                && self.playback.is_none()
-                && drawn == Some((self.key, true))
+            let finished = st.as_ref().is_some_and(|s| {
+                s.exact_done.load(std::sync::atomic::Ordering::SeqCst) == s.work.exact
+            });
+            (
+                self.gpu
+                    && self.active.is_none()
+                    && self.playback.is_none()
+                    && drawn == Some((self.key, true)),
+                finished,
+            )
         };
+        let ready = recorded && finished;
+        if recorded && !finished {
+            // The next frame asks to hear when the GPU is done; backends that report it
+            // only when polled (wgpu's GL) hear of it in a later frame.
+            ctx.request_repaint_after(std::time::Duration::from_millis(100));
+        }
         let (preview_ready, work) = self
             .status
             .lock()
             .ok()
             .map(|s| {
                 let asked = s.cache_ready == Some(self.key);
-                if ready && !asked {
+                if recorded && !asked {
                     // One more frame builds the live-preview cache.
                     ctx.request_repaint();
                 }

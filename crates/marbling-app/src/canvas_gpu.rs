@@ -54,6 +54,12 @@ pub struct CanvasStatus {
     /// How much GPU work the canvas has recorded: exact frames, preview frames and
     /// preview caches (for `data-gpu-work`: hovering must not add to any of them).
     pub work: GpuWork,
+    /// The number of the last exact frame the GPU has finished (of [`GpuWork::exact`];
+    /// set from the queue's work-done callback, asked for in the frame after the one
+    /// that recorded it, when its commands have been submitted).
+    pub exact_done: Arc<std::sync::atomic::AtomicU64>,
+    /// The exact frame whose completion was asked for.
+    pub exact_asked: u64,
 }
 
 /// Counts of the canvas's GPU passes since start.
@@ -291,6 +297,19 @@ impl egui_wgpu::CallbackTrait for CanvasCallback {
             status.work.preview += 1;
             status.work.caches = gpu.caches_built;
         } else if status.drawn.as_ref() == Some(req) {
+            // The exact frame was submitted with the previous frame: hear when it is done.
+            if status.exact_asked != status.work.exact {
+                status.exact_asked = status.work.exact;
+                let (done, n, ctx) = (
+                    status.exact_done.clone(),
+                    status.work.exact,
+                    self.ctx.clone(),
+                );
+                queue.on_submitted_work_done(move || {
+                    done.store(n, std::sync::atomic::Ordering::SeqCst);
+                    ctx.request_repaint();
+                });
+            }
             // The exact frame is on screen: use the idle frame to get the preview ready.
             if status.cache_ready != Some(req.design_key) && status.error.is_none() {
                 match gpu.ensure_cache(device, queue, &self.design, req) {
