@@ -24,6 +24,7 @@ for (const backend of Object.keys(BACKENDS)) {
     });
 
     const open = (hash = '') => openPage(browser, site, hash);
+    const webgpuOnly = backend === 'webgpu' ? {} : { skip: 'the tile schedule does not depend on the backend' };
 
     test('loads without console errors on the expected backend', async () => {
       const { page, context, errors } = await open();
@@ -86,6 +87,72 @@ for (const backend of Object.keys(BACKENDS)) {
       console.log(`${backend}: link vs CLI render at scale ${shot.scale.toFixed(4)}: ${(100 * frac).toFixed(3)} % of ${w}×${h} px differ by > 24/255`);
       assert.ok(frac <= 0.01, `${(100 * frac).toFixed(2)} % of pixels differ`);
       assert.deepEqual(errors, []);
+      await context.close();
+    });
+
+    // Progressive exact rendering (crates/marbling-app/src/refine.rs): a 5,000-op link is
+    // drawn in tiles over many frames; `data-ready` says 1 only after the last one, and
+    // the picture is then the CLI's. An edit after that shows the preview at once (the
+    // design before the edit, with the new drop walked over it) while the tiles sharpen
+    // it. Small sizes keep it cheap on SwiftShader (a 180×135-px sheet).
+    test('a 5,000-op link refines in tiles, the preview stands in, ready only at the end', webgpuOnly, async () => {
+      const file = path.join(os.tmpdir(), `marbling-5000-${process.pid}.json`);
+      execFileSync(MARBLING, ['random', '--ops', '5000', '--size', '120x90', '--seed', '7', '--mix', 'mixed', '-o', file]);
+      const link = execFileSync(MARBLING, ['link', file, '--base', site.url]).toString().trim();
+      const context = await browser.newContext({ viewport: { width: 560, height: 360 }, deviceScaleFactor: 1 });
+      const page = await context.newPage();
+      const errors = [];
+      page.on('pageerror', (e) => errors.push(String(e)));
+      // Every change of the hooks, in order, seen by the page itself.
+      await page.addInitScript(() => {
+        window.hookLog = [];
+        const names = ['data-ready', 'data-progress', 'data-ops', 'data-gpu-work'];
+        new MutationObserver((changes) => {
+          for (const c of changes) window.hookLog.push([c.attributeName, c.target.getAttribute(c.attributeName)]);
+        }).observe(document.documentElement, { subtree: true, attributes: true, attributeFilter: names });
+      });
+      await page.goto(site.url + link.slice(link.indexOf('#')));
+      await waitOps(page, 5000);
+      const log = await page.evaluate(() => window.hookLog);
+      const tilesOf = (v) => Number(/tiles=(\d+)/.exec(v)?.[1] ?? 0);
+      const progress = log.filter(([n, v]) => n === 'data-progress' && v !== null).map(([, v]) => Number(v));
+      const firstReady = log.findIndex(([n, v]) => n === 'data-ready' && v === '1');
+      const lastProgress = log.findLastIndex(([n, v]) => n === 'data-progress' && v !== null);
+      const tiles = tilesOf(log.findLast(([n]) => n === 'data-gpu-work')?.[1]);
+      console.log(`${backend}: 5,000 ops: ${tiles} tiles, ${progress.length} progress steps before ready`);
+      assert.ok(progress.length >= 3, `only ${progress.length} progress steps: not refined in tiles`);
+      assert.ok(progress.every((p, i) => p > 0 && p < 1 && (i === 0 || p >= progress[i - 1])), `progress not rising in (0, 1): ${progress}`);
+      assert.ok(firstReady > lastProgress, 'data-ready said 1 while tiles were still being drawn');
+      assert.equal(await attr(page, 'data-progress'), null);
+
+      const shot = await shootSheet(page, 120, 90);
+      const cpuFile = path.join(os.tmpdir(), `marbling-5000-${process.pid}.png`);
+      execFileSync(MARBLING, ['render', file, '-o', cpuFile, '--scale', String(shot.scale), '--aa', 'rgss']);
+      const cpu = decode(fs.readFileSync(cpuFile));
+      const w = Math.min(cpu.width, shot.img.width);
+      const h = Math.min(cpu.height, shot.img.height);
+      const frac = differing(crop(cpu, w, h), crop(shot.img, w, h), 24);
+      console.log(`${backend}: 5,000-op link vs CLI render: ${(100 * frac).toFixed(3)} % of ${w}×${h} px differ by > 24/255`);
+      assert.ok(frac <= 0.01, `${(100 * frac).toFixed(2)} % of pixels differ from the CLI render`);
+
+      // An edit: the preview cache of the design stands in at once, sharpened by tiles.
+      await page.waitForFunction(() => document.body.dataset.previewReady === '1', null, { timeout: READY_MS });
+      await page.keyboard.press('1'); // drop
+      await page.mouse.click(shot.x + 60 * shot.scale, shot.y + 45 * shot.scale);
+      await page.waitForFunction(() => document.body.dataset.ops === '5001' && document.body.dataset.progress !== undefined, null, { timeout: READY_MS });
+      const mid = await shootSheet(page, 120, 90);
+      const midProgress = await attr(page, 'data-progress');
+      await waitOps(page, 5001);
+      const done = await shootSheet(page, 120, 90);
+      const off = differing(mid.img, done.img, 48);
+      const changed = differing(shot.img, done.img, 48);
+      console.log(`${backend}: while refining (progress ${midProgress}): ${(100 * off).toFixed(2)} % of pixels off the exact frame; the drop changed ${(100 * changed).toFixed(2)} %`);
+      assert.ok(changed > 0.02, 'the drop did not change the picture');
+      assert.ok(off < changed / 2, 'the frame shown while refining was not the preview of the edit');
+      await page.screenshot({ path: path.join(SHOTS, `refined-5000-${backend}.png`), timeout: READY_MS });
+      assert.deepEqual(errors, []);
+      fs.rmSync(file, { force: true });
+      fs.rmSync(cpuFile, { force: true });
       await context.close();
     });
 

@@ -52,6 +52,22 @@ impl MarblingApp {
         let pristine = std::mem::take(&mut self.pristine);
         let size = |d: &Design| (d.width, d.height);
         let shown_size = size(&self.shown);
+        // An edit of the same document: the design before it, with the op it added,
+        // stands in while the new design's exact frame is drawn.
+        let stand_in = match &action {
+            Action::Load { .. } | Action::NewSheet | Action::OpenRecent(_) => None,
+            Action::Commit(ops) => Some(crate::canvas_gpu::StandIn {
+                key: self.key,
+                op: match ops.as_slice() {
+                    [op] if !matches!(op, Op::Spray(_)) => Some(*op),
+                    _ => None,
+                },
+            }),
+            _ => Some(crate::canvas_gpu::StandIn {
+                key: self.key,
+                op: None,
+            }),
+        };
         let changed = match action {
             Action::Commit(ops) => match self.history.push_ops(ops) {
                 Ok(()) => true,
@@ -97,6 +113,7 @@ impl MarblingApp {
                 self.playback = None;
                 self.refresh();
                 self.fit_if_resized(shown_size);
+                self.stand_in = stand_in.map(|s| (self.key, s));
                 return;
             }
             Action::Restore(i) => self.history.restore(i),
@@ -145,6 +162,7 @@ impl MarblingApp {
             }
             self.after_change();
             self.fit_if_resized(shown_size);
+            self.stand_in = stand_in.map(|s| (self.key, s));
         }
     }
 

@@ -43,6 +43,11 @@ pub struct MarblingApp {
     pub(crate) history: History,
     /// Bumped whenever the shown design changes (the GPU re-uploads on change).
     pub(crate) key: u64,
+    /// What may stand in for the shown design (`.0` = [`Self::key`]) while its exact
+    /// frame is drawn: the design before the last edit, and the op the edit added.
+    pub(crate) stand_in: Option<(u64, crate::canvas_gpu::StandIn)>,
+    /// When the user last acted on the page (egui's clock, seconds).
+    pub(crate) last_input_s: f64,
     /// The design on the canvas (the history, a viewed prefix or a playback frame).
     pub(crate) shown: Arc<Design>,
     pub(crate) tool: ToolKind,
@@ -194,6 +199,8 @@ impl MarblingApp {
         Self {
             history: History::new(design.clone()),
             key: 0,
+            stand_in: None,
+            last_input_s: 0.0,
             shown: Arc::new(design),
             tool: ToolKind::Drop,
             settings: ToolSettings::default(),
@@ -640,6 +647,13 @@ impl MarblingApp {
             // only when polled (wgpu's GL) hear of it in a later frame.
             ctx.request_repaint_after(std::time::Duration::from_millis(100));
         }
+        let progress = self
+            .status
+            .lock()
+            .ok()
+            .and_then(|s| s.progress)
+            .filter(|_| self.gpu && self.active.is_none() && !ready)
+            .map(|p| format!("{p:.3}"));
         let (preview_ready, work) = self
             .status
             .lock()
@@ -699,6 +713,7 @@ impl MarblingApp {
             .map(|(e, _)| format!("{}x{}", e.size().0, e.size().1));
         let wanted: Vec<(&'static str, Option<String>)> = vec![
             ("data-ready", ready.then(|| "1".to_owned())),
+            ("data-progress", progress),
             ("data-backend", Some(self.backend.clone())),
             ("data-ops", Some(self.shown.ops.len().to_string())),
             ("data-error", error),
@@ -709,8 +724,9 @@ impl MarblingApp {
             (
                 "data-gpu-work",
                 Some(format!(
-                    "exact={},preview={},caches={},preview_samples={},panel_copies={},panel_renders={}",
+                    "exact={},tiles={},preview={},caches={},preview_samples={},panel_copies={},panel_renders={}",
                     work.exact,
+                    work.tiles,
                     work.preview,
                     work.caches,
                     preview_samples,

@@ -2,7 +2,7 @@
 //! their footprints.
 
 use crate::app::{ActiveGesture, MarblingApp};
-use crate::canvas_gpu::{CanvasCallback, CanvasPlacement, FrameRequest};
+use crate::canvas_gpu::{CanvasCallback, CanvasPlacement, FrameRequest, StandIn};
 use crate::overlay;
 use crate::overlay_gpu;
 use crate::tools::{Gesture, ops_for};
@@ -202,6 +202,10 @@ impl MarblingApp {
             ((f64::from(rect.height()) * ppp).round() as u32).max(1),
         ];
         let pending = self.pending_ops();
+        let stand_in = self
+            .stand_in
+            .filter(|(key, _)| *key == self.key)
+            .map(|(_, s)| s);
         let (design, design_key, single) = match pending.as_slice() {
             [] => (self.shown.clone(), self.key, None),
             [op] if !matches!(op, Op::Spray(_)) => (self.shown.clone(), self.key, Some(*op)),
@@ -234,18 +238,42 @@ impl MarblingApp {
             origin: [view.origin.x, view.origin.y],
             antialias,
             pending: single,
+            // A gesture's several ops drawn exactly: the design's cache stands in.
+            stand_in: if design_key == self.key {
+                stand_in
+            } else {
+                Some(StandIn {
+                    key: self.key,
+                    op: None,
+                })
+            },
+            transient: design_key != self.key,
         };
+        let acting =
+            ui.input(|i| !i.events.is_empty() || i.pointer.any_down() || i.pointer.is_moving());
+        if acting {
+            self.last_input_s = ui.input(|i| i.time);
+        }
+        let idle = ui.input(|i| i.time) - self.last_input_s > IDLE_AFTER_S;
         let callback = CanvasCallback {
             design,
             request,
             placement,
             status: self.status.clone(),
             ctx: ui.ctx().clone(),
+            tiles: if idle {
+                crate::canvas_gpu::TILES_WHILE_IDLE
+            } else {
+                crate::canvas_gpu::TILES_WHILE_ACTIVE
+            },
         };
         ui.painter()
             .add(egui_wgpu::Callback::new_paint_callback(rect, callback));
     }
 }
+
+/// Seconds without input after which the canvas refines at its idle pace.
+const IDLE_AFTER_S: f64 = 0.3;
 
 /// A hash of `ops`' exact values (two lists differ in it unless they are equal, with
 /// the odds of a 64-bit hash collision).

@@ -1,10 +1,17 @@
-//! The canvas's GPU side. The exact render is drawn into an offscreen texture only when
-//! the design or the view changes, and every frame copies that texture 1:1 into egui's
-//! pass over the sheet in one cheap draw (the grey around it is the window's clear
-//! colour), so hovering never re-walks the ops. While a tool is dragged, the live
-//! preview is drawn straight into egui's pass over the sheet instead: one pass per
-//! frame, not two.
+//! The canvas's GPU side. The exact render of the design is drawn into an offscreen
+//! texture whenever the design or the view changes, in tiles over successive frames
+//! (`refine.rs`: each tile sized to fit a per-frame GPU budget measured from earlier
+//! tiles), so no frame waits for a whole render and input stays live. Until the last
+//! tile is drawn, the preview stands in under the tiles already drawn: the preview
+//! cache of this design, or of the design just before an edit with the edit's op
+//! walked on top (what the last drag frame showed). Every frame then copies the
+//! texture 1:1 into egui's pass over the sheet in one cheap draw (the grey around it is
+//! the window's clear colour), so hovering never re-walks the ops. Once the exact frame
+//! is done, the live-preview cache of the design is brought up to date the same way, in
+//! tiles. While a tool is dragged, the live preview is drawn straight into egui's pass
+//! over the sheet instead.
 
+use crate::refine::{FRAME_BUDGET_MS, MAX_IN_FLIGHT, PixelRect, Refinement, TileBudget, per_pixel};
 use eframe::egui_wgpu;
 use egui::{Pos2, Rect};
 use marbling_core::{Antialias, Design, Op};
@@ -12,6 +19,7 @@ use marbling_gpu::{
     ExactRenderer, Placement, PreparedDesign, PresentSource, Presenter, PreviewCache,
     PreviewRenderer, RenderTarget, View,
 };
+use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::{Arc, Mutex};
 
 /// The canvas texture's format; the renderer sRGB-encodes into it itself, exactly as the
@@ -36,41 +44,89 @@ pub struct FrameRequest {
     pub antialias: Antialias,
     /// The op being dragged, drawn with the live preview; `None` for the exact render.
     pub pending: Option<Op>,
+    /// What may stand in while the exact frame is drawn in tiles, when this design has
+    /// no preview cache yet.
+    pub stand_in: Option<StandIn>,
+    /// A frame of a gesture in progress (its ops drawn exactly over the design): no
+    /// preview cache is built for it.
+    pub transient: bool,
+}
+
+/// A design close to the requested one whose preview cache can stand in for it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct StandIn {
+    /// That design's key.
+    pub key: u64,
+    /// The op to walk over its cache (the op just committed), if any.
+    pub op: Option<Op>,
+}
+
+impl FrameRequest {
+    /// What identifies the exact frame this request asks for (the rest says how to get
+    /// there or what to show meanwhile).
+    fn exact_frame(&self) -> FrameRequest {
+        FrameRequest {
+            pending: None,
+            stand_in: None,
+            ..self.clone()
+        }
+    }
 }
 
 /// What the GPU side reports back to the UI (shared with the paint callback).
 #[derive(Debug, Default)]
 pub struct CanvasStatus {
-    /// The request whose frame is in the texture.
+    /// The exact frame whose tiles are all drawn (submitted) into the texture.
     pub drawn: Option<FrameRequest>,
+    /// The fraction of the exact frame drawn so far, while it is being drawn.
+    pub progress: Option<f64>,
     /// The last GPU-side error (e.g. more ops than the device's texture can hold).
     pub error: Option<String>,
-    /// The design key whose live-preview cache is built (it is built in the frame after
-    /// the exact frame, so the first drag frame does not have to wait for it).
+    /// The design key whose live-preview cache is complete (all its tiles submitted).
     pub cache_ready: Option<u64>,
     /// The design key whose preview cache the GPU has finished rendering (set from the
     /// queue's work-done callback; 0 = none).
-    pub cache_done: Arc<std::sync::atomic::AtomicU64>,
-    /// How much GPU work the canvas has recorded: exact frames, preview frames and
+    pub cache_done: Arc<AtomicU64>,
+    /// How much GPU work the canvas has recorded: exact frames, tiles, preview frames and
     /// preview caches (for `data-gpu-work`: hovering must not add to any of them).
     pub work: GpuWork,
     /// The number of the last exact frame the GPU has finished (of [`GpuWork::exact`];
-    /// set from the queue's work-done callback, asked for in the frame after the one
-    /// that recorded it, when its commands have been submitted).
-    pub exact_done: Arc<std::sync::atomic::AtomicU64>,
-    /// The exact frame whose completion was asked for.
-    pub exact_asked: u64,
+    /// set from the queue's work-done callback asked for right after its last tile).
+    pub exact_done: Arc<AtomicU64>,
+    /// The GPU's measured speed, op-samples per ms (`None` before the first tile).
+    pub rate: Option<f64>,
 }
 
 /// Counts of the canvas's GPU passes since start.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct GpuWork {
-    /// Exact renders of the design.
+    /// Exact frames of the design completed (all their tiles drawn).
     pub exact: u64,
+    /// Tiles drawn, of exact frames and preview caches.
+    pub tiles: u64,
     /// Live-preview frames.
     pub preview: u64,
-    /// Preview caches built.
+    /// Preview caches begun.
     pub caches: u64,
+}
+
+/// Tiles submitted and not heard of yet, and those finished (op-samples, submitted
+/// and finished ms) not yet counted into the budget.
+#[derive(Debug, Default)]
+struct TileTimings {
+    in_flight: usize,
+    finished: Vec<(u64, f64, f64)>,
+}
+
+/// What the paint callback shows this frame.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Show {
+    /// The canvas texture over the whole sheet.
+    Exact,
+    /// The live preview (cache + pending op) over the whole sheet.
+    Preview,
+    /// The exact frame's drawn tiles over the preview standing in for the rest.
+    Refining,
 }
 
 /// GPU resources kept in egui-wgpu's callback resources between frames.
@@ -82,8 +138,18 @@ pub struct CanvasGpu {
     /// The exact frame, and its binding for the present draw.
     target: Option<(RenderTarget, PresentSource)>,
     prepared: Option<(u64, PreparedDesign)>,
+    /// The exact frame in the texture (or being drawn there), and its tiles.
+    refining: Option<(FrameRequest, Refinement)>,
+    /// The newest complete preview cache.
     cache: Option<(u64, PreviewCache)>,
+    /// A preview cache being drawn in tiles.
+    building: Option<(u64, PreviewCache, Refinement)>,
     caches_built: u64,
+    /// The design whose preview cache could not be made (not tried again).
+    cache_failed: Option<u64>,
+    budget: TileBudget,
+    timings: Arc<Mutex<TileTimings>>,
+    show: Show,
 }
 
 impl CanvasGpu {
@@ -95,66 +161,43 @@ impl CanvasGpu {
             presenter: Presenter::new(device, surface_format),
             target: None,
             prepared: None,
+            refining: None,
             cache: None,
+            building: None,
             caches_built: 0,
+            cache_failed: None,
+            budget: TileBudget::default(),
+            timings: Arc::default(),
+            show: Show::Exact,
         }
     }
 
-    /// (Re)creates the canvas texture at `size` physical pixels unless it has that size.
-    fn ensure_target(&mut self, device: &wgpu::Device, size: [u32; 2]) {
+    /// Starts drawing the exact frame of `req`: (re)creates the texture at its size
+    /// (cleared to the design's paper), uploads the design if it changed, sets the view.
+    /// The texture keeps what it showed until tiles replace it.
+    fn start_exact(
+        &mut self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        design: &Design,
+        req: &FrameRequest,
+    ) -> Result<(), String> {
+        self.refining = None;
         let fits = self
             .target
             .as_ref()
-            .is_some_and(|(t, _)| [t.width, t.height] == size);
+            .is_some_and(|(t, _)| [t.width, t.height] == req.size);
         if !fits {
-            let target = RenderTarget::new(device, size[0], size[1], CANVAS_FORMAT);
+            let target = RenderTarget::new(device, req.size[0], req.size[1], CANVAS_FORMAT);
             let source = self.presenter.source(device, &target.view);
+            let c = design.background;
+            let [r, g, b] = [c.r, c.g, c.b].map(|v| f64::from(v) / 255.0);
+            let mut encoder =
+                device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: None });
+            drop(target.begin_pass_clearing(&mut encoder, wgpu::Color { r, g, b, a: 1.0 }));
+            queue.submit([encoder.finish()]);
             self.target = Some((target, source));
         }
-    }
-
-    /// Builds the live-preview cache of `design` for `req`'s scale unless it exists. The
-    /// cache is rendered without antialiasing: at [`marbling_gpu::CACHE_FACTOR`] = 2 its
-    /// 2 × 2 samples per screen pixel already smooth the preview, at a quarter of the
-    /// cost of an RGSS cache (it matters on slow GPUs, where building it is the pause
-    /// before a drag can start).
-    fn ensure_cache(
-        &mut self,
-        device: &wgpu::Device,
-        queue: &wgpu::Queue,
-        design: &Design,
-        req: &FrameRequest,
-    ) -> Result<(), String> {
-        let stale = self
-            .cache
-            .as_ref()
-            .is_none_or(|(k, c)| *k != req.design_key || !c.covers(req.scale));
-        if stale {
-            self.caches_built += 1;
-            self.cache = None;
-            let cache = self
-                .preview
-                .build_cache(device, queue, design, req.scale, Antialias::None)
-                .map_err(|e| e.to_string())?;
-            self.cache = Some((req.design_key, cache));
-        }
-        Ok(())
-    }
-
-    /// Draws the exact frame of `req` (no pending op) into the canvas texture,
-    /// recording into `encoder`.
-    fn draw_exact(
-        &mut self,
-        device: &wgpu::Device,
-        queue: &wgpu::Queue,
-        encoder: &mut wgpu::CommandEncoder,
-        design: &Design,
-        req: &FrameRequest,
-    ) -> Result<(), String> {
-        self.ensure_target(device, req.size);
-        let Some((target, _)) = &self.target else {
-            return Ok(());
-        };
         if self
             .prepared
             .as_ref()
@@ -167,35 +210,139 @@ impl CanvasGpu {
                 .map_err(|e| e.to_string())?;
             self.prepared = Some((req.design_key, prepared));
         }
-        let Some((_, prepared)) = &mut self.prepared else {
-            return Ok(());
-        };
-        let offset = [req.origin[0] * req.scale, req.origin[1] * req.scale];
-        prepared.set_view(
-            queue,
-            &View {
-                scale: req.scale,
-                offset,
-                antialias: req.antialias,
-            },
-        );
-        let mut pass = target.begin_pass(encoder);
-        self.exact.draw(&mut pass, prepared);
+        if let Some((_, prepared)) = &mut self.prepared {
+            prepared.set_view(
+                queue,
+                &View {
+                    scale: req.scale,
+                    offset: [req.origin[0] * req.scale, req.origin[1] * req.scale],
+                    antialias: req.antialias,
+                },
+            );
+        }
+        let region = sheet_region(design, req);
+        self.refining = Some((req.clone(), Refinement::new(region)));
         Ok(())
     }
 
-    /// Sets up the live preview of `op` over `design`'s cache for `req`, drawn straight
-    /// into egui's target with the canvas texture's top-left at `canvas_px`.
-    fn set_preview(
+    /// True when `req`'s design needs a preview cache (for its scale) that is not
+    /// complete yet.
+    fn cache_wanted(&self, req: &FrameRequest) -> bool {
+        let key = req.design_key;
+        let complete = self
+            .cache
+            .as_ref()
+            .is_some_and(|(k, c)| *k == key && c.covers(req.scale));
+        !req.transient && !complete && self.cache_failed != Some(key)
+    }
+
+    /// Counts finished tiles into the budget; true when another tile may be submitted.
+    fn take_timings(&mut self) -> bool {
+        let Ok(mut t) = self.timings.lock() else {
+            return false;
+        };
+        for (units, submitted, done) in t.finished.drain(..) {
+            self.budget.record(units, submitted, done);
+        }
+        t.in_flight < MAX_IN_FLIGHT
+    }
+
+    /// The largest tile of a render of `ops` ops with `samples` samples per pixel that
+    /// fits this frame's budget, pixels.
+    fn tile_pixels(&self, ops: usize, samples: usize) -> u64 {
+        (self.budget.units(FRAME_BUDGET_MS) / per_pixel(ops, samples)).max(1)
+    }
+
+    /// Draws the next tile of the exact frame; true when it was the last.
+    fn exact_tile(
         &mut self,
         device: &wgpu::Device,
         queue: &wgpu::Queue,
+        ctx: &egui::Context,
+        ops: usize,
+    ) -> bool {
+        let Some(samples) = self
+            .refining
+            .as_ref()
+            .map(|(req, _)| req.antialias.samples().len())
+        else {
+            return false;
+        };
+        let pixels = self.tile_pixels(ops, samples);
+        let (Some((_, refinement)), Some((target, _)), Some((_, prepared))) =
+            (&mut self.refining, &self.target, &self.prepared)
+        else {
+            return false;
+        };
+        let Some(tile) = refinement.next_tile(pixels) else {
+            return false;
+        };
+        let mut encoder =
+            device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: None });
+        {
+            let mut pass = target.begin_pass_keeping(&mut encoder);
+            self.exact.draw_rect(&mut pass, prepared, tile);
+        }
+        let units = area(tile) * per_pixel(ops, samples);
+        submit_timed(queue, encoder, units, &self.timings, ctx);
+        refinement.is_done()
+    }
+
+    /// Draws the next tile of the preview cache of `design` (keyed `key`) for a view of
+    /// `scale`, beginning a new cache first when none is being drawn for them; true when
+    /// the cache is then complete.
+    fn cache_tile(
+        &mut self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        ctx: &egui::Context,
         design: &Design,
+        key: u64,
+        scale: f64,
+    ) -> Result<bool, String> {
+        let fresh = self
+            .building
+            .as_ref()
+            .is_some_and(|(k, c, _)| *k == key && c.covers(scale));
+        if !fresh {
+            self.building = None;
+            self.caches_built += 1;
+            // Rendered without antialiasing: at CACHE_FACTOR = 2 its 2 × 2 samples per
+            // screen pixel already smooth the preview, at a quarter of an RGSS cache's cost.
+            let cache = self
+                .preview
+                .new_cache(device, queue, design, scale, Antialias::None)
+                .map_err(|e| e.to_string())?;
+            let (w, h) = cache.cache_size();
+            self.building = Some((key, cache, Refinement::new([0, 0, w, h])));
+        }
+        let pixels = self.tile_pixels(design.ops.len(), 1);
+        let Some((_, cache, refinement)) = &mut self.building else {
+            return Ok(false);
+        };
+        if let Some(tile) = refinement.next_tile(pixels) {
+            let mut encoder =
+                device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: None });
+            self.preview.draw_cache_rect(&mut encoder, cache, tile);
+            let units = area(tile) * per_pixel(design.ops.len(), 1);
+            submit_timed(queue, encoder, units, &self.timings, ctx);
+        }
+        if refinement.is_done() {
+            self.cache = self.building.take().map(|(k, c, _)| (k, c));
+            return Ok(true);
+        }
+        Ok(false)
+    }
+
+    /// Points the complete preview cache at the view of `req` with `op` walked over it,
+    /// drawn into egui's target with the canvas texture's top-left at `canvas_px`.
+    fn aim_preview(
+        &mut self,
+        queue: &wgpu::Queue,
         req: &FrameRequest,
-        op: &Op,
+        op: Option<&Op>,
         canvas_px: [f64; 2],
-    ) -> Result<(), String> {
-        self.ensure_cache(device, queue, design, req)?;
+    ) {
         if let Some((_, cache)) = &mut self.cache {
             // Target pixel (X, Y) shows the design point the texture's pixel
             // (X, Y) − canvas_px would: the same samples as a render into the texture.
@@ -203,10 +350,65 @@ impl CanvasGpu {
                 req.origin[0] - canvas_px[0] / req.scale,
                 req.origin[1] - canvas_px[1] / req.scale,
             ];
-            cache.set_frame(queue, Some(op), origin, req.scale, req.antialias);
+            cache.set_frame(queue, op, origin, req.scale, req.antialias);
         }
-        Ok(())
     }
+}
+
+/// Submits `encoder`'s commands as one tile of `units` op-samples, and has the queue say
+/// when the GPU has finished them (timed for the budget; the canvas is redrawn then).
+fn submit_timed(
+    queue: &wgpu::Queue,
+    encoder: wgpu::CommandEncoder,
+    units: u64,
+    timings: &Arc<Mutex<TileTimings>>,
+    ctx: &egui::Context,
+) {
+    queue.submit([encoder.finish()]);
+    let submitted = crate::platform::now_ms();
+    if let Ok(mut t) = timings.lock() {
+        t.in_flight += 1;
+    }
+    let (timings, ctx) = (timings.clone(), ctx.clone());
+    queue.on_submitted_work_done(move || {
+        if let Ok(mut t) = timings.lock() {
+            t.in_flight = t.in_flight.saturating_sub(1);
+            t.finished
+                .push((units, submitted, crate::platform::now_ms()));
+        }
+        ctx.request_repaint();
+    });
+}
+
+/// Has the queue store `value` into `cell` once the GPU has finished the work submitted
+/// so far, and redraw then.
+fn when_done(queue: &wgpu::Queue, cell: &Arc<AtomicU64>, value: u64, ctx: &egui::Context) {
+    let (cell, ctx) = (cell.clone(), ctx.clone());
+    queue.on_submitted_work_done(move || {
+        cell.store(value, Ordering::SeqCst);
+        ctx.request_repaint();
+    });
+}
+
+fn area(r: PixelRect) -> u64 {
+    u64::from(r[2]) * u64::from(r[3])
+}
+
+/// The texture pixels of `req` whose centres show a point of `design`'s sheet (the
+/// others are never shown, so never drawn).
+fn sheet_region(design: &Design, req: &FrameRequest) -> PixelRect {
+    // Pixel i samples design point origin + (i + 0.5) / scale.
+    let span = |origin: f64, extent: u32, size: u32| {
+        let first = (-origin * req.scale - 0.5).ceil().max(0.0);
+        let end = ((f64::from(extent) - origin) * req.scale - 0.5)
+            .ceil()
+            .clamp(0.0, f64::from(size));
+        let first = first.min(end);
+        (first as u32, (end - first) as u32)
+    };
+    let (x, w) = span(req.origin[0], design.width, req.size[0]);
+    let (y, h) = span(req.origin[1], design.height, req.size[1]);
+    [x, y, w, h]
 }
 
 /// Where the canvas lies in egui's target, physical pixels.
@@ -251,8 +453,8 @@ impl CanvasPlacement {
     }
 }
 
-/// The per-frame paint callback: renders into the canvas texture when the request
-/// differs from what is drawn there.
+/// The per-frame paint callback: moves the exact frame and the preview cache on by a
+/// tile when they are not complete, and shows the best frame there is.
 pub struct CanvasCallback {
     /// The committed design shown (without the pending op).
     pub design: Arc<Design>,
@@ -264,6 +466,110 @@ pub struct CanvasCallback {
     pub status: Arc<Mutex<CanvasStatus>>,
     /// Woken when GPU work the UI waits for has finished.
     pub ctx: egui::Context,
+    /// Tiles this frame may draw, each within [`FRAME_BUDGET_MS`] of GPU time:
+    /// [`TILES_WHILE_ACTIVE`] while the user is acting, [`TILES_WHILE_IDLE`] otherwise.
+    pub tiles: usize,
+}
+
+/// Tiles a frame draws while the user acts (pointer moving or pressed, keys): input
+/// stays live, at ≈ [`FRAME_BUDGET_MS`] of refinement per frame.
+pub const TILES_WHILE_ACTIVE: usize = 1;
+
+/// Tiles a frame draws while the user does nothing: the exact frame is done sooner, and
+/// a frame still takes well under a quarter of a second.
+pub const TILES_WHILE_IDLE: usize = 3;
+
+impl CanvasCallback {
+    /// This frame's GPU work and what to show.
+    fn advance(
+        &self,
+        gpu: &mut CanvasGpu,
+        status: &mut CanvasStatus,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+    ) {
+        let req = &self.request;
+        let design = &*self.design;
+        let exact = req.exact_frame();
+        let dragging = req.pending.is_some();
+        // While dragging, the exact frame of the design under the drag stays as it is
+        // (the preview's antialiasing may differ from the exact frame's).
+        if !dragging && gpu.refining.as_ref().map(|(r, _)| r) != Some(&exact) {
+            status.drawn = None;
+            status.error = None;
+            if let Err(e) = gpu.start_exact(device, queue, design, &exact) {
+                // Not tried again for this frame: the error is the outcome.
+                gpu.refining = Some((exact.clone(), Refinement::new([0; 4])));
+                status.error = Some(e);
+                status.drawn = Some(exact.clone());
+                status.work.exact += 1;
+                when_done(queue, &status.exact_done, status.work.exact, &self.ctx);
+            }
+        }
+        for _ in 0..self.tiles {
+            if !gpu.take_timings() {
+                break;
+            }
+            let exact_done = gpu.refining.as_ref().is_some_and(|(_, r)| r.is_done());
+            if !dragging && !exact_done {
+                if gpu.exact_tile(device, queue, &self.ctx, design.ops.len()) {
+                    status.work.exact += 1;
+                    status.drawn = Some(exact.clone());
+                    when_done(queue, &status.exact_done, status.work.exact, &self.ctx);
+                }
+            } else if gpu.cache_wanted(req) {
+                // While dragging the live preview needs the cache before the exact frame.
+                match gpu.cache_tile(device, queue, &self.ctx, design, req.design_key, req.scale) {
+                    Ok(true) => {
+                        status.cache_ready = Some(req.design_key);
+                        when_done(queue, &status.cache_done, req.design_key, &self.ctx);
+                    }
+                    Ok(false) => {}
+                    Err(e) => {
+                        gpu.cache_failed = Some(req.design_key);
+                        status.error = Some(e);
+                    }
+                }
+            } else {
+                break;
+            }
+            status.work.tiles += 1;
+        }
+        status.rate = gpu.budget.rate();
+        status.work.caches = gpu.caches_built;
+        let refinement = gpu.refining.as_ref().map(|(_, r)| r);
+        let exact_done = refinement.is_some_and(Refinement::is_done);
+        status.progress = refinement
+            .filter(|r| !r.is_done())
+            .map(Refinement::progress);
+        if (!exact_done && !dragging) || gpu.cache_wanted(req) {
+            self.ctx.request_repaint();
+        }
+        // What to show.
+        let cached = |key: u64| gpu.cache.as_ref().is_some_and(|(k, _)| *k == key);
+        let canvas_px = self.placement.canvas_px;
+        gpu.show = if dragging {
+            if cached(req.design_key) {
+                gpu.aim_preview(queue, req, req.pending.as_ref(), canvas_px);
+                status.work.preview += 1;
+                Show::Preview
+            } else {
+                Show::Exact
+            }
+        } else if exact_done {
+            Show::Exact
+        } else if cached(req.design_key) {
+            gpu.aim_preview(queue, req, None, canvas_px);
+            Show::Refining
+        } else if let Some(s) = req.stand_in.filter(|s| cached(s.key)) {
+            gpu.aim_preview(queue, req, s.op.as_ref(), canvas_px);
+            Show::Refining
+        } else {
+            // Nothing better: the texture as it is (the previous frame, or the paper)
+            // with the new tiles over it.
+            Show::Exact
+        };
+    }
 }
 
 impl egui_wgpu::CallbackTrait for CanvasCallback {
@@ -272,7 +578,7 @@ impl egui_wgpu::CallbackTrait for CanvasCallback {
         device: &wgpu::Device,
         queue: &wgpu::Queue,
         _screen: &egui_wgpu::ScreenDescriptor,
-        encoder: &mut wgpu::CommandEncoder,
+        _encoder: &mut wgpu::CommandEncoder,
         resources: &mut egui_wgpu::CallbackResources,
     ) -> Vec<wgpu::CommandBuffer> {
         let Ok(mut status) = self.status.lock() else {
@@ -281,59 +587,7 @@ impl egui_wgpu::CallbackTrait for CanvasCallback {
         let Some(gpu) = resources.get_mut::<CanvasGpu>() else {
             return Vec::new();
         };
-        let req = &self.request;
-        if let Some(op) = &req.pending {
-            // Live preview: drawn in `paint`; the texture keeps the last exact frame.
-            status.error = gpu
-                .set_preview(
-                    device,
-                    queue,
-                    &self.design,
-                    req,
-                    op,
-                    self.placement.canvas_px,
-                )
-                .err();
-            status.work.preview += 1;
-            status.work.caches = gpu.caches_built;
-        } else if status.drawn.as_ref() == Some(req) {
-            // The exact frame was submitted with the previous frame: hear when it is done.
-            if status.exact_asked != status.work.exact {
-                status.exact_asked = status.work.exact;
-                let (done, n, ctx) = (
-                    status.exact_done.clone(),
-                    status.work.exact,
-                    self.ctx.clone(),
-                );
-                queue.on_submitted_work_done(move || {
-                    done.store(n, std::sync::atomic::Ordering::SeqCst);
-                    ctx.request_repaint();
-                });
-            }
-            // The exact frame is on screen: use the idle frame to get the preview ready.
-            if status.cache_ready != Some(req.design_key) && status.error.is_none() {
-                match gpu.ensure_cache(device, queue, &self.design, req) {
-                    Ok(()) => {
-                        status.cache_ready = Some(req.design_key);
-                        let done = status.cache_done.clone();
-                        let key = req.design_key;
-                        let ctx = self.ctx.clone();
-                        queue.on_submitted_work_done(move || {
-                            done.store(key, std::sync::atomic::Ordering::SeqCst);
-                            ctx.request_repaint();
-                        });
-                    }
-                    Err(e) => status.error = Some(e),
-                }
-                status.work.caches = gpu.caches_built;
-            }
-        } else {
-            let outcome = gpu.draw_exact(device, queue, encoder, &self.design, req);
-            status.work.exact += 1;
-            status.work.caches = gpu.caches_built;
-            status.error = outcome.err();
-            status.drawn = Some(req.clone());
-        }
+        self.advance(gpu, &mut status, device, queue);
         if let Some((_, source)) = &mut gpu.target {
             source.place(queue, &self.placement.placement());
         }
@@ -363,19 +617,35 @@ impl egui_wgpu::CallbackTrait for CanvasCallback {
         if !sheet.is_positive() {
             return;
         }
-        pass.set_scissor_rect(
-            sheet.min.x as u32,
-            sheet.min.y as u32,
-            sheet.width() as u32,
-            sheet.height() as u32,
-        );
-        let preview = gpu
-            .cache
-            .as_ref()
-            .filter(|(key, _)| self.request.pending.is_some() && *key == self.request.design_key);
-        match preview {
-            Some((_, cache)) => gpu.preview.draw(pass, cache),
-            None => gpu.presenter.draw(pass, source),
+        let scissor = |pass: &mut wgpu::RenderPass<'static>, r: Rect| {
+            pass.set_scissor_rect(
+                r.min.x as u32,
+                r.min.y as u32,
+                r.width() as u32,
+                r.height() as u32,
+            );
+        };
+        scissor(pass, sheet);
+        let cache = gpu.cache.as_ref().map(|(_, c)| c);
+        match (gpu.show, cache) {
+            (Show::Preview, Some(cache)) => gpu.preview.draw(pass, cache),
+            (Show::Refining, Some(cache)) => {
+                gpu.preview.draw(pass, cache);
+                let done = gpu.refining.as_ref().map(|(_, r)| r.done_rects());
+                let [cx, cy] = self.placement.canvas_px.map(|v| v as f32);
+                for [x, y, w, h] in done.unwrap_or_default() {
+                    let r = Rect::from_min_size(
+                        Pos2::new(cx + x as f32, cy + y as f32),
+                        egui::vec2(w as f32, h as f32),
+                    )
+                    .intersect(sheet);
+                    if r.is_positive() {
+                        scissor(pass, r);
+                        gpu.presenter.draw(pass, source);
+                    }
+                }
+            }
+            _ => gpu.presenter.draw(pass, source),
         }
     }
 }
@@ -383,6 +653,167 @@ impl egui_wgpu::CallbackTrait for CanvasCallback {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use marbling_core::compare::compare;
+    use marbling_core::synth::{Mix, random_design};
+    use marbling_core::{RenderOptions, RgbaImage, render};
+    use marbling_gpu::{GpuContext, copy_to_buffer, read_buffer};
+
+    /// The texture's pixels `[x, y, w, h]`.
+    fn read(g: &GpuContext, target: &RenderTarget, [x, y, w, h]: PixelRect) -> RgbaImage {
+        let mut encoder = g
+            .device
+            .create_command_encoder(&wgpu::CommandEncoderDescriptor { label: None });
+        let (buffer, padded) = copy_to_buffer(&g.device, &mut encoder, target);
+        g.queue.submit([encoder.finish()]);
+        let mut image = RgbaImage::filled(w, h, [0, 0, 0, 255]);
+        let row = (w * 4) as usize;
+        read_buffer(
+            g,
+            &buffer,
+            padded,
+            target.width,
+            target.height,
+            |yy, bytes| {
+                if (y..y + h).contains(&yy) {
+                    let start = ((yy - y) as usize) * row;
+                    image.pixels[start..start + row]
+                        .copy_from_slice(&bytes[(x * 4) as usize..((x + w) * 4) as usize]);
+                }
+            },
+        )
+        .expect("readback");
+        image
+    }
+
+    /// Frame after frame as the app draws them (one tile each, the GPU polled between
+    /// frames as a browser's event loop would): the exact frame arrives in several tiles
+    /// with rising progress, is reported drawn only after the last, and equals the CPU
+    /// render; the preview cache follows in tiles; an edit then shows the stand-in.
+    #[test]
+    fn the_exact_frame_is_drawn_in_tiles_then_the_cache() {
+        let g = match GpuContext::new_headless() {
+            Ok(g) => g,
+            Err(e) if std::env::var("MARBLING_SKIP_GPU").is_ok_and(|v| v == "1") => {
+                eprintln!("MARBLING_SKIP_GPU=1: skipping GPU test ({e})");
+                return;
+            }
+            Err(e) => panic!("GPU test cannot run: {e}"),
+        };
+        let design = Arc::new(random_design(9, 100, 80, 200, Mix::Mixed));
+        let mut gpu = CanvasGpu::new(&g.device, CANVAS_FORMAT);
+        let request = FrameRequest {
+            design_key: 1,
+            size: [120, 90],
+            scale: 1.0,
+            // Texture pixel i samples design x = i − 10 + 0.5: the sheet is pixels 10..110.
+            origin: [-10.0, -5.0],
+            antialias: Antialias::Rgss,
+            pending: None,
+            stand_in: None,
+            transient: false,
+        };
+        assert_eq!(sheet_region(&design, &request), [10, 5, 100, 80]);
+        let mut callback = CanvasCallback {
+            design: design.clone(),
+            request,
+            placement: CanvasPlacement {
+                canvas_px: [0.0, 0.0],
+                sheet_px: [10.0, 5.0, 110.0, 85.0],
+            },
+            status: Arc::default(),
+            ctx: egui::Context::default(),
+            tiles: TILES_WHILE_ACTIVE,
+        };
+        let frame = |gpu: &mut CanvasGpu, callback: &CanvasCallback| {
+            let mut status = callback.status.lock().expect("status");
+            callback.advance(gpu, &mut status, &g.device, &g.queue);
+            drop(status);
+            g.device
+                .poll(wgpu::PollType::wait_indefinitely())
+                .expect("poll");
+        };
+        let mut progress = Vec::new();
+        for _ in 0..1000 {
+            frame(&mut gpu, &callback);
+            let st = callback.status.lock().expect("status");
+            if st.drawn.is_some() {
+                break;
+            }
+            progress.extend(st.progress);
+        }
+        let st = callback.status.lock().expect("status");
+        assert!(st.error.is_none(), "{:?}", st.error);
+        assert!(st.drawn.is_some(), "the exact frame was never done");
+        assert!(st.work.tiles >= 2, "one tile: {:?}", st.work);
+        assert_eq!(st.work.tiles as usize, progress.len() + 1);
+        assert!(progress.windows(2).all(|w| w[0] < w[1]) && progress.iter().all(|p| *p < 1.0));
+        assert_eq!(st.work.exact, 1);
+        assert_eq!(
+            st.exact_done.load(Ordering::SeqCst),
+            1,
+            "the GPU's finish not heard"
+        );
+        assert_eq!(st.progress, None);
+        assert_eq!(
+            st.cache_ready, None,
+            "the cache is drawn after the exact frame"
+        );
+        let tiles = st.work.tiles;
+        drop(st);
+        assert_eq!(gpu.show, Show::Exact);
+        let (target, _) = gpu.target.as_ref().expect("texture");
+        let shown = read(&g, target, [10, 5, 100, 80]);
+        let cpu = render(
+            &design,
+            &RenderOptions {
+                scale: 1.0,
+                antialias: Antialias::Rgss,
+            },
+        )
+        .expect("render");
+        let diff = compare(&cpu, &shown, 24).expect("size");
+        assert!(diff.fraction() < 0.01, "tiled frame vs CPU: {diff:?}");
+
+        // Then the preview cache, in tiles of its own.
+        for _ in 0..1000 {
+            frame(&mut gpu, &callback);
+            if callback
+                .status
+                .lock()
+                .expect("status")
+                .cache_ready
+                .is_some()
+            {
+                break;
+            }
+        }
+        let st = callback.status.lock().expect("status");
+        assert_eq!(st.cache_ready, Some(1));
+        assert_eq!(st.cache_done.load(Ordering::SeqCst), 1);
+        assert_eq!(st.work.caches, 1);
+        assert!(st.work.tiles > tiles);
+        let tiles = st.work.tiles;
+        drop(st);
+        // Idle: nothing more is drawn.
+        frame(&mut gpu, &callback);
+        assert_eq!(callback.status.lock().expect("status").work.tiles, tiles);
+
+        // An edit: the design before it stands in at once, with the new op over it.
+        let op = design.ops[0];
+        let mut edited = (*design).clone();
+        edited.ops.push(op);
+        callback.design = Arc::new(edited);
+        callback.request.design_key = 2;
+        callback.request.stand_in = Some(StandIn {
+            key: 1,
+            op: Some(op),
+        });
+        // (A frame that may draw no tile, as when earlier tiles are still in flight.)
+        callback.tiles = 0;
+        frame(&mut gpu, &callback);
+        assert_eq!(gpu.show, Show::Refining);
+        assert!(callback.status.lock().expect("status").drawn.is_none());
+    }
 
     fn rect(x0: f32, y0: f32, x1: f32, y1: f32) -> Rect {
         Rect::from_min_max(Pos2::new(x0, y0), Pos2::new(x1, y1))

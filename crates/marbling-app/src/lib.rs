@@ -28,6 +28,7 @@ pub mod prefs;
 pub mod preview_quality;
 pub mod recent;
 pub mod recovery;
+mod refine;
 pub mod style;
 #[cfg(test)]
 mod test_window;

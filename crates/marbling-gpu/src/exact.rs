@@ -214,6 +214,25 @@ impl ExactRenderer {
     /// Records a full-target draw of `design` (its view set with
     /// [`PreparedDesign::set_view`]) into `pass`, whose target has this pipeline's format.
     pub fn draw(&self, pass: &mut wgpu::RenderPass<'_>, design: &PreparedDesign) {
+        self.draw_full(pass, design);
+    }
+
+    /// Records a draw of `design` into the target pixels `[x, y, width, height]` of
+    /// `pass` alone (a tile of a progressive render; the rest of the target is left as
+    /// it is when the pass keeps its pixels). The pixels drawn are exactly those of a
+    /// full draw.
+    pub fn draw_rect(
+        &self,
+        pass: &mut wgpu::RenderPass<'_>,
+        design: &PreparedDesign,
+        rect: [u32; 4],
+    ) {
+        let [x, y, w, h] = rect;
+        pass.set_scissor_rect(x, y, w, h);
+        self.draw_full(pass, design);
+    }
+
+    fn draw_full(&self, pass: &mut wgpu::RenderPass<'_>, design: &PreparedDesign) {
         let pipeline = match (design.textured, self.surface_pipeline.get()) {
             (true, Some(p)) => p,
             // `prepare` built the surface variant for every design that needs it.

@@ -12,7 +12,7 @@
 use crate::GpuError;
 use crate::bindings;
 use crate::encode::encode_op;
-use crate::exact::{ExactRenderer, View};
+use crate::exact::{ExactRenderer, PreparedDesign, View};
 use crate::params::PreviewParams;
 use crate::preview_kind::PreviewKind;
 use crate::shaders::preview_wgsl;
@@ -46,6 +46,8 @@ pub struct PreviewRenderer {
 #[derive(Debug)]
 pub struct PreviewCache {
     cache: RenderTarget,
+    /// The committed design, uploaded for drawing the cache.
+    prepared: PreparedDesign,
     uniform: wgpu::Buffer,
     bind_group: wgpu::BindGroup,
     design_size: [f64; 2],
@@ -121,8 +123,28 @@ impl PreviewRenderer {
     /// Renders `committed` exactly (with `antialias`) into a new cache covering its whole
     /// canvas at [`CACHE_FACTOR`] × `view_scale` output pixels per design pixel, or less
     /// when that would exceed the device's texture side (see [`PreviewCache::cache_scale`]).
-    /// The work is submitted; it need not have finished when this returns.
+    /// The work is submitted in one draw; it need not have finished when this returns.
     pub fn build_cache(
+        &self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        committed: &Design,
+        view_scale: f64,
+        antialias: Antialias,
+    ) -> Result<PreviewCache, GpuError> {
+        let cache = self.new_cache(device, queue, committed, view_scale, antialias)?;
+        let (w, h) = cache.cache_size();
+        let mut encoder =
+            device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: None });
+        self.draw_cache_rect(&mut encoder, &cache, [0, 0, w, h]);
+        queue.submit([encoder.finish()]);
+        Ok(cache)
+    }
+
+    /// A cache of `committed` as [`PreviewRenderer::build_cache`] makes it, with nothing
+    /// drawn yet: draw it with [`PreviewRenderer::draw_cache_rect`], in as many tiles as
+    /// wanted, before showing it.
+    pub fn new_cache(
         &self,
         device: &wgpu::Device,
         queue: &wgpu::Queue,
@@ -145,13 +167,6 @@ impl PreviewRenderer {
                 antialias,
             },
         );
-        let mut encoder =
-            device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: None });
-        {
-            let mut pass = cache.begin_pass(&mut encoder);
-            self.cache_renderer.draw(&mut pass, &prepared);
-        }
-        queue.submit([encoder.finish()]);
         let uniform = bindings::uniform_buffer::<PreviewParams>(device, "marbling preview params");
         let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("marbling preview"),
@@ -173,6 +188,7 @@ impl PreviewRenderer {
         });
         let mut out = PreviewCache {
             cache,
+            prepared,
             uniform,
             bind_group,
             design_size: [f64::from(committed.width), f64::from(committed.height)],
@@ -184,6 +200,19 @@ impl PreviewRenderer {
         };
         out.set_frame(queue, None, [0.0; 2], view_scale, antialias);
         Ok(out)
+    }
+
+    /// Records the exact render of the cache's pixels `[x, y, width, height]` into
+    /// `encoder` (a tile of the cache; the other pixels are kept).
+    pub fn draw_cache_rect(
+        &self,
+        encoder: &mut wgpu::CommandEncoder,
+        cache: &PreviewCache,
+        rect: [u32; 4],
+    ) {
+        let mut pass = cache.cache.begin_pass_keeping(encoder);
+        self.cache_renderer
+            .draw_rect(&mut pass, &cache.prepared, rect);
     }
 
     /// Records a full-target preview draw of `cache` into `pass` (target of this

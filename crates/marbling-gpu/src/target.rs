@@ -68,6 +68,33 @@ impl RenderTarget {
 
     /// Begins a render pass that overwrites the whole target.
     pub fn begin_pass<'e>(&self, encoder: &'e mut wgpu::CommandEncoder) -> wgpu::RenderPass<'e> {
+        self.begin_pass_with(encoder, wgpu::LoadOp::Clear(wgpu::Color::BLACK))
+    }
+
+    /// Begins a render pass that keeps the target's pixels (draws within a scissor
+    /// rectangle change only those: tiles of a progressive render).
+    pub fn begin_pass_keeping<'e>(
+        &self,
+        encoder: &'e mut wgpu::CommandEncoder,
+    ) -> wgpu::RenderPass<'e> {
+        self.begin_pass_with(encoder, wgpu::LoadOp::Load)
+    }
+
+    /// Begins a render pass that clears the target to `color` (linear RGBA for sRGB
+    /// formats, the stored values otherwise).
+    pub fn begin_pass_clearing<'e>(
+        &self,
+        encoder: &'e mut wgpu::CommandEncoder,
+        color: wgpu::Color,
+    ) -> wgpu::RenderPass<'e> {
+        self.begin_pass_with(encoder, wgpu::LoadOp::Clear(color))
+    }
+
+    fn begin_pass_with<'e>(
+        &self,
+        encoder: &'e mut wgpu::CommandEncoder,
+        load: wgpu::LoadOp<wgpu::Color>,
+    ) -> wgpu::RenderPass<'e> {
         encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
             label: Some("marbling pass"),
             color_attachments: &[Some(wgpu::RenderPassColorAttachment {
@@ -75,7 +102,7 @@ impl RenderTarget {
                 depth_slice: None,
                 resolve_target: None,
                 ops: wgpu::Operations {
-                    load: wgpu::LoadOp::Clear(wgpu::Color::BLACK),
+                    load,
                     store: wgpu::StoreOp::Store,
                 },
             })],

@@ -10,7 +10,8 @@ use marbling_core::{
     Antialias, Drop, Op, Point, RenderOptions, Rgb8, RgbaImage, Tine, Vec2, render,
 };
 use marbling_gpu::{
-    GpuRenderer, OUTPUT_FORMAT, PreviewRenderer, RenderTarget, copy_to_buffer, read_buffer,
+    ExactRenderer, GpuRenderer, OUTPUT_FORMAT, PreviewCache, PreviewRenderer, RenderTarget, View,
+    copy_to_buffer, read_buffer,
 };
 
 fn preview_image(
@@ -22,7 +23,7 @@ fn preview_image(
     let ctx = gpu.context();
     let (device, queue) = (&ctx.device, &ctx.queue);
     let preview = PreviewRenderer::new(device, OUTPUT_FORMAT);
-    let mut cache = preview
+    let cache = preview
         .build_cache(device, queue, committed, 1.0, antialias)
         .expect("cache");
     assert!(cache.covers(1.0));
@@ -30,6 +31,20 @@ fn preview_image(
         cache.cache_size(),
         (committed.width * 2, committed.height * 2)
     );
+    draw_preview(gpu, &preview, cache, pending, antialias, committed)
+}
+
+/// The preview of `pending` over `cache` at scale 1, read back.
+fn draw_preview(
+    gpu: &GpuRenderer,
+    preview: &PreviewRenderer,
+    mut cache: PreviewCache,
+    pending: Option<&Op>,
+    antialias: Antialias,
+    committed: &marbling_core::Design,
+) -> RgbaImage {
+    let ctx = gpu.context();
+    let (device, queue) = (&ctx.device, &ctx.queue);
     cache.set_frame(queue, pending, [0.0, 0.0], 1.0, antialias);
     let target = RenderTarget::new(device, committed.width, committed.height, OUTPUT_FORMAT);
     let mut encoder =
@@ -38,8 +53,18 @@ fn preview_image(
         let mut pass = target.begin_pass(&mut encoder);
         preview.draw(&mut pass, &cache);
     }
-    let (buffer, padded) = copy_to_buffer(device, &mut encoder, &target);
-    queue.submit([encoder.finish()]);
+    read_back(gpu, encoder, &target)
+}
+
+/// Submits `encoder` with a copy of `target` and reads the copy back.
+fn read_back(
+    gpu: &GpuRenderer,
+    mut encoder: wgpu::CommandEncoder,
+    target: &RenderTarget,
+) -> RgbaImage {
+    let ctx = gpu.context();
+    let (buffer, padded) = copy_to_buffer(&ctx.device, &mut encoder, target);
+    ctx.queue.submit([encoder.finish()]);
     let mut image = RgbaImage::filled(target.width, target.height, [0, 0, 0, 255]);
     let row = target.width as usize * 4;
     read_buffer(
@@ -54,6 +79,74 @@ fn preview_image(
     )
     .expect("readback");
     image
+}
+
+/// Progressive rendering (the app's canvas): an exact frame drawn tile by tile with
+/// `draw_rect` into a target that keeps its pixels, and a preview cache drawn in tiles,
+/// give exactly the bytes of one full draw; leaving out one tile is seen.
+#[test]
+fn tiles_drawn_over_frames_equal_one_full_draw() {
+    let Some(gpu) = common::renderer() else {
+        return;
+    };
+    let ctx = gpu.context();
+    let (device, queue) = (&ctx.device, &ctx.queue);
+    let design = random_design(5, 90, 70, 60, Mix::Mixed);
+    // Uneven tiles, in the order the app's bands hand them out.
+    let tiles = [
+        [0, 0, 7, 5],
+        [7, 0, 83, 5],
+        [0, 5, 90, 1],
+        [0, 6, 31, 64],
+        [31, 6, 59, 64],
+    ];
+    let exact = ExactRenderer::new(device, OUTPUT_FORMAT);
+    let mut prepared = exact.prepare(device, queue, &design).expect("prepare");
+    prepared.set_view(
+        queue,
+        &View {
+            scale: 1.0,
+            offset: [0.0; 2],
+            antialias: Antialias::Rgss,
+        },
+    );
+    let draw = |rects: &[[u32; 4]]| {
+        let target = RenderTarget::new(device, 90, 70, OUTPUT_FORMAT);
+        let mut encoder =
+            device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: None });
+        drop(target.begin_pass(&mut encoder));
+        for &rect in rects {
+            let mut pass = target.begin_pass_keeping(&mut encoder);
+            exact.draw_rect(&mut pass, &prepared, rect);
+        }
+        read_back(&gpu, encoder, &target)
+    };
+    let full = draw(&[[0, 0, 90, 70]]);
+    assert_eq!(
+        draw(&tiles).pixels,
+        full.pixels,
+        "tiled exact frame differs"
+    );
+    let missing = draw(&tiles[..4]);
+    assert!(compare(&full, &missing, 0).expect("size").fraction() > 0.1);
+
+    let preview = PreviewRenderer::new(device, OUTPUT_FORMAT);
+    let whole = preview
+        .build_cache(device, queue, &design, 0.5, Antialias::None)
+        .expect("cache");
+    assert_eq!(whole.cache_size(), (90, 70));
+    let tiled = preview
+        .new_cache(device, queue, &design, 0.5, Antialias::None)
+        .expect("cache");
+    for rect in tiles {
+        let mut encoder =
+            device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: None });
+        preview.draw_cache_rect(&mut encoder, &tiled, rect);
+        queue.submit([encoder.finish()]);
+    }
+    let a = draw_preview(&gpu, &preview, whole, None, Antialias::None, &design);
+    let b = draw_preview(&gpu, &preview, tiled, None, Antialias::None, &design);
+    assert_eq!(a.pixels, b.pixels, "tiled preview cache differs");
 }
 
 /// With RGSS the preview takes 4 samples a pixel (`fs_main` in shaders/preview.wgsl).
