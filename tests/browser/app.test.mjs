@@ -7,9 +7,29 @@ import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
+import { PNG } from 'pngjs';
 import { BACKENDS, MARBLING, READY_MS, ROOT, SHOTS, attr, crop, decode, differing, launch, openPage, sheet, shootSheet, waitOps } from './harness.mjs';
 
 const STONE = JSON.parse(fs.readFileSync(path.join(ROOT, 'examples/designs/stone.json'), 'utf8'));
+
+/**
+ * `n` ops on a 120×90 sheet that stay well conditioned, so f32 (GPU) and f64 (CLI)
+ * renders agree: small drops and sprays, a gentle wavy comb every 500 ops. (A random
+ * `mixed` design of 5,000 ops is chaotic: f32 and f64 disagree on most pixels.)
+ */
+function manyOps(n) {
+  let seed = 12345;
+  const rnd = () => ((seed = (seed * 1103515245 + 12345) % 2147483648) / 2147483648);
+  const hex = () => `#${[0, 1, 2].map(() => Math.floor(40 + rnd() * 200).toString(16).padStart(2, '0')).join('')}`;
+  const ops = [];
+  for (let i = 0; i < n; i++) {
+    const center = [Math.round(rnd() * 12000) / 100, Math.round(rnd() * 9000) / 100];
+    if (i % 500 === 499) ops.push({ type: 'wavy', angle: Math.round(rnd() * 3000) / 1000, amplitude: 2, wavelength: 60, phase: 0 });
+    else if (i % 5 === 0) ops.push({ type: 'drop', center, radius: 1.5, color: hex() });
+    else ops.push({ type: 'spray', center, radius: 1.2, color: hex() });
+  }
+  return { version: 1, width: 120, height: 90, background: '#f4ecd8', ops };
+}
 
 for (const backend of Object.keys(BACKENDS)) {
   describe(`playground on ${backend}`, () => {
@@ -97,7 +117,7 @@ for (const backend of Object.keys(BACKENDS)) {
     // it. Small sizes keep it cheap on SwiftShader (a 180×135-px sheet).
     test('a 5,000-op link refines in tiles, the preview stands in, ready only at the end', webgpuOnly, async () => {
       const file = path.join(os.tmpdir(), `marbling-5000-${process.pid}.json`);
-      execFileSync(MARBLING, ['random', '--ops', '5000', '--size', '120x90', '--seed', '7', '--mix', 'mixed', '-o', file]);
+      fs.writeFileSync(file, JSON.stringify(manyOps(5000)));
       const link = execFileSync(MARBLING, ['link', file, '--base', site.url]).toString().trim();
       const context = await browser.newContext({ viewport: { width: 560, height: 360 }, deviceScaleFactor: 1 });
       const page = await context.newPage();
@@ -109,7 +129,7 @@ for (const backend of Object.keys(BACKENDS)) {
         const names = ['data-ready', 'data-progress', 'data-ops', 'data-gpu-work'];
         new MutationObserver((changes) => {
           for (const c of changes) window.hookLog.push([c.attributeName, c.target.getAttribute(c.attributeName)]);
-        }).observe(document.documentElement, { subtree: true, attributes: true, attributeFilter: names });
+        }).observe(document, { subtree: true, attributes: true, attributeFilter: names });
       });
       await page.goto(site.url + link.slice(link.indexOf('#')));
       await waitOps(page, 5000);
@@ -138,10 +158,12 @@ for (const backend of Object.keys(BACKENDS)) {
       // An edit: the preview cache of the design stands in at once, sharpened by tiles.
       await page.waitForFunction(() => document.body.dataset.previewReady === '1', null, { timeout: READY_MS });
       await page.keyboard.press('1'); // drop
-      await page.mouse.click(shot.x + 60 * shot.scale, shot.y + 45 * shot.scale);
+      // Low on the sheet: its tiles come last, so the shot below is taken before them.
+      await page.mouse.click(shot.x + 60 * shot.scale, shot.y + 70 * shot.scale);
       await page.waitForFunction(() => document.body.dataset.ops === '5001' && document.body.dataset.progress !== undefined, null, { timeout: READY_MS });
       const mid = await shootSheet(page, 120, 90);
       const midProgress = await attr(page, 'data-progress');
+      fs.writeFileSync(path.join(SHOTS, `refining-5000-${backend}.png`), PNG.sync.write(mid.img));
       await waitOps(page, 5001);
       const done = await shootSheet(page, 120, 90);
       const off = differing(mid.img, done.img, 48);

@@ -653,7 +653,8 @@ impl MarblingApp {
             .ok()
             .and_then(|s| s.progress)
             .filter(|_| self.gpu && self.active.is_none() && !ready)
-            .map(|p| format!("{p:.3}"));
+            // Rounded down: 1 only when done (and then the hook is gone).
+            .map(|p| format!("{:.3}", (p * 1000.0).floor() / 1000.0));
         let (preview_ready, work) = self
             .status
             .lock()
@@ -724,9 +725,10 @@ impl MarblingApp {
             (
                 "data-gpu-work",
                 Some(format!(
-                    "exact={},tiles={},preview={},caches={},preview_samples={},panel_copies={},panel_renders={}",
+                    "exact={},tiles={},frame_units={},preview={},caches={},preview_samples={},panel_copies={},panel_renders={}",
                     work.exact,
                     work.tiles,
+                    work.frame_units,
                     work.preview,
                     work.caches,
                     preview_samples,

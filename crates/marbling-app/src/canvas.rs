@@ -261,11 +261,7 @@ impl MarblingApp {
             placement,
             status: self.status.clone(),
             ctx: ui.ctx().clone(),
-            tiles: if idle {
-                crate::canvas_gpu::TILES_WHILE_IDLE
-            } else {
-                crate::canvas_gpu::TILES_WHILE_ACTIVE
-            },
+            active: !idle,
         };
         ui.painter()
             .add(egui_wgpu::Callback::new_paint_callback(rect, callback));

@@ -1,7 +1,7 @@
 //! The canvas's GPU side. The exact render of the design is drawn into an offscreen
 //! texture whenever the design or the view changes, in tiles over successive frames
-//! (`refine.rs`: each tile sized to fit a per-frame GPU budget measured from earlier
-//! tiles), so no frame waits for a whole render and input stays live. Until the last
+//! (`refine.rs`: as much a frame as keeps frame intervals at their aim, measured from
+//! the frames before), so no frame waits for a whole render and input stays live. Until the last
 //! tile is drawn, the preview stands in under the tiles already drawn: the preview
 //! cache of this design, or of the design just before an edit with the edit's op
 //! walked on top (what the last drag frame showed). Every frame then copies the
@@ -11,7 +11,9 @@
 //! tiles. While a tool is dragged, the live preview is drawn straight into egui's pass
 //! over the sheet instead.
 
-use crate::refine::{FRAME_BUDGET_MS, MAX_IN_FLIGHT, PixelRect, Refinement, TileBudget, per_pixel};
+use crate::refine::{
+    ACTIVE_FRAME_MS, FrameBudget, IDLE_FRAME_MS, MAX_IN_FLIGHT, PixelRect, Refinement, per_pixel,
+};
 use eframe::egui_wgpu;
 use egui::{Pos2, Rect};
 use marbling_core::{Antialias, Design, Op};
@@ -19,7 +21,7 @@ use marbling_gpu::{
     ExactRenderer, Placement, PreparedDesign, PresentSource, Presenter, PreviewCache,
     PreviewRenderer, RenderTarget, View,
 };
-use std::sync::atomic::{AtomicU64, Ordering};
+use std::sync::atomic::{AtomicU64, AtomicUsize, Ordering};
 use std::sync::{Arc, Mutex};
 
 /// The canvas texture's format; the renderer sRGB-encodes into it itself, exactly as the
@@ -93,8 +95,6 @@ pub struct CanvasStatus {
     /// The number of the last exact frame the GPU has finished (of [`GpuWork::exact`];
     /// set from the queue's work-done callback asked for right after its last tile).
     pub exact_done: Arc<AtomicU64>,
-    /// The GPU's measured speed, op-samples per ms (`None` before the first tile).
-    pub rate: Option<f64>,
 }
 
 /// Counts of the canvas's GPU passes since start.
@@ -108,14 +108,8 @@ pub struct GpuWork {
     pub preview: u64,
     /// Preview caches begun.
     pub caches: u64,
-}
-
-/// Tiles submitted and not heard of yet, and those finished (op-samples, submitted
-/// and finished ms) not yet counted into the budget.
-#[derive(Debug, Default)]
-struct TileTimings {
-    in_flight: usize,
-    finished: Vec<(u64, f64, f64)>,
+    /// Op-samples the frames' tiles may take now (the adaptive budget).
+    pub frame_units: u64,
 }
 
 /// What the paint callback shows this frame.
@@ -147,8 +141,11 @@ pub struct CanvasGpu {
     caches_built: u64,
     /// The design whose preview cache could not be made (not tried again).
     cache_failed: Option<u64>,
-    budget: TileBudget,
-    timings: Arc<Mutex<TileTimings>>,
+    budget: FrameBudget,
+    /// When the last frame that drew tiles began, ms (its interval steers the budget).
+    last_tile_frame_ms: Option<f64>,
+    /// Tiles submitted and not heard of yet.
+    in_flight: Arc<AtomicUsize>,
     show: Show,
 }
 
@@ -166,8 +163,9 @@ impl CanvasGpu {
             building: None,
             caches_built: 0,
             cache_failed: None,
-            budget: TileBudget::default(),
-            timings: Arc::default(),
+            budget: FrameBudget::default(),
+            last_tile_frame_ms: None,
+            in_flight: Arc::default(),
             show: Show::Exact,
         }
     }
@@ -236,30 +234,34 @@ impl CanvasGpu {
         !req.transient && !complete && self.cache_failed != Some(key)
     }
 
-    /// Counts finished tiles into the budget; true when another tile may be submitted.
-    fn take_timings(&mut self) -> bool {
-        let Ok(mut t) = self.timings.lock() else {
-            return false;
-        };
-        for (units, submitted, done) in t.finished.drain(..) {
-            self.budget.record(units, submitted, done);
+    /// True when another tile may be submitted.
+    fn may_submit(&self) -> bool {
+        self.in_flight.load(Ordering::SeqCst) < MAX_IN_FLIGHT
+    }
+
+    /// Starts a frame at `now_ms`: a frame that follows one that drew tiles steers the
+    /// budget towards `target_ms`.
+    fn begin_frame(&mut self, now_ms: f64, target_ms: f64) {
+        if let Some(last) = self.last_tile_frame_ms.take() {
+            self.budget.record_frame(now_ms - last, target_ms);
         }
-        t.in_flight < MAX_IN_FLIGHT
     }
 
     /// The largest tile of a render of `ops` ops with `samples` samples per pixel that
-    /// fits this frame's budget, pixels.
-    fn tile_pixels(&self, ops: usize, samples: usize) -> u64 {
-        (self.budget.units(FRAME_BUDGET_MS) / per_pixel(ops, samples)).max(1)
+    /// fits a `tiles`-th of this frame's budget, pixels.
+    fn tile_pixels(&self, ops: usize, samples: usize, tiles: usize) -> u64 {
+        (self.budget.units() / tiles.max(1) as u64 / per_pixel(ops, samples)).max(1)
     }
 
-    /// Draws the next tile of the exact frame; true when it was the last.
+    /// Draws the next tile of the exact frame, a `tiles`-th of the frame's budget; true
+    /// when it was the last.
     fn exact_tile(
         &mut self,
         device: &wgpu::Device,
         queue: &wgpu::Queue,
         ctx: &egui::Context,
         ops: usize,
+        tiles: usize,
     ) -> bool {
         let Some(samples) = self
             .refining
@@ -268,7 +270,7 @@ impl CanvasGpu {
         else {
             return false;
         };
-        let pixels = self.tile_pixels(ops, samples);
+        let pixels = self.tile_pixels(ops, samples, tiles);
         let (Some((_, refinement)), Some((target, _)), Some((_, prepared))) =
             (&mut self.refining, &self.target, &self.prepared)
         else {
@@ -283,8 +285,7 @@ impl CanvasGpu {
             let mut pass = target.begin_pass_keeping(&mut encoder);
             self.exact.draw_rect(&mut pass, prepared, tile);
         }
-        let units = area(tile) * per_pixel(ops, samples);
-        submit_timed(queue, encoder, units, &self.timings, ctx);
+        submit_counted(queue, encoder, &self.in_flight, ctx);
         refinement.is_done()
     }
 
@@ -299,6 +300,7 @@ impl CanvasGpu {
         design: &Design,
         key: u64,
         scale: f64,
+        tiles: usize,
     ) -> Result<bool, String> {
         let fresh = self
             .building
@@ -316,7 +318,7 @@ impl CanvasGpu {
             let (w, h) = cache.cache_size();
             self.building = Some((key, cache, Refinement::new([0, 0, w, h])));
         }
-        let pixels = self.tile_pixels(design.ops.len(), 1);
+        let pixels = self.tile_pixels(design.ops.len(), 1, tiles);
         let Some((_, cache, refinement)) = &mut self.building else {
             return Ok(false);
         };
@@ -324,8 +326,7 @@ impl CanvasGpu {
             let mut encoder =
                 device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: None });
             self.preview.draw_cache_rect(&mut encoder, cache, tile);
-            let units = area(tile) * per_pixel(design.ops.len(), 1);
-            submit_timed(queue, encoder, units, &self.timings, ctx);
+            submit_counted(queue, encoder, &self.in_flight, ctx);
         }
         if refinement.is_done() {
             self.cache = self.building.take().map(|(k, c, _)| (k, c));
@@ -355,27 +356,19 @@ impl CanvasGpu {
     }
 }
 
-/// Submits `encoder`'s commands as one tile of `units` op-samples, and has the queue say
-/// when the GPU has finished them (timed for the budget; the canvas is redrawn then).
-fn submit_timed(
+/// Submits `encoder`'s commands as one tile, counted in flight until the queue says the
+/// GPU has finished them (the canvas is redrawn then).
+fn submit_counted(
     queue: &wgpu::Queue,
     encoder: wgpu::CommandEncoder,
-    units: u64,
-    timings: &Arc<Mutex<TileTimings>>,
+    in_flight: &Arc<AtomicUsize>,
     ctx: &egui::Context,
 ) {
     queue.submit([encoder.finish()]);
-    let submitted = crate::platform::now_ms();
-    if let Ok(mut t) = timings.lock() {
-        t.in_flight += 1;
-    }
-    let (timings, ctx) = (timings.clone(), ctx.clone());
+    in_flight.fetch_add(1, Ordering::SeqCst);
+    let (in_flight, ctx) = (in_flight.clone(), ctx.clone());
     queue.on_submitted_work_done(move || {
-        if let Ok(mut t) = timings.lock() {
-            t.in_flight = t.in_flight.saturating_sub(1);
-            t.finished
-                .push((units, submitted, crate::platform::now_ms()));
-        }
+        in_flight.fetch_sub(1, Ordering::SeqCst);
         ctx.request_repaint();
     });
 }
@@ -388,10 +381,6 @@ fn when_done(queue: &wgpu::Queue, cell: &Arc<AtomicU64>, value: u64, ctx: &egui:
         cell.store(value, Ordering::SeqCst);
         ctx.request_repaint();
     });
-}
-
-fn area(r: PixelRect) -> u64 {
-    u64::from(r[2]) * u64::from(r[3])
 }
 
 /// The texture pixels of `req` whose centres show a point of `design`'s sheet (the
@@ -466,17 +455,13 @@ pub struct CanvasCallback {
     pub status: Arc<Mutex<CanvasStatus>>,
     /// Woken when GPU work the UI waits for has finished.
     pub ctx: egui::Context,
-    /// Tiles this frame may draw, each within [`FRAME_BUDGET_MS`] of GPU time:
-    /// [`TILES_WHILE_ACTIVE`] while the user is acting, [`TILES_WHILE_IDLE`] otherwise.
-    pub tiles: usize,
+    /// True while the user acts (pointer moving or pressed, keys): frames then aim at
+    /// [`ACTIVE_FRAME_MS`] with one tile each, otherwise at [`IDLE_FRAME_MS`] with
+    /// [`TILES_WHILE_IDLE`] (one submission each, so none holds the GPU for long).
+    pub active: bool,
 }
 
-/// Tiles a frame draws while the user acts (pointer moving or pressed, keys): input
-/// stays live, at ≈ [`FRAME_BUDGET_MS`] of refinement per frame.
-pub const TILES_WHILE_ACTIVE: usize = 1;
-
-/// Tiles a frame draws while the user does nothing: the exact frame is done sooner, and
-/// a frame still takes well under a quarter of a second.
+/// Tiles (submissions) a frame's budget is split into while the user does nothing.
 pub const TILES_WHILE_IDLE: usize = 3;
 
 impl CanvasCallback {
@@ -506,20 +491,35 @@ impl CanvasCallback {
                 when_done(queue, &status.exact_done, status.work.exact, &self.ctx);
             }
         }
-        for _ in 0..self.tiles {
-            if !gpu.take_timings() {
+        let (tiles, target_ms) = if self.active {
+            (1, ACTIVE_FRAME_MS)
+        } else {
+            (TILES_WHILE_IDLE, IDLE_FRAME_MS)
+        };
+        gpu.begin_frame(crate::platform::now_ms(), target_ms);
+        let mut drew = false;
+        for _ in 0..tiles {
+            if !gpu.may_submit() {
                 break;
             }
             let exact_done = gpu.refining.as_ref().is_some_and(|(_, r)| r.is_done());
             if !dragging && !exact_done {
-                if gpu.exact_tile(device, queue, &self.ctx, design.ops.len()) {
+                if gpu.exact_tile(device, queue, &self.ctx, design.ops.len(), tiles) {
                     status.work.exact += 1;
                     status.drawn = Some(exact.clone());
                     when_done(queue, &status.exact_done, status.work.exact, &self.ctx);
                 }
             } else if gpu.cache_wanted(req) {
                 // While dragging the live preview needs the cache before the exact frame.
-                match gpu.cache_tile(device, queue, &self.ctx, design, req.design_key, req.scale) {
+                match gpu.cache_tile(
+                    device,
+                    queue,
+                    &self.ctx,
+                    design,
+                    req.design_key,
+                    req.scale,
+                    tiles,
+                ) {
                     Ok(true) => {
                         status.cache_ready = Some(req.design_key);
                         when_done(queue, &status.cache_done, req.design_key, &self.ctx);
@@ -534,8 +534,12 @@ impl CanvasCallback {
                 break;
             }
             status.work.tiles += 1;
+            drew = true;
         }
-        status.rate = gpu.budget.rate();
+        if drew {
+            gpu.last_tile_frame_ms = Some(crate::platform::now_ms());
+        }
+        status.work.frame_units = gpu.budget.units();
         status.work.caches = gpu.caches_built;
         let refinement = gpu.refining.as_ref().map(|(_, r)| r);
         let exact_done = refinement.is_some_and(Refinement::is_done);
@@ -722,7 +726,7 @@ mod tests {
             },
             status: Arc::default(),
             ctx: egui::Context::default(),
-            tiles: TILES_WHILE_ACTIVE,
+            active: true,
         };
         let frame = |gpu: &mut CanvasGpu, callback: &CanvasCallback| {
             let mut status = callback.status.lock().expect("status");
@@ -809,7 +813,7 @@ mod tests {
             op: Some(op),
         });
         // (A frame that may draw no tile, as when earlier tiles are still in flight.)
-        callback.tiles = 0;
+        gpu.in_flight.store(MAX_IN_FLIGHT, Ordering::SeqCst);
         frame(&mut gpu, &callback);
         assert_eq!(gpu.show, Show::Refining);
         assert!(callback.status.lock().expect("status").drawn.is_none());

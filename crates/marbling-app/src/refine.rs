@@ -1,93 +1,76 @@
 //! Progressive rendering: a render too big for one frame is drawn in tiles over
-//! successive frames, each tile sized so its estimated GPU time fits a per-frame budget.
-//! The estimate adapts to the measured completion time of earlier tiles.
+//! successive frames. How much a frame draws adapts to how long frames take: the tiles'
+//! GPU work delays the next frame (a browser holds back its animation frames, a native
+//! swap chain its images, while the GPU is behind), so the interval between two frames
+//! is the completion time of the tiles drawn in them plus everything else in a frame,
+//! the thing a user feels.
 //!
 //! Work is counted in *op-samples*: pixels × samples per pixel × ops walked (plus a
 //! small per-sample constant), the unit the exact shader's cost grows with.
+//!
+//! Why frame intervals and not each tile's own completion callback: browsers report
+//! finished GPU work late and in batches (a tile of 5 ms can be heard of a frame later,
+//! with its neighbours), so per-tile times mix the GPU's speed with the report's delay,
+//! and a budget steered by them shrank to 1,457 tiles for a 5,000-op frame that took
+//! 42 s (docs/BENCHMARKS.md). Tiles are squares where a row is too much: on SwiftShader
+//! one-row tiles shade 4× slower per pixel (half of each 2 × 2 quad is wasted, and one
+//! row runs on one thread).
 
-/// GPU time one refinement tile may take, ms (one submission each; a frame draws one
-/// to three, see `canvas_gpu::TILES_WHILE_IDLE`). It keeps the page's frames coming
-/// (≈ 20 per second on a software GPU, whose frames cost ~20 ms besides, while the user
-/// acts) and any one submission far from a driver's watchdog (about 2 s).
-pub const FRAME_BUDGET_MS: f64 = 30.0;
+/// Frame interval aimed at while the user acts (pointer moving or pressed, keys), ms:
+/// input stays live at ≥ 30 frames per second wherever the page alone allows it.
+pub const ACTIVE_FRAME_MS: f64 = 33.0;
 
-/// What the first tile assumes before anything was measured: op-samples per ms
-/// (a software GPU does about 4e4; a laptop GPU 1e6 and more).
-const PRIOR_RATE: f64 = 1.0e5;
+/// Frame interval aimed at while the user does nothing, ms: most of a frame goes to the
+/// exact frame, and the page still answers within a tenth of a second.
+pub const IDLE_FRAME_MS: f64 = 100.0;
 
-/// A tile never grows past this many times the largest tile measured so far, so a
-/// wrong estimate costs at most one slow frame.
-const MAX_GROWTH: f64 = 4.0;
+/// What the first frame draws before anything was measured, op-samples (about 30 ms
+/// on SwiftShader, the slowest GPU the app meets; a real GPU gets there in a few
+/// frames of growth).
+const PRIOR_UNITS: f64 = 1.0e6;
+
+/// The smallest frame's work, op-samples: refinement never stops.
+const MIN_UNITS: f64 = 1.0e4;
 
 /// Samples' fixed cost, in ops walked (loading params, averaging, writing the pixel).
 const SAMPLE_OVERHEAD_OPS: u64 = 4;
 
-/// Tiles submitted but not yet heard of beyond which no new tile is submitted (the
-/// queue never holds much more than a frame's worth of refinement).
-pub const MAX_IN_FLIGHT: usize = 4;
+/// Tiles submitted but not yet heard of beyond which no new tile is submitted (a guard
+/// for a queue that does not hold frames back).
+pub const MAX_IN_FLIGHT: usize = 12;
 
 /// Op-samples of one pixel of a render of `ops` ops with `samples` samples per pixel.
 pub fn per_pixel(ops: usize, samples: usize) -> u64 {
     (ops as u64 + SAMPLE_OVERHEAD_OPS) * samples.max(1) as u64
 }
 
-/// The adaptive estimate of the GPU's speed, in op-samples per ms.
+/// How much refinement a frame draws, op-samples, steered by frame intervals.
 #[derive(Clone, Debug)]
-pub struct TileBudget {
-    /// Smoothed measured rate (`None` until a tile was measured).
-    rate: Option<f64>,
-    /// The largest tile measured so far, op-samples.
-    largest: u64,
-    /// When the last measured tile finished, ms (a tile queued behind it starts then).
-    last_done_ms: f64,
+pub struct FrameBudget {
+    units: f64,
 }
 
-impl Default for TileBudget {
+impl Default for FrameBudget {
     fn default() -> Self {
-        Self {
-            rate: None,
-            largest: 0,
-            last_done_ms: f64::NEG_INFINITY,
-        }
+        Self { units: PRIOR_UNITS }
     }
 }
 
-impl TileBudget {
-    /// The op-samples the next tile may have to take about `budget_ms` of GPU time.
-    pub fn units(&self, budget_ms: f64) -> u64 {
-        let rate = self.rate.unwrap_or(PRIOR_RATE);
-        let mut units = rate * budget_ms;
-        let cap = if self.largest == 0 {
-            PRIOR_RATE * budget_ms
-        } else {
-            MAX_GROWTH * self.largest as f64
-        };
-        units = units.min(cap);
-        units.max(1.0) as u64
+impl FrameBudget {
+    /// Op-samples the next frame's tiles may take together.
+    pub fn units(&self) -> u64 {
+        self.units as u64
     }
 
-    /// Records a tile of `units` op-samples submitted at `submitted_ms` and finished at
-    /// `done_ms` (the queue is serial: its work started when both it was submitted and
-    /// the tile before it was done).
-    pub fn record(&mut self, units: u64, submitted_ms: f64, done_ms: f64) {
-        let start = submitted_ms.max(self.last_done_ms);
-        self.last_done_ms = self.last_done_ms.max(done_ms);
-        // A clock with 1 ms steps: a tile finished within one step took at most 1 ms.
-        let ms = (done_ms - start).max(1.0);
-        let rate = units as f64 / ms;
-        // Smoothed towards the new value, faster when it is slower (a heavy region
-        // must shrink the next tile at once).
-        self.rate = Some(match self.rate {
-            None => rate,
-            Some(old) if rate < old => 0.3 * old + 0.7 * rate,
-            Some(old) => 0.7 * old + 0.3 * rate,
-        });
-        self.largest = self.largest.max(units);
-    }
-
-    /// The measured rate, op-samples per ms (`None` before the first measurement).
-    pub fn rate(&self) -> Option<f64> {
-        self.rate
+    /// A frame that drew tiles was followed by the next one `interval_ms` later; the
+    /// aim is `target_ms`. The work grows or shrinks by the square root of the ratio
+    /// (at most ×2 or ÷2 a frame: the measurement lags a frame or two behind the work).
+    pub fn record_frame(&mut self, interval_ms: f64, target_ms: f64) {
+        if !(interval_ms > 0.0) {
+            return;
+        }
+        let factor = (target_ms / interval_ms).sqrt().clamp(0.5, 2.0);
+        self.units = (self.units * factor).max(MIN_UNITS);
     }
 }
 
@@ -246,25 +229,45 @@ mod tests {
         assert_eq!(r.done_rects(), vec![[0, 0, 100, 50]]);
     }
 
+    /// A model of a page: a frame takes `fixed` ms besides the tiles, and the GPU does
+    /// `rate` op-samples per ms; the budget must settle where frames take the target.
+    fn settle(fixed: f64, rate: f64, target: f64) -> (f64, f64) {
+        let mut b = FrameBudget::default();
+        let mut interval = 0.0;
+        for _ in 0..200 {
+            interval = fixed + b.units() as f64 / rate;
+            b.record_frame(interval, target);
+        }
+        (interval, b.units() as f64)
+    }
+
     #[test]
-    fn the_budget_follows_measurements_and_grows_by_steps() {
-        let mut b = TileBudget::default();
-        let first = b.units(FRAME_BUDGET_MS);
-        assert_eq!(first, (PRIOR_RATE * FRAME_BUDGET_MS) as u64);
-        // A fast GPU: the tile took 1 ms; the next may be at most 4× as large.
-        b.record(first, 0.0, 1.0);
-        assert_eq!(b.units(FRAME_BUDGET_MS), 4 * first);
-        // A slow one: 300 ms for the same work; the next tile is cut to about a tenth.
-        let mut b = TileBudget::default();
-        b.record(first, 0.0, 300.0);
-        let next = b.units(FRAME_BUDGET_MS);
-        assert!(next * 9 < first && next * 11 > first, "{next} vs {first}");
-        // A tile queued behind another starts when that one is done.
-        let mut b = TileBudget::default();
-        b.record(1000, 0.0, 100.0);
-        b.record(1000, 0.0, 110.0);
-        // (counted from its submission it would seem to take 110 ms: rate ≈ 9)
-        assert!(b.rate().unwrap() > 30.0, "{:?}", b.rate());
+    fn the_budget_settles_where_frames_take_the_target() {
+        // SwiftShader-like: 25 ms a frame besides, 5e4 op-samples per ms.
+        let (interval, units) = settle(25.0, 5e4, IDLE_FRAME_MS);
+        assert!((interval - IDLE_FRAME_MS).abs() < 1.0, "{interval}");
+        assert!((units - 75.0 * 5e4).abs() < 5e4, "{units}");
+        // A fast GPU at 60 frames per second: the tiles take the rest of 33 ms.
+        let (interval, _) = settle(16.7, 5e7, ACTIVE_FRAME_MS);
+        assert!((interval - ACTIVE_FRAME_MS).abs() < 0.5, "{interval}");
+        // A page slower than the target on its own: the work shrinks to its floor but
+        // never stops.
+        let (_, units) = settle(150.0, 5e4, ACTIVE_FRAME_MS);
+        assert_eq!(units, MIN_UNITS);
+    }
+
+    #[test]
+    fn the_budget_moves_by_bounded_steps() {
+        let mut b = FrameBudget::default();
+        b.record_frame(1.0, 100.0);
+        assert_eq!(b.units(), 2 * PRIOR_UNITS as u64);
+        let mut b = FrameBudget::default();
+        b.record_frame(10_000.0, 100.0);
+        assert_eq!(b.units(), PRIOR_UNITS as u64 / 2);
+        // No interval measured: nothing changes.
+        b.record_frame(0.0, 100.0);
+        b.record_frame(f64::NAN, 100.0);
+        assert_eq!(b.units(), PRIOR_UNITS as u64 / 2);
     }
 
     #[test]
