@@ -23,7 +23,7 @@ try {
   for (const ops of counts) {
     const file = path.join(os.tmpdir(), `marbling-bench-${ops}.json`);
     execFileSync(MARBLING, ['random', '--ops', String(ops), '--size', '800x600', '--seed', '1', '--mix', 'mixed', '-o', file]);
-    const link = execFileSync(MARBLING, ['link', file, '--base', site.url]).toString().trim();
+    const link = execFileSync(MARBLING, ['link', file, '--base', site.url], { maxBuffer: 64 << 20 }).toString().trim();
     const context = await browser.newContext({ viewport: { width: 1280, height: 900 }, deviceScaleFactor: 1 });
     const page = await context.newPage();
     await page.addInitScript(() => {
@@ -60,9 +60,11 @@ try {
     const work = await attr(page, 'data-gpu-work');
     const progress = await attr(page, 'data-progress');
     const tiles = /tiles=(\d+)/.exec(work ?? '')?.[1];
+    const units = /frame_units=(\d+)/.exec(work ?? '')?.[1];
     const fmt = (v) => (v === null ? `> ${limitS} s` : `${v.toFixed(1)} s`);
     console.log(`${backend}, ${ops} ops, 800×600 in 1280×900: loaded ${loadedS.toFixed(1)} s, exact frame ${fmt(readyS)}`
-      + `${readyS === null ? ` (progress ${progress})` : ''}, preview cache ${fmt(previewS)}, ${tiles} tiles, `
+      + `${readyS === null ? ` (progress ${progress})` : ''}, preview cache ${fmt(previewS)}, ${tiles} tiles `
+      + `(last frame budget ${units} op-samples), `
       + `${count} animation frames, worst gap ${worst.toFixed(0)} ms`);
     await context.close();
     fs.rmSync(file, { force: true });
