@@ -289,19 +289,19 @@ impl CanvasGpu {
         refinement.is_done()
     }
 
-    /// Draws the next tile of the preview cache of `design` (keyed `key`) for a view of
-    /// `scale`, beginning a new cache first when none is being drawn for them; true when
-    /// the cache is then complete.
+    /// Draws the next tile of the preview cache of `design` for the key and view scale
+    /// of `req`, beginning a new cache first when none is being drawn for them; true
+    /// when the cache is then complete.
     fn cache_tile(
         &mut self,
         device: &wgpu::Device,
         queue: &wgpu::Queue,
         ctx: &egui::Context,
         design: &Design,
-        key: u64,
-        scale: f64,
+        req: &FrameRequest,
         tiles: usize,
     ) -> Result<bool, String> {
+        let (key, scale) = (req.design_key, req.scale);
         let fresh = self
             .building
             .as_ref()
@@ -511,15 +511,7 @@ impl CanvasCallback {
                 }
             } else if gpu.cache_wanted(req) {
                 // While dragging the live preview needs the cache before the exact frame.
-                match gpu.cache_tile(
-                    device,
-                    queue,
-                    &self.ctx,
-                    design,
-                    req.design_key,
-                    req.scale,
-                    tiles,
-                ) {
+                match gpu.cache_tile(device, queue, &self.ctx, design, req, tiles) {
                     Ok(true) => {
                         status.cache_ready = Some(req.design_key);
                         when_done(queue, &status.cache_done, req.design_key, &self.ctx);
