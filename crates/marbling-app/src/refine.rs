@@ -24,16 +24,19 @@ pub const ACTIVE_FRAME_MS: f64 = 33.0;
 /// exact frame, and the page still answers within a tenth of a second.
 pub const IDLE_FRAME_MS: f64 = 100.0;
 
-/// What the first frame draws before anything was measured, op-samples (about 30 ms
-/// on SwiftShader, the slowest GPU the app meets; a real GPU gets there in a few
-/// frames of growth).
-const PRIOR_UNITS: f64 = 1.0e6;
+/// What the first frame draws before anything was measured, op-samples (about the
+/// idle aim's worth on SwiftShader, the slowest GPU the app meets; a real GPU gets to
+/// its own budget in a few frames of growth).
+const PRIOR_UNITS: f64 = 4.0e6;
 
 /// The largest change of a frame's work from one frame to the next (a factor).
 pub const MAX_STEP: f64 = 1.4;
 
-/// The smallest frame's work, op-samples: refinement never stops.
-const MIN_UNITS: f64 = 1.0e4;
+/// The smallest frame's work, op-samples (≈ 50 ms on SwiftShader, nothing on a real
+/// GPU): where a page's frames are slower than the aim on their own (WebGL2 on
+/// SwiftShader with a noise background, measured), shrinking the tiles cannot bring
+/// the interval down, and a smaller floor made refinement crawl (9 pixels a frame).
+const MIN_UNITS: f64 = 2.0e6;
 
 /// Samples' fixed cost, in ops walked (loading params, averaging, writing the pixel).
 const SAMPLE_OVERHEAD_OPS: u64 = 4;
