@@ -687,13 +687,8 @@ mod tests {
     /// render; the preview cache follows in tiles; an edit then shows the stand-in.
     #[test]
     fn the_exact_frame_is_drawn_in_tiles_then_the_cache() {
-        let g = match GpuContext::new_headless() {
-            Ok(g) => g,
-            Err(e) if std::env::var("MARBLING_SKIP_GPU").is_ok_and(|v| v == "1") => {
-                eprintln!("MARBLING_SKIP_GPU=1: skipping GPU test ({e})");
-                return;
-            }
-            Err(e) => panic!("GPU test cannot run: {e}"),
+        let Some(g) = crate::test_window::gpu_or_skip() else {
+            return;
         };
         let design = Arc::new(random_design(9, 100, 80, 200, Mix::Mixed));
         let mut gpu = CanvasGpu::new(&g.device, CANVAS_FORMAT);

@@ -10,6 +10,20 @@ use marbling_gpu::{GpuContext, RenderTarget, copy_to_buffer, read_buffer};
 pub const FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8Unorm;
 pub const CLEAR: [f32; 4] = [0.2, 0.2, 0.2, 1.0];
 
+/// A headless device (lavapipe or any adapter), or `None` with a note when
+/// `MARBLING_SKIP_GPU=1` and there is none; without that variable a missing adapter fails
+/// the test.
+pub fn gpu_or_skip() -> Option<GpuContext> {
+    match GpuContext::new_headless() {
+        Ok(g) => Some(g),
+        Err(e) if std::env::var("MARBLING_SKIP_GPU").is_ok_and(|v| v == "1") => {
+            eprintln!("MARBLING_SKIP_GPU=1: skipping GPU test ({e})");
+            None
+        }
+        Err(e) => panic!("GPU test cannot run: {e}"),
+    }
+}
+
 /// The window: context, device and egui's renderer (without dithering, so that pixels
 /// compare exactly).
 pub struct Window {
@@ -24,14 +38,7 @@ impl Window {
     /// A `size`-pixel window, or None (with a note) when `MARBLING_SKIP_GPU=1` and there
     /// is no adapter.
     pub fn new(size: [u32; 2]) -> Option<Self> {
-        let gpu = match GpuContext::new_headless() {
-            Ok(g) => g,
-            Err(e) if std::env::var("MARBLING_SKIP_GPU").is_ok_and(|v| v == "1") => {
-                eprintln!("MARBLING_SKIP_GPU=1: skipping GPU test ({e})");
-                return None;
-            }
-            Err(e) => panic!("GPU test cannot run: {e}"),
-        };
+        let gpu = gpu_or_skip()?;
         let options = egui_wgpu::RendererOptions {
             dithering: false,
             ..Default::default()
