@@ -3,7 +3,7 @@
 //! says what happens then (history step, refresh, autosave, recent designs, link).
 
 use crate::app::MarblingApp;
-use crate::history::{Paper, Surface};
+use crate::history::Surface;
 use crate::mode::Mode;
 use crate::platform;
 use marbling_core::{Design, Op, Rgb8};
@@ -50,8 +50,7 @@ impl MarblingApp {
     /// Carries out `action`: the only place where the design and its history change.
     pub(crate) fn apply(&mut self, action: Action) {
         let pristine = std::mem::take(&mut self.pristine);
-        let size = |d: &Design| (d.width, d.height);
-        let shown_size = size(&self.shown);
+        let shown_size = self.shown.size();
         // An edit of the same document: the design before it, with the op it added,
         // stands in while the new design's exact frame is drawn.
         let stand_in = match &action {
@@ -130,7 +129,7 @@ impl MarblingApp {
                 }
             },
             Action::SetPaperColor(c) => {
-                let mut paper = Paper::of(&self.history.shown());
+                let mut paper = self.history.shown_paper();
                 paper.background = c;
                 paper.background_noise = None;
                 self.history.push_paper(paper, c.to_string(), true);
@@ -140,7 +139,7 @@ impl MarblingApp {
                 surface: (background, overlays),
                 what,
             } => {
-                let mut paper = Paper::of(&self.history.shown());
+                let mut paper = self.history.shown_paper();
                 paper.background_noise = background;
                 paper.overlays = overlays;
                 self.history.push_paper(paper, what.clone(), false);
@@ -175,7 +174,7 @@ impl MarblingApp {
 
     /// A sheet of another size (New, Open, or undoing either) is fitted to the canvas.
     fn fit_if_resized(&mut self, before: (u32, u32)) {
-        if (self.shown.width, self.shown.height) != before {
+        if self.shown.size() != before {
             self.view = None;
         }
     }
@@ -224,12 +223,12 @@ mod tests {
             (0..30).map(|i| spray(f64::from(i))).collect(),
         ));
         let stroke = a.history.design().clone();
-        assert_eq!(a.shown.ops.len(), 30);
+        assert_eq!(a.shown.op_count(), 30);
         a.apply(Action::NewSheet);
         assert!(a.history.design().ops.is_empty());
         assert_eq!(a.recent.entries.len(), 1);
         assert!(a.autosave_pending && a.recent_pending);
-        a.view = Some(crate::view::ViewState::fit(&a.shown, [800.0, 600.0]));
+        a.view = Some(crate::view::ViewState::fit(&a.shown.design, [800.0, 600.0]));
         a.apply(Action::Undo);
         assert_eq!(a.history.design(), &stroke);
         assert!(
@@ -247,14 +246,14 @@ mod tests {
         let mut a = app();
         a.apply(Action::Commit(vec![spray(1.0)]));
         a.apply(Action::SetPaperColor(Rgb8::new(10, 20, 30)));
-        assert_eq!(a.shown.background, Rgb8::new(10, 20, 30));
+        assert_eq!(a.shown.design.background, Rgb8::new(10, 20, 30));
         assert_eq!(
             a.history.steps().last().expect("a value").label,
             "paper #0a141e"
         );
         a.apply(Action::Undo);
-        assert_eq!(a.shown.background, Rgb8::new(250, 250, 250));
-        assert_eq!(a.shown.ops.len(), 1);
+        assert_eq!(a.shown.design.background, Rgb8::new(250, 250, 250));
+        assert_eq!(a.shown.op_count(), 1);
     }
 
     #[test]
@@ -285,9 +284,9 @@ mod tests {
         }
         let full = a.history.design().clone();
         a.apply(Action::View(Some(1)));
-        assert_eq!(a.shown.ops.len(), 1);
+        assert_eq!(a.shown.op_count(), 1);
         a.apply(Action::Commit(vec![spray(30.0), spray(31.0)]));
-        assert_eq!(a.shown.ops.len(), 3);
+        assert_eq!(a.shown.op_count(), 3);
         assert_eq!(a.history.branches().len(), 1);
         a.apply(Action::Restore(0));
         assert_eq!(a.history.design(), &full);

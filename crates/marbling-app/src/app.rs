@@ -49,7 +49,7 @@ pub struct MarblingApp {
     /// When the user last acted on the page (egui's clock, seconds).
     pub(crate) last_input_s: f64,
     /// The design on the canvas (the history, a viewed prefix or a playback frame).
-    pub(crate) shown: Arc<Design>,
+    pub(crate) shown: crate::shown::Shown,
     pub(crate) tool: ToolKind,
     pub(crate) settings: ToolSettings,
     pub(crate) palette: usize,
@@ -201,7 +201,7 @@ impl MarblingApp {
             key: 0,
             stand_in: None,
             last_input_s: 0.0,
-            shown: Arc::new(design),
+            shown: crate::shown::Shown::all(Arc::new(design)),
             tool: ToolKind::Drop,
             settings: ToolSettings::default(),
             palette: 0,
@@ -319,15 +319,15 @@ impl MarblingApp {
                 .noise
                 .design([d.width, d.height], self.noise_zoom_factor())
             {
-                Ok(noise) => self.shown = Arc::new(noise),
+                Ok(noise) => self.shown = crate::shown::Shown::all(Arc::new(noise)),
                 Err(e) => self.error(format!("noise: {e}")),
             }
             return;
         }
-        self.shown = Arc::new(match &self.playback {
-            Some(p) => p.frame(self.history.design()),
+        self.shown = match &self.playback {
+            Some(p) => p.frame(self.history.design_shared()),
             None => self.history.shown(),
-        });
+        };
     }
 
     /// Switches between marbling and the noise playground.
@@ -396,6 +396,9 @@ impl MarblingApp {
     /// Loads the design of a `#d=` fragment when the fragment changed; a broken link
     /// keeps the current design and says what is wrong.
     pub(crate) fn check_fragment(&mut self) {
+        if !platform::fragment_changed() {
+            return;
+        }
         let fragment = platform::fragment();
         if fragment == self.last_fragment {
             return;
@@ -431,7 +434,7 @@ impl MarblingApp {
             return;
         };
         let design: &Design = match self.mode {
-            Mode::Noise => &self.shown,
+            Mode::Noise => &self.shown.design,
             Mode::Marbling => self.history.design(),
         };
         let scale = self.export_size.scale(design);
@@ -716,7 +719,7 @@ impl MarblingApp {
             ("data-ready", ready.then(|| "1".to_owned())),
             ("data-progress", progress),
             ("data-backend", Some(self.backend.clone())),
-            ("data-ops", Some(self.shown.ops.len().to_string())),
+            ("data-ops", Some(self.shown.op_count().to_string())),
             ("data-error", error),
             ("data-view", view),
             ("data-frame-ms", frame_ms),

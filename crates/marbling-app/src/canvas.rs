@@ -10,7 +10,6 @@ use crate::view::ViewState;
 use eframe::egui_wgpu;
 use egui::{Color32, PointerButton, Pos2, Rect, Sense, Vec2};
 use marbling_core::{Op, Point};
-use std::sync::Arc;
 
 impl MarblingApp {
     /// Draws the canvas and handles its input.
@@ -22,7 +21,7 @@ impl MarblingApp {
         let ppp = f64::from(ui.ctx().pixels_per_point());
         let view = *self
             .view
-            .get_or_insert_with(|| ViewState::fit(&self.shown, size).snapped(ppp));
+            .get_or_insert_with(|| ViewState::fit(&self.shown.design, size).snapped(ppp));
         let pointer = response.hover_pos();
         let local = |p: Pos2| [f64::from(p.x - rect.min.x), f64::from(p.y - rect.min.y)];
 
@@ -34,10 +33,8 @@ impl MarblingApp {
 
         // The design's rectangle on screen, clipped to the canvas.
         let tl = view.to_screen(Point::ZERO);
-        let br = view.to_screen(Point::new(
-            f64::from(self.shown.width),
-            f64::from(self.shown.height),
-        ));
+        let (w, h) = self.shown.size();
+        let br = view.to_screen(Point::new(f64::from(w), f64::from(h)));
         let sheet = Rect::from_min_max(
             rect.min + Vec2::new(tl[0] as f32, tl[1] as f32),
             rect.min + Vec2::new(br[0] as f32, br[1] as f32),
@@ -206,17 +203,15 @@ impl MarblingApp {
             .stand_in
             .filter(|(key, _)| *key == self.key)
             .map(|(_, s)| s);
-        let (design, design_key, single) = match pending.as_slice() {
+        let (shown, design_key, single) = match pending.as_slice() {
             [] => (self.shown.clone(), self.key, None),
             [op] if !matches!(op, Op::Spray(_)) => (self.shown.clone(), self.key, Some(*op)),
             many => {
                 // Several ops at once (spray, a rake of separate tines): exact render of
-                // the design with them appended, keyed by what they are, so the
-                // preview follows every change of the stroke.
-                let mut d = (*self.shown).clone();
-                d.ops.extend_from_slice(many);
+                // the design with them after it, keyed by what they are, so the preview
+                // follows every change of the stroke (the GPU writes only new ops).
                 (
-                    Arc::new(d),
+                    self.shown.then(many),
                     (self.key.wrapping_mul(1_000_003) ^ fingerprint(many)) | (1 << 63),
                     None,
                 )
@@ -256,7 +251,7 @@ impl MarblingApp {
         }
         let idle = ui.input(|i| i.time) - self.last_input_s > IDLE_AFTER_S;
         let callback = CanvasCallback {
-            design,
+            shown,
             request,
             placement,
             status: self.status.clone(),

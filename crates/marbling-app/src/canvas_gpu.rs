@@ -14,6 +14,7 @@
 use crate::refine::{
     ACTIVE_FRAME_MS, FrameBudget, IDLE_FRAME_MS, MAX_IN_FLIGHT, PixelRect, Refinement, per_pixel,
 };
+use crate::shown::Shown;
 use eframe::egui_wgpu;
 use egui::{Pos2, Rect};
 use marbling_core::{Antialias, Design, Op};
@@ -131,6 +132,8 @@ pub struct CanvasGpu {
     presenter: Presenter,
     /// The exact frame, and its binding for the present draw.
     target: Option<(RenderTarget, PresentSource)>,
+    /// The uploaded design, and the key of what it shows (brought to another design
+    /// or view of one by writing only the ops that differ).
     prepared: Option<(u64, PreparedDesign)>,
     /// The exact frame in the texture (or being drawn there), and its tiles.
     refining: Option<(FrameRequest, Refinement)>,
@@ -171,15 +174,16 @@ impl CanvasGpu {
     }
 
     /// Starts drawing the exact frame of `req`: (re)creates the texture at its size
-    /// (cleared to the design's paper), uploads the design if it changed, sets the view.
-    /// The texture keeps what it showed until tiles replace it.
+    /// (cleared to the design's paper), brings the uploaded design up to `shown` if it
+    /// changed, sets the view. The texture keeps what it showed until tiles replace it.
     fn start_exact(
         &mut self,
         device: &wgpu::Device,
         queue: &wgpu::Queue,
-        design: &Design,
+        shown: &Shown,
         req: &FrameRequest,
     ) -> Result<(), String> {
+        let design = &*shown.design;
         self.refining = None;
         let fits = self
             .target
@@ -196,17 +200,22 @@ impl CanvasGpu {
             queue.submit([encoder.finish()]);
             self.target = Some((target, source));
         }
-        if self
-            .prepared
-            .as_ref()
-            .is_none_or(|(k, _)| *k != req.design_key)
-        {
-            self.prepared = None;
-            let prepared = self
-                .exact
-                .prepare(device, queue, design)
-                .map_err(|e| e.to_string())?;
-            self.prepared = Some((req.design_key, prepared));
+        match &mut self.prepared {
+            Some((key, _)) if *key == req.design_key => {}
+            Some((key, prepared)) => {
+                if let Err(e) = self.exact.update(device, queue, prepared, shown.prefix()) {
+                    self.prepared = None;
+                    return Err(e.to_string());
+                }
+                *key = req.design_key;
+            }
+            None => {
+                let prepared = self
+                    .exact
+                    .prepare_prefix(device, queue, shown.prefix())
+                    .map_err(|e| e.to_string())?;
+                self.prepared = Some((req.design_key, prepared));
+            }
         }
         if let Some((_, prepared)) = &mut self.prepared {
             prepared.set_view(
@@ -289,7 +298,7 @@ impl CanvasGpu {
         refinement.is_done()
     }
 
-    /// Draws the next tile of the preview cache of `design` for the key and view scale
+    /// Draws the next tile of the preview cache of `shown` for the key and view scale
     /// of `req`, beginning a new cache first when none is being drawn for them; true
     /// when the cache is then complete.
     fn cache_tile(
@@ -297,7 +306,7 @@ impl CanvasGpu {
         device: &wgpu::Device,
         queue: &wgpu::Queue,
         ctx: &egui::Context,
-        design: &Design,
+        shown: &Shown,
         req: &FrameRequest,
         tiles: usize,
     ) -> Result<bool, String> {
@@ -313,12 +322,12 @@ impl CanvasGpu {
             // screen pixel already smooth the preview, at a quarter of an RGSS cache's cost.
             let cache = self
                 .preview
-                .new_cache(device, queue, design, scale, Antialias::None)
+                .new_cache(device, queue, shown.prefix(), scale, Antialias::None)
                 .map_err(|e| e.to_string())?;
             let (w, h) = cache.cache_size();
             self.building = Some((key, cache, Refinement::new([0, 0, w, h])));
         }
-        let pixels = self.tile_pixels(design.ops.len(), 1, tiles);
+        let pixels = self.tile_pixels(shown.op_count(), 1, tiles);
         let Some((_, cache, refinement)) = &mut self.building else {
             return Ok(false);
         };
@@ -446,7 +455,7 @@ impl CanvasPlacement {
 /// tile when they are not complete, and shows the best frame there is.
 pub struct CanvasCallback {
     /// The committed design shown (without the pending op).
-    pub design: Arc<Design>,
+    pub shown: Shown,
     /// What to draw.
     pub request: FrameRequest,
     /// Where it goes in egui's target.
@@ -474,7 +483,7 @@ impl CanvasCallback {
         queue: &wgpu::Queue,
     ) {
         let req = &self.request;
-        let design = &*self.design;
+        let shown = &self.shown;
         let exact = req.exact_frame();
         let dragging = req.pending.is_some();
         // While dragging, the exact frame of the design under the drag stays as it is
@@ -482,7 +491,7 @@ impl CanvasCallback {
         if !dragging && gpu.refining.as_ref().map(|(r, _)| r) != Some(&exact) {
             status.drawn = None;
             status.error = None;
-            if let Err(e) = gpu.start_exact(device, queue, design, &exact) {
+            if let Err(e) = gpu.start_exact(device, queue, shown, &exact) {
                 // Not tried again for this frame: the error is the outcome.
                 gpu.refining = Some((exact.clone(), Refinement::new([0; 4])));
                 status.error = Some(e);
@@ -504,14 +513,14 @@ impl CanvasCallback {
             }
             let exact_done = gpu.refining.as_ref().is_some_and(|(_, r)| r.is_done());
             if !dragging && !exact_done {
-                if gpu.exact_tile(device, queue, &self.ctx, design.ops.len(), tiles) {
+                if gpu.exact_tile(device, queue, &self.ctx, shown.op_count(), tiles) {
                     status.work.exact += 1;
                     status.drawn = Some(exact.clone());
                     when_done(queue, &status.exact_done, status.work.exact, &self.ctx);
                 }
             } else if gpu.cache_wanted(req) {
                 // While dragging the live preview needs the cache before the exact frame.
-                match gpu.cache_tile(device, queue, &self.ctx, design, req, tiles) {
+                match gpu.cache_tile(device, queue, &self.ctx, shown, req, tiles) {
                     Ok(true) => {
                         status.cache_ready = Some(req.design_key);
                         when_done(queue, &status.cache_done, req.design_key, &self.ctx);
@@ -705,7 +714,7 @@ mod tests {
         };
         assert_eq!(sheet_region(&design, &request), [10, 5, 100, 80]);
         let mut callback = CanvasCallback {
-            design: design.clone(),
+            shown: Shown::all(design.clone()),
             request,
             placement: CanvasPlacement {
                 canvas_px: [0.0, 0.0],
@@ -793,7 +802,7 @@ mod tests {
         let op = design.ops[0];
         let mut edited = (*design).clone();
         edited.ops.push(op);
-        callback.design = Arc::new(edited);
+        callback.shown = Shown::all(Arc::new(edited));
         callback.request.design_key = 2;
         callback.request.stand_in = Some(StandIn {
             key: 1,
@@ -803,6 +812,12 @@ mod tests {
         gpu.in_flight.store(MAX_IN_FLIGHT, Ordering::SeqCst);
         frame(&mut gpu, &callback);
         assert_eq!(gpu.show, Show::Refining);
+        let (_, prepared) = gpu.prepared.as_ref().expect("uploaded");
+        assert_eq!(
+            (prepared.op_count(), prepared.ops_written()),
+            (201, 201),
+            "the edit wrote its one op, not the design again"
+        );
         assert!(callback.status.lock().expect("status").drawn.is_none());
     }
 

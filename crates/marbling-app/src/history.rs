@@ -9,7 +9,9 @@
 //! kept folded; earlier states are folded on demand.
 
 use crate::labels::gesture_label;
+use crate::shown::Shown;
 use marbling_core::{Design, MAX_OPS, NoiseBackground, Op, Overlay, Rgb8};
+use std::sync::Arc;
 
 /// The paper under the ink: background colour, noise background and grain overlays.
 #[derive(Clone, Debug, PartialEq)]
@@ -100,8 +102,8 @@ pub struct History {
     steps: Vec<Step>,
     /// Undone steps, the most recently undone last.
     undone: Vec<Step>,
-    /// The design after all steps.
-    design: Design,
+    /// The design after all steps (shared with the canvas: see [`History::shown`]).
+    design: Arc<Design>,
     /// When set, only the first `n` steps are shown (a click on a history entry).
     viewing: Option<usize>,
     branches: Vec<Branch>,
@@ -127,7 +129,7 @@ impl History {
             start,
             steps,
             undone: Vec::new(),
-            design,
+            design: Arc::new(design),
             viewing: None,
             branches: Vec::new(),
         }
@@ -138,12 +140,36 @@ impl History {
         &self.design
     }
 
-    /// The design as shown: the current one, or the state after the viewed step.
-    pub fn shown(&self) -> Design {
-        match self.viewing {
-            Some(k) => self.state_at(k),
-            None => self.design.clone(),
+    /// The whole current design, shared (no copy).
+    pub fn design_shared(&self) -> &Arc<Design> {
+        &self.design
+    }
+
+    /// The design as shown: the current one, or the state after the viewed step, as
+    /// a view of the current design where it can be (no document or paper step after
+    /// the viewed one: the first ops of the current design), otherwise folded anew.
+    pub fn shown(&self) -> Shown {
+        let Some(k) = self.viewing else {
+            return Shown::all(self.design.clone());
+        };
+        let later = &self.steps[k.min(self.steps.len())..];
+        let mut dropped = 0;
+        for s in later {
+            match &s.change {
+                Change::Ops(ops) => dropped += ops.len(),
+                _ => return Shown::all(Arc::new(self.fold(k))),
+            }
         }
+        Shown {
+            design: self.design.clone(),
+            ops: self.design.ops.len() - dropped,
+            tail: Vec::new(),
+        }
+    }
+
+    /// The paper as shown (see [`History::shown`]).
+    pub fn shown_paper(&self) -> Paper {
+        Paper::of(&self.shown().design)
     }
 
     /// The steps, oldest first.
@@ -174,7 +200,7 @@ impl History {
     /// The design after the first `k` steps.
     pub fn state_at(&self, k: usize) -> Design {
         if k >= self.steps.len() {
-            return self.design.clone();
+            return (*self.design).clone();
         }
         self.fold(k)
     }
@@ -206,10 +232,7 @@ impl History {
         if ops.is_empty() {
             return Ok(());
         }
-        let base_ops = match self.viewing {
-            Some(k) => self.state_at(k).ops.len(),
-            None => self.design.ops.len(),
-        };
+        let base_ops = self.shown().op_count();
         if base_ops + ops.len() > MAX_OPS {
             return Err(EditError::TooManyOps {
                 have: base_ops,
@@ -237,7 +260,7 @@ impl History {
     /// (a colour picker dragged through many colours is one step).
     pub fn push_paper(&mut self, paper: Paper, label: impl Into<String>, merge: bool) {
         let label = label.into();
-        let before = Paper::of(&self.shown());
+        let before = self.shown_paper();
         if before == paper {
             return;
         }
@@ -250,7 +273,7 @@ impl History {
             }) = self.steps.last_mut()
             && last_label.starts_with(MERGING)
         {
-            paper.apply_to(&mut self.design);
+            paper.apply_to(Arc::make_mut(&mut self.design));
             **after = paper;
             *last_label = format!("{MERGING}{label}");
             return;
@@ -289,7 +312,7 @@ impl History {
         }
         self.viewing = None;
         self.undone.clear();
-        apply(&mut self.design, &step.change);
+        apply(Arc::make_mut(&mut self.design), &step.change);
         self.steps.push(step);
     }
 
@@ -298,7 +321,7 @@ impl History {
         let fork = self.fold(at);
         let mut abandoned = self.steps.split_off(at.min(self.steps.len()));
         abandoned.extend(self.undone.drain(..).rev());
-        self.design = fork.clone();
+        self.design = Arc::new(fork.clone());
         if let Some(last) = abandoned.last() {
             let n = abandoned.len();
             let label = if n == 1 {
@@ -336,10 +359,10 @@ impl History {
         match &step.change {
             Change::Ops(ops) => {
                 let n = self.design.ops.len() - ops.len();
-                self.design.truncate_ops(n);
+                Arc::make_mut(&mut self.design).truncate_ops(n);
             }
-            Change::Paper { before, .. } => before.apply_to(&mut self.design),
-            Change::Document(_) => self.design = self.fold(self.steps.len()),
+            Change::Paper { before, .. } => before.apply_to(Arc::make_mut(&mut self.design)),
+            Change::Document(_) => self.design = Arc::new(self.fold(self.steps.len())),
         }
         self.undone.push(step);
         true
@@ -350,7 +373,7 @@ impl History {
         self.viewing = None;
         match self.undone.pop() {
             Some(step) => {
-                apply(&mut self.design, &step.change);
+                apply(Arc::make_mut(&mut self.design), &step.change);
                 self.steps.push(step);
                 true
             }
@@ -503,7 +526,7 @@ mod tests {
         }
         let full = h.design().clone();
         h.view(Some(2));
-        assert_eq!(h.shown().ops.len(), 4);
+        assert_eq!(h.shown().op_count(), 4);
         assert_eq!(h.design(), &full);
         h.view(Some(99));
         assert_eq!(h.shown_steps(), 5);

@@ -29,6 +29,7 @@ pub mod preview_quality;
 pub mod recent;
 pub mod recovery;
 mod refine;
+pub mod shown;
 pub mod style;
 #[cfg(test)]
 mod test_window;

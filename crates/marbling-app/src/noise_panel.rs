@@ -148,7 +148,7 @@ impl MarblingApp {
                 let link = format!(
                     "{}#{}",
                     crate::platform::base_url(),
-                    marbling_core::share_fragment(&self.shown)
+                    marbling_core::share_fragment(&self.shown.design)
                 );
                 ui.ctx().copy_text(link.clone());
                 self.info(format!("noise link copied ({} characters)", link.len()));

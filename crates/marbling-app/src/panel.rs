@@ -582,12 +582,10 @@ impl MarblingApp {
 
     pub(crate) fn status_bar(&mut self, ui: &mut egui::Ui) {
         ui.horizontal(|ui| {
-            let d = &self.shown;
+            let (w, h) = self.shown.size();
             ui.label(format!(
-                "{}×{} · {} ops · {}",
-                d.width,
-                d.height,
-                d.ops.len(),
+                "{w}×{h} · {} ops · {}",
+                self.shown.op_count(),
                 self.backend
             ));
             if self.preview_quality.reduced() {

@@ -27,6 +27,26 @@ mod imp {
         (!f.is_empty()).then_some(f)
     }
 
+    /// True on the first call and whenever the fragment changed since the last call
+    /// (a `hashchange` event). The fragment of a big design is megabytes: reading it
+    /// every frame would cost milliseconds a frame.
+    pub fn fragment_changed() -> bool {
+        use std::sync::atomic::{AtomicBool, Ordering};
+        use wasm_bindgen::closure::Closure;
+        static CHANGED: AtomicBool = AtomicBool::new(true);
+        static WATCHING: std::sync::Once = std::sync::Once::new();
+        WATCHING.call_once(|| {
+            let Some(w) = window() else { return };
+            let changed = Closure::<dyn Fn(web_sys::Event)>::new(|_: web_sys::Event| {
+                CHANGED.store(true, Ordering::SeqCst);
+            });
+            let _ =
+                w.add_event_listener_with_callback("hashchange", changed.as_ref().unchecked_ref());
+            changed.forget();
+        });
+        CHANGED.swap(false, std::sync::atomic::Ordering::SeqCst)
+    }
+
     /// The address that share links start with (the page without its fragment).
     pub fn base_url() -> String {
         window()
@@ -206,6 +226,14 @@ mod imp {
         std::env::args()
             .nth(1)
             .and_then(|a| a.split_once('#').map(|(_, f)| f.to_owned()))
+    }
+
+    /// True on the first call only: the command line does not change.
+    pub fn fragment_changed() -> bool {
+        static READ: std::sync::Once = std::sync::Once::new();
+        let mut first = false;
+        READ.call_once(|| first = true);
+        first
     }
 
     /// The address that share links start with: the web app served by `make run`.

@@ -1,7 +1,9 @@
 //! "Play": the making of a design animated op by op, each op eased in from zero
 //! strength (combs, swirls) or zero radius (drops, sprays).
 
+use crate::shown::Shown;
 use marbling_core::{Design, Op};
+use std::sync::Arc;
 
 /// Where a playback is: op `index` is `t` (0..=1) of the way in.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -51,14 +53,19 @@ impl Playback {
         self.index < op_count
     }
 
-    /// The design as it looks at this moment of the playback.
-    pub fn frame(&self, full: &Design) -> Design {
-        let mut d = full.clone();
-        d.ops.truncate(self.index.min(full.ops.len()));
-        if let Some(op) = full.ops.get(self.index) {
-            d.ops.push(scaled(op, ease(self.t)));
+    /// The design as it looks at this moment of the playback: the ops before the one
+    /// being eased in, then that op at its eased strength (a view of `full`, no copy).
+    pub fn frame(&self, full: &Arc<Design>) -> Shown {
+        Shown {
+            design: full.clone(),
+            ops: self.index.min(full.ops.len()),
+            tail: full
+                .ops
+                .get(self.index)
+                .map(|op| scaled(op, ease(self.t)))
+                .into_iter()
+                .collect(),
         }
-        d
     }
 }
 
@@ -69,19 +76,19 @@ mod tests {
 
     #[test]
     fn playback_eases_each_op_in_and_ends_on_the_design() {
-        let full = random_design(1, 100, 100, 20, Mix::Mixed);
+        let full = Arc::new(random_design(1, 100, 100, 20, Mix::Mixed));
         let mut p = Playback::start();
-        let first = p.frame(&full);
+        let first = p.frame(&full).to_design();
         assert_eq!(first.ops.len(), 1);
         assert!(first.validate().is_ok());
         let mut frames = 0;
         while p.advance(0.1, 3.0, full.ops.len()) {
-            let f = p.frame(&full);
+            let f = p.frame(&full).to_design();
             assert!(f.validate().is_ok());
             assert_eq!(&f.ops[..p.index], &full.ops[..p.index]);
             frames += 1;
         }
-        assert_eq!(p.frame(&full), full);
+        assert_eq!(p.frame(&full), Shown::all(full.clone()));
         assert!(frames >= 60, "{frames}");
         assert_eq!(scaled(&full.ops[3], 1.0), full.ops[3]);
         assert_eq!((ease(0.0), ease(0.5), ease(1.0)), (0.0, 0.5, 1.0));

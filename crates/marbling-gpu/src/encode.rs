@@ -108,8 +108,57 @@ pub fn encode_op(op: &Op) -> EncodedOp {
     }
 }
 
-/// A design's ops laid out as an RGBA f32 texture: op k occupies texels
-/// (2·(k mod ops_per_row), k div ops_per_row) and the one to its right.
+/// Where ops sit in an op texture: op k at texels (2·(k mod ops_per_row),
+/// k div ops_per_row) and the one to its right.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct OpLayout {
+    /// Texture width, texels (even, ≥ 2).
+    pub width: u32,
+    /// Texture height, texels (≥ 1).
+    pub height: u32,
+    /// Ops per texture row (`width / 2`).
+    pub ops_per_row: u32,
+}
+
+impl OpLayout {
+    /// The smallest layout with room for `capacity` ops in a texture at most `max_side`
+    /// texels wide and high (`max_side` ≥ 2; WebGL2 guarantees 2048). `None` when they
+    /// do not fit.
+    pub fn for_capacity(capacity: usize, max_side: u32) -> Option<Self> {
+        let max_side = max_side.max(2);
+        let max_per_row = max_side / TEXELS_PER_OP;
+        let n = u32::try_from(capacity).ok()?;
+        let ops_per_row = n.clamp(1, max_per_row);
+        let height = n.div_ceil(ops_per_row).max(1);
+        (height <= max_side).then_some(Self {
+            width: ops_per_row * TEXELS_PER_OP,
+            height,
+            ops_per_row,
+        })
+    }
+
+    /// Ops the texture has room for.
+    pub fn capacity(&self) -> usize {
+        self.ops_per_row as usize * self.height as usize
+    }
+
+    /// Ops `range` (within the capacity) as runs along texture rows: (row, index of
+    /// the run's first op within its row, ops in the run).
+    pub fn runs(&self, range: std::ops::Range<usize>) -> impl Iterator<Item = (u32, u32, u32)> {
+        let per_row = self.ops_per_row as usize;
+        let mut at = range.start;
+        std::iter::from_fn(move || {
+            (at < range.end).then(|| {
+                let (row, col) = (at / per_row, at % per_row);
+                let count = (per_row - col).min(range.end - at);
+                at += count;
+                (row as u32, col as u32, count as u32)
+            })
+        })
+    }
+}
+
+/// A design's ops laid out as an RGBA f32 texture (see [`OpLayout`]).
 #[derive(Clone, Debug, PartialEq)]
 pub struct OpTexels {
     /// Texture width, texels (even, ≥ 2).
@@ -127,16 +176,8 @@ pub struct OpTexels {
 /// Lays out `ops` (oldest first) in a texture at most `max_side` texels wide and high
 /// (`max_side` ≥ 2; WebGL2 guarantees 2048). `None` when they do not fit.
 pub fn layout_ops(ops: &[Op], max_side: u32) -> Option<OpTexels> {
-    let max_side = max_side.max(2);
-    let max_per_row = max_side / TEXELS_PER_OP;
-    let n = u32::try_from(ops.len()).ok()?;
-    let ops_per_row = n.clamp(1, max_per_row);
-    let height = n.div_ceil(ops_per_row).max(1);
-    if height > max_side {
-        return None;
-    }
-    let width = ops_per_row * TEXELS_PER_OP;
-    let mut texels = vec![[0.0f32; 4]; width as usize * height as usize];
+    let layout = OpLayout::for_capacity(ops.len(), max_side)?;
+    let mut texels = vec![[0.0f32; 4]; layout.width as usize * layout.height as usize];
     for (k, op) in ops.iter().enumerate() {
         let [a, b] = encode_op(op);
         let i = k * TEXELS_PER_OP as usize;
@@ -144,10 +185,10 @@ pub fn layout_ops(ops: &[Op], max_side: u32) -> Option<OpTexels> {
         texels[i + 1] = b;
     }
     Some(OpTexels {
-        width,
-        height,
-        ops_per_row,
-        op_count: n,
+        width: layout.width,
+        height: layout.height,
+        ops_per_row: layout.ops_per_row,
+        op_count: ops.len() as u32,
         texels,
     })
 }
@@ -177,6 +218,22 @@ mod tests {
         assert!(layout_ops(&d.ops, 4).is_none());
         let empty = layout_ops(&[], 2048).expect("fits");
         assert_eq!((empty.width, empty.height, empty.op_count), (2, 1, 0));
+    }
+
+    #[test]
+    fn runs_cut_a_range_at_row_ends() {
+        let l = OpLayout::for_capacity(10, 8).expect("fits");
+        assert_eq!(
+            (l.width, l.height, l.ops_per_row, l.capacity()),
+            (8, 3, 4, 12)
+        );
+        assert_eq!(
+            l.runs(3..10).collect::<Vec<_>>(),
+            [(0, 3, 1), (1, 0, 4), (2, 0, 2)]
+        );
+        assert_eq!(l.runs(5..6).collect::<Vec<_>>(), [(1, 1, 1)]);
+        assert_eq!(l.runs(4..4).count(), 0);
+        assert!(OpLayout::for_capacity(9, 4).is_none());
     }
 
     #[test]

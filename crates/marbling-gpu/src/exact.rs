@@ -2,13 +2,14 @@
 //! Pipelines are created once per device and target format; designs are uploaded into
 //! their own op texture and uniform buffer, so an app can keep several.
 
+use crate::DesignPrefix;
 use crate::GpuError;
 use crate::bindings;
-use crate::encode::layout_ops;
+use crate::encode::{OpLayout, TEXELS_PER_OP, encode_op};
 use crate::params::RenderParams;
 use crate::shaders::{RENDER_PLAIN_WGSL, render_wgsl};
 use crate::surface::SurfaceParams;
-use marbling_core::{Antialias, Design};
+use marbling_core::{Antialias, Design, Op};
 use std::sync::OnceLock;
 
 /// The exact render pipeline for one target format, in two variants: plain (every v1
@@ -23,20 +24,36 @@ pub struct ExactRenderer {
     format: wgpu::TextureFormat,
 }
 
-/// A design uploaded to the GPU: its op texture, uniform buffer and bind group.
+/// A design uploaded to the GPU: its op texture, uniform buffers and bind group. It can
+/// be brought up to another design or prefix with [`ExactRenderer::update`], which
+/// writes only the ops that differ (the texture keeps room to grow).
 #[derive(Debug)]
 pub struct PreparedDesign {
-    _ops: wgpu::Texture,
-    _surface: wgpu::Buffer,
+    ops_texture: wgpu::Texture,
+    layout: OpLayout,
+    /// The ops in the texture, oldest first (all of them are walked).
+    uploaded: Vec<Op>,
+    /// Ops written into the texture since it was prepared.
+    written: u64,
+    surface: wgpu::Buffer,
+    surface_params: SurfaceParams,
     /// Whether the design needs the surface variant of the pipeline.
     textured: bool,
     uniform: wgpu::Buffer,
     bind_group: wgpu::BindGroup,
     params: RenderParams,
+    view: View,
     background: marbling_core::Rgb8,
     width: u32,
     height: u32,
-    op_count: usize,
+}
+
+/// Op-texture room for `n` ops with space to grow: appending ops seldom needs a new
+/// texture. Falls back to exactly `n` where the rounded-up room would not fit.
+fn room_for(n: usize, max_side: u32) -> Option<OpLayout> {
+    const MIN_ROOM: usize = 64;
+    OpLayout::for_capacity(n.max(MIN_ROOM).next_power_of_two(), max_side)
+        .or_else(|| OpLayout::for_capacity(n, max_side))
 }
 
 /// Which part of the output a draw covers, and how it is sampled.
@@ -119,67 +136,130 @@ impl ExactRenderer {
         self.format
     }
 
-    /// Uploads `design`'s ops (op texture rows at most the device's texture side).
+    /// Uploads `design` (op texture rows at most the device's texture side).
     pub fn prepare(
         &self,
         device: &wgpu::Device,
         queue: &wgpu::Queue,
         design: &Design,
     ) -> Result<PreparedDesign, GpuError> {
+        self.prepare_prefix(device, queue, design.into())
+    }
+
+    /// Uploads what `shown` walks.
+    pub fn prepare_prefix(
+        &self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        shown: DesignPrefix<'_>,
+    ) -> Result<PreparedDesign, GpuError> {
         let max_side = device.limits().max_texture_dimension_2d;
-        let texels = layout_ops(&design.ops, max_side).ok_or(GpuError::TooManyOps {
-            ops: design.ops.len(),
-            max_side,
-        })?;
-        let size = wgpu::Extent3d {
-            width: texels.width,
-            height: texels.height,
-            depth_or_array_layers: 1,
-        };
-        let ops = device.create_texture(&wgpu::TextureDescriptor {
-            label: Some("marbling ops"),
-            size,
-            mip_level_count: 1,
-            sample_count: 1,
-            dimension: wgpu::TextureDimension::D2,
-            format: wgpu::TextureFormat::Rgba32Float,
-            usage: wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST,
-            view_formats: &[],
-        });
-        queue.write_texture(
-            wgpu::TexelCopyTextureInfo {
-                texture: &ops,
-                mip_level: 0,
-                origin: wgpu::Origin3d::ZERO,
-                aspect: wgpu::TextureAspect::All,
-            },
-            bytemuck::cast_slice(&texels.texels),
-            wgpu::TexelCopyBufferLayout {
-                offset: 0,
-                bytes_per_row: Some(texels.width * 16),
-                rows_per_image: Some(texels.height),
-            },
-            size,
-        );
-        let params = RenderParams::new(
-            design.background,
-            texels.op_count,
-            texels.ops_per_row,
-            Antialias::None,
-            1.0,
-            [0.0; 2],
-            !self.format.is_srgb(),
-        );
+        let n = shown.op_count();
+        let layout = room_for(n, max_side).ok_or(GpuError::TooManyOps { ops: n, max_side })?;
+        let ops_texture = op_texture(device, layout);
         let uniform = bindings::uniform_buffer::<RenderParams>(device, "marbling render params");
-        queue.write_buffer(&uniform, 0, bytemuck::bytes_of(&params));
+        let surface = bindings::uniform_buffer::<SurfaceParams>(device, "marbling surface params");
+        let bind_group = self.bind_group(device, &uniform, &ops_texture, &surface);
+        let design = shown.design;
+        let view = View {
+            scale: 1.0,
+            offset: [0.0; 2],
+            antialias: Antialias::None,
+        };
+        let mut prepared = PreparedDesign {
+            ops_texture,
+            layout,
+            uploaded: Vec::new(),
+            written: 0,
+            surface_params: SurfaceParams::new(design),
+            surface,
+            textured: false,
+            uniform,
+            bind_group,
+            params: RenderParams::new(
+                design.background,
+                0,
+                layout.ops_per_row,
+                view.antialias,
+                view.scale,
+                view.offset,
+                !self.format.is_srgb(),
+            ),
+            view,
+            background: design.background,
+            width: design.width,
+            height: design.height,
+        };
+        queue.write_buffer(
+            &prepared.surface,
+            0,
+            bytemuck::bytes_of(&prepared.surface_params),
+        );
+        self.update(device, queue, &mut prepared, shown)?;
+        Ok(prepared)
+    }
+
+    /// Brings `prepared` up to `shown`: writes the ops from the first one that differs
+    /// from what the texture holds (a longer prefix or a gesture's new ops write only
+    /// those; a shorter prefix writes nothing), the paper and the surface. A new texture
+    /// is made only when the ops outgrow the old one. Applies to command buffers
+    /// submitted after this call.
+    pub fn update(
+        &self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        prepared: &mut PreparedDesign,
+        shown: DesignPrefix<'_>,
+    ) -> Result<(), GpuError> {
+        let n = shown.op_count();
+        if n > prepared.layout.capacity() {
+            let max_side = device.limits().max_texture_dimension_2d;
+            let layout = room_for(n, max_side).ok_or(GpuError::TooManyOps { ops: n, max_side })?;
+            prepared.ops_texture = op_texture(device, layout);
+            prepared.layout = layout;
+            prepared.uploaded.clear();
+            prepared.bind_group = self.bind_group(
+                device,
+                &prepared.uniform,
+                &prepared.ops_texture,
+                &prepared.surface,
+            );
+        }
+        let same = prepared
+            .uploaded
+            .iter()
+            .zip(shown.ops())
+            .take_while(|(a, b)| a == b)
+            .count();
+        prepared.uploaded.truncate(same);
+        prepared.uploaded.extend(shown.ops().skip(same).copied());
+        write_ops(queue, prepared, same..n);
+        let design = shown.design;
         let surface_params = SurfaceParams::new(design);
-        if surface_params.flags != 0 {
+        if surface_params != prepared.surface_params {
+            queue.write_buffer(&prepared.surface, 0, bytemuck::bytes_of(&surface_params));
+            prepared.surface_params = surface_params;
+        }
+        prepared.textured = surface_params.flags != 0;
+        if prepared.textured {
             self.surface_pipeline(device);
         }
-        let surface = bindings::uniform_buffer::<SurfaceParams>(device, "marbling surface params");
-        queue.write_buffer(&surface, 0, bytemuck::bytes_of(&surface_params));
+        prepared.background = design.background;
+        (prepared.width, prepared.height) = (design.width, design.height);
+        prepared.write_params(queue);
+        Ok(())
+    }
+
+    /// Bind group 0 over a design's buffers and op texture.
+    fn bind_group(
+        &self,
+        device: &wgpu::Device,
+        uniform: &wgpu::Buffer,
+        ops: &wgpu::Texture,
+        surface: &wgpu::Buffer,
+    ) -> wgpu::BindGroup {
         let view = ops.create_view(&wgpu::TextureViewDescriptor::default());
-        let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+        device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("marbling render"),
             layout: &self.layout,
             entries: &[
@@ -196,18 +276,6 @@ impl ExactRenderer {
                     resource: surface.as_entire_binding(),
                 },
             ],
-        });
-        Ok(PreparedDesign {
-            _ops: ops,
-            _surface: surface,
-            textured: surface_params.flags != 0,
-            uniform,
-            bind_group,
-            params,
-            background: design.background,
-            width: design.width,
-            height: design.height,
-            op_count: design.ops.len(),
         })
     }
 
@@ -244,17 +312,75 @@ impl ExactRenderer {
     }
 }
 
+/// An empty op texture of `layout`'s size.
+fn op_texture(device: &wgpu::Device, layout: OpLayout) -> wgpu::Texture {
+    device.create_texture(&wgpu::TextureDescriptor {
+        label: Some("marbling ops"),
+        size: wgpu::Extent3d {
+            width: layout.width,
+            height: layout.height,
+            depth_or_array_layers: 1,
+        },
+        mip_level_count: 1,
+        sample_count: 1,
+        dimension: wgpu::TextureDimension::D2,
+        format: wgpu::TextureFormat::Rgba32Float,
+        usage: wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST,
+        view_formats: &[],
+    })
+}
+
+/// Writes `prepared.uploaded[range]` into its texture, one write per texture row.
+fn write_ops(queue: &wgpu::Queue, prepared: &mut PreparedDesign, range: std::ops::Range<usize>) {
+    for (row, col, count) in prepared.layout.runs(range.clone()) {
+        let first = row as usize * prepared.layout.ops_per_row as usize + col as usize;
+        let texels: Vec<[f32; 4]> = prepared.uploaded[first..first + count as usize]
+            .iter()
+            .flat_map(encode_op)
+            .collect();
+        queue.write_texture(
+            wgpu::TexelCopyTextureInfo {
+                texture: &prepared.ops_texture,
+                mip_level: 0,
+                origin: wgpu::Origin3d {
+                    x: col * TEXELS_PER_OP,
+                    y: row,
+                    z: 0,
+                },
+                aspect: wgpu::TextureAspect::All,
+            },
+            bytemuck::cast_slice(&texels),
+            wgpu::TexelCopyBufferLayout {
+                offset: 0,
+                bytes_per_row: Some(count * TEXELS_PER_OP * 16),
+                rows_per_image: Some(1),
+            },
+            wgpu::Extent3d {
+                width: count * TEXELS_PER_OP,
+                height: 1,
+                depth_or_array_layers: 1,
+            },
+        );
+    }
+    prepared.written += range.len() as u64;
+}
+
 impl PreparedDesign {
     /// Sets the view of the next draws (written to the uniform buffer through `queue`, so
     /// it applies to command buffers submitted after this call).
     pub fn set_view(&mut self, queue: &wgpu::Queue, view: &View) {
+        self.view = *view;
+        self.write_params(queue);
+    }
+
+    fn write_params(&mut self, queue: &wgpu::Queue) {
         self.params = RenderParams::new(
             self.background,
-            self.params.op_count,
-            self.params.ops_per_row,
-            view.antialias,
-            view.scale,
-            view.offset,
+            self.uploaded.len() as u32,
+            self.layout.ops_per_row,
+            self.view.antialias,
+            self.view.scale,
+            self.view.offset,
             self.params.encode_srgb == 1,
         );
         queue.write_buffer(&self.uniform, 0, bytemuck::bytes_of(&self.params));
@@ -265,9 +391,15 @@ impl PreparedDesign {
         (self.width, self.height)
     }
 
-    /// Number of ops uploaded.
+    /// Number of ops walked.
     pub fn op_count(&self) -> usize {
-        self.op_count
+        self.uploaded.len()
+    }
+
+    /// Ops written into the op texture since it was prepared (an update that only
+    /// appends writes only the new ones).
+    pub fn ops_written(&self) -> u64 {
+        self.written
     }
 
     /// Whether the design needs the surface (schema v2) variant.

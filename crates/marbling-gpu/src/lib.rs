@@ -69,6 +69,7 @@ mod fullscreen;
 #[cfg(not(target_arch = "wasm32"))]
 mod headless;
 pub mod params;
+mod prefix;
 mod present;
 mod preview;
 mod preview_kind;
@@ -84,6 +85,7 @@ pub use exact::{ExactRenderer, PreparedDesign, View};
 pub use flat_mesh::{FlatMeshRenderer, FlatVertex};
 #[cfg(not(target_arch = "wasm32"))]
 pub use headless::{DEFAULT_TILE_SIDE, GpuRenderer, OUTPUT_FORMAT};
+pub use prefix::DesignPrefix;
 pub use present::{Placement, PresentSource, Presenter};
 pub use preview::{CACHE_FACTOR, CACHE_FORMAT, PreviewCache, PreviewRenderer};
 pub use preview_kind::PreviewKind;

@@ -9,7 +9,6 @@
 //! rebuild the cache for the new committed design (or new zoom, see
 //! [`PreviewCache::covers`]).
 
-use crate::GpuError;
 use crate::bindings;
 use crate::encode::encode_op;
 use crate::exact::{ExactRenderer, PreparedDesign, View};
@@ -17,6 +16,7 @@ use crate::params::PreviewParams;
 use crate::preview_kind::PreviewKind;
 use crate::shaders::preview_wgsl;
 use crate::target::RenderTarget;
+use crate::{DesignPrefix, GpuError};
 use marbling_core::{Antialias, Design, Op, output_size};
 
 /// The cache's format, holding sRGB-encoded bytes (the exact renderer encodes them, as
@@ -132,7 +132,7 @@ impl PreviewRenderer {
         view_scale: f64,
         antialias: Antialias,
     ) -> Result<PreviewCache, GpuError> {
-        let cache = self.new_cache(device, queue, committed, view_scale, antialias)?;
+        let cache = self.new_cache(device, queue, committed.into(), view_scale, antialias)?;
         let (w, h) = cache.cache_size();
         let mut encoder =
             device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: None });
@@ -141,24 +141,25 @@ impl PreviewRenderer {
         Ok(cache)
     }
 
-    /// A cache of `committed` as [`PreviewRenderer::build_cache`] makes it, with nothing
-    /// drawn yet: draw it with [`PreviewRenderer::draw_cache_rect`], in as many tiles as
-    /// wanted, before showing it.
+    /// A cache of `shown` as [`PreviewRenderer::build_cache`] makes it of a design, with
+    /// nothing drawn yet: draw it with [`PreviewRenderer::draw_cache_rect`], in as many
+    /// tiles as wanted, before showing it.
     pub fn new_cache(
         &self,
         device: &wgpu::Device,
         queue: &wgpu::Queue,
-        committed: &Design,
+        shown: DesignPrefix<'_>,
         view_scale: f64,
         antialias: Antialias,
     ) -> Result<PreviewCache, GpuError> {
         let max_side = f64::from(device.limits().max_texture_dimension_2d);
+        let committed = shown.design;
         let longest = f64::from(committed.width.max(committed.height));
         let max_scale = max_side / longest;
         let cache_scale = (CACHE_FACTOR * view_scale).min(max_scale);
         let (w, h) = output_size(committed, cache_scale)?;
         let cache = RenderTarget::new(device, w, h, CACHE_FORMAT);
-        let mut prepared = self.cache_renderer.prepare(device, queue, committed)?;
+        let mut prepared = self.cache_renderer.prepare_prefix(device, queue, shown)?;
         prepared.set_view(
             queue,
             &View {

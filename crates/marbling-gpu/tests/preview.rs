@@ -136,7 +136,7 @@ fn tiles_drawn_over_frames_equal_one_full_draw() {
         .expect("cache");
     assert_eq!(whole.cache_size(), (90, 70));
     let tiled = preview
-        .new_cache(device, queue, &design, 0.5, Antialias::None)
+        .new_cache(device, queue, (&design).into(), 0.5, Antialias::None)
         .expect("cache");
     for rect in tiles {
         let mut encoder =
@@ -261,4 +261,123 @@ fn a_cache_at_the_texture_limit_covers_its_view() {
         !small.covers(0.8),
         "zooming in past the cache needs a new one"
     );
+}
+
+/// Views without copies: a prepared design brought to a shorter prefix, back to the
+/// whole design, to a prefix with an eased op, or to the design plus a gesture's ops
+/// draws exactly what a fresh upload of that design draws, and writes only the ops
+/// that changed.
+#[test]
+fn an_updated_design_draws_as_a_fresh_upload_and_writes_only_new_ops() {
+    let Some(gpu) = common::renderer() else {
+        return;
+    };
+    let ctx = gpu.context();
+    let (device, queue) = (&ctx.device, &ctx.queue);
+    let design = random_design(8, 48, 36, 40, Mix::Mixed);
+    let exact = ExactRenderer::new(device, OUTPUT_FORMAT);
+    let draw = |prepared: &mut marbling_gpu::PreparedDesign| {
+        prepared.set_view(
+            queue,
+            &View {
+                scale: 1.0,
+                offset: [0.0; 2],
+                antialias: Antialias::None,
+            },
+        );
+        let target = RenderTarget::new(device, 48, 36, OUTPUT_FORMAT);
+        let mut encoder =
+            device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: None });
+        {
+            let mut pass = target.begin_pass(&mut encoder);
+            exact.draw(&mut pass, prepared);
+        }
+        read_back(&gpu, encoder, &target)
+    };
+    let fresh =
+        |d: &marbling_core::Design| draw(&mut exact.prepare(device, queue, d).expect("prepare"));
+    let mut prepared = exact.prepare(device, queue, &design).expect("prepare");
+    assert_eq!(prepared.ops_written(), 40);
+    let whole = draw(&mut prepared);
+
+    let mut prefix = design.clone();
+    prefix.ops.truncate(25);
+    let shown = marbling_gpu::DesignPrefix {
+        design: &design,
+        ops: 25,
+        tail: &[],
+    };
+    exact
+        .update(device, queue, &mut prepared, shown)
+        .expect("update");
+    assert_eq!(prepared.op_count(), 25);
+    assert_eq!(
+        prepared.ops_written(),
+        40,
+        "a shorter prefix writes nothing"
+    );
+    let at_25 = draw(&mut prepared);
+    assert_eq!(at_25.pixels, fresh(&prefix).pixels);
+    assert!(compare(&at_25, &whole, 0).expect("size").fraction() > 0.01);
+
+    // Play: an op eased in after op 24 (here a drop no design op equals), one op written.
+    let eased = Op::Drop(Drop {
+        center: Point::new(20.0, 18.0),
+        radius: 6.5,
+        color: Rgb8::new(10, 90, 160),
+    });
+    assert!(!design.ops.contains(&eased));
+    let tail = [eased];
+    let shown = marbling_gpu::DesignPrefix {
+        design: &design,
+        ops: 25,
+        tail: &tail,
+    };
+    exact
+        .update(device, queue, &mut prepared, shown)
+        .expect("update");
+    assert_eq!(prepared.ops_written(), 41);
+    prefix.ops.push(eased);
+    assert_eq!(draw(&mut prepared).pixels, fresh(&prefix).pixels);
+
+    // Back to the whole design: ops 25.. are written again.
+    exact
+        .update(device, queue, &mut prepared, (&design).into())
+        .expect("update");
+    assert_eq!(prepared.ops_written(), 41 + 15);
+    assert_eq!(draw(&mut prepared).pixels, whole.pixels);
+
+    // A gesture of 100 ops over the design outgrows the texture's room (64): a new
+    // texture, all 140 ops written, the same picture as a fresh upload.
+    let stroke: Vec<Op> = (0..100)
+        .map(|i| {
+            Op::Drop(Drop {
+                center: Point::new(f64::from(i % 10) * 5.0, f64::from(i / 10) * 4.0),
+                radius: 1.5,
+                color: Rgb8::new(200, 30, 30),
+            })
+        })
+        .collect();
+    let shown = marbling_gpu::DesignPrefix {
+        design: &design,
+        ops: 40,
+        tail: &stroke,
+    };
+    exact
+        .update(device, queue, &mut prepared, shown)
+        .expect("update");
+    assert_eq!(prepared.ops_written(), 56 + 140);
+    let mut stroked = design.clone();
+    stroked.ops.extend_from_slice(&stroke);
+    assert_eq!(draw(&mut prepared).pixels, fresh(&stroked).pixels);
+    // …and one more op of the gesture writes one op.
+    let shown = marbling_gpu::DesignPrefix {
+        design: &design,
+        ops: 40,
+        tail: &[stroke.as_slice(), &stroke[..1]].concat(),
+    };
+    exact
+        .update(device, queue, &mut prepared, shown)
+        .expect("update");
+    assert_eq!(prepared.ops_written(), 196 + 1);
 }
