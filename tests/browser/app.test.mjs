@@ -157,6 +157,8 @@ for (const backend of Object.keys(BACKENDS)) {
 
       // An edit: the preview cache of the design stands in at once, sharpened by tiles.
       await page.waitForFunction(() => document.body.dataset.previewReady === '1', null, { timeout: READY_MS });
+      const written = async () => Number(/ops_written=(\d+)/.exec(await attr(page, 'data-gpu-work'))?.[1]);
+      const writtenBefore = await written();
       await page.keyboard.press('1'); // drop
       // Low on the sheet: its tiles come last, so the shot below is taken before them.
       await page.mouse.click(shot.x + 60 * shot.scale, shot.y + 70 * shot.scale);
@@ -171,6 +173,8 @@ for (const backend of Object.keys(BACKENDS)) {
       console.log(`${backend}: while refining (progress ${midProgress}): ${(100 * off).toFixed(2)} % of pixels off the exact frame; the drop changed ${(100 * changed).toFixed(2)} %`);
       assert.ok(changed > 0.02, 'the drop did not change the picture');
       assert.ok(off < changed / 2, 'the frame shown while refining was not the preview of the edit');
+      // Views without copies: the edit wrote its one op into the GPU's op texture.
+      assert.equal((await written()) - writtenBefore, 1, 'the drop uploaded the design again');
       await page.screenshot({ path: path.join(SHOTS, `refined-5000-${backend}.png`), timeout: READY_MS });
       assert.deepEqual(errors, []);
       fs.rmSync(file, { force: true });

@@ -728,10 +728,11 @@ impl MarblingApp {
             (
                 "data-gpu-work",
                 Some(format!(
-                    "exact={},tiles={},frame_units={},preview={},caches={},preview_samples={},panel_copies={},panel_renders={}",
+                    "exact={},tiles={},frame_units={},ops_written={},preview={},caches={},preview_samples={},panel_copies={},panel_renders={}",
                     work.exact,
                     work.tiles,
                     work.frame_units,
+                    work.ops_written,
                     work.preview,
                     work.caches,
                     preview_samples,

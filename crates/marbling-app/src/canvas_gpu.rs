@@ -111,6 +111,9 @@ pub struct GpuWork {
     pub caches: u64,
     /// Op-samples the frames' tiles may take now (the adaptive budget).
     pub frame_units: u64,
+    /// Ops written into the exact renderer's op texture (an edit, a Play frame or a
+    /// history view writes only the ops that differ from what it holds).
+    pub ops_written: u64,
 }
 
 /// What the paint callback shows this frame.
@@ -142,6 +145,8 @@ pub struct CanvasGpu {
     /// A preview cache being drawn in tiles.
     building: Option<(u64, PreviewCache, Refinement)>,
     caches_built: u64,
+    /// Ops written into the exact op texture so far (all uploads).
+    ops_written: u64,
     /// The design whose preview cache could not be made (not tried again).
     cache_failed: Option<u64>,
     budget: FrameBudget,
@@ -165,6 +170,7 @@ impl CanvasGpu {
             cache: None,
             building: None,
             caches_built: 0,
+            ops_written: 0,
             cache_failed: None,
             budget: FrameBudget::default(),
             last_tile_frame_ms: None,
@@ -203,10 +209,12 @@ impl CanvasGpu {
         match &mut self.prepared {
             Some((key, _)) if *key == req.design_key => {}
             Some((key, prepared)) => {
+                let before = prepared.ops_written();
                 if let Err(e) = self.exact.update(device, queue, prepared, shown.prefix()) {
                     self.prepared = None;
                     return Err(e.to_string());
                 }
+                self.ops_written += prepared.ops_written() - before;
                 *key = req.design_key;
             }
             None => {
@@ -214,6 +222,7 @@ impl CanvasGpu {
                     .exact
                     .prepare_prefix(device, queue, shown.prefix())
                     .map_err(|e| e.to_string())?;
+                self.ops_written += prepared.ops_written();
                 self.prepared = Some((req.design_key, prepared));
             }
         }
@@ -542,6 +551,7 @@ impl CanvasCallback {
         }
         status.work.frame_units = gpu.budget.units();
         status.work.caches = gpu.caches_built;
+        status.work.ops_written = gpu.ops_written;
         let refinement = gpu.refining.as_ref().map(|(_, r)| r);
         let exact_done = refinement.is_some_and(Refinement::is_done);
         status.progress = refinement
