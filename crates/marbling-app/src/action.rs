@@ -37,6 +37,10 @@ pub enum Action {
     OpenRecent(usize),
     /// A plain paper colour (it replaces a noise background).
     SetPaperColor(Rgb8),
+    /// Starts Play from the first op (true) or stops it, showing the whole design.
+    Play(bool),
+    /// Switches between marbling and the noise playground.
+    SetMode(Mode),
     /// A noise background and grain overlays; `what` names the change.
     SetSurface {
         /// The new background and overlays.
@@ -49,26 +53,26 @@ pub enum Action {
 impl MarblingApp {
     /// Carries out `action`: the only place where the design and its history change.
     pub(crate) fn apply(&mut self, action: Action) {
-        let pristine = std::mem::take(&mut self.pristine);
-        let shown_size = self.shown.size();
+        let pristine = std::mem::take(&mut self.editor.pristine);
+        let shown_size = self.editor.shown.size();
         // An edit of the same document: the design before it, with the op it added,
         // stands in while the new design's exact frame is drawn.
         let stand_in = match &action {
             Action::Load { .. } | Action::NewSheet | Action::OpenRecent(_) => None,
             Action::Commit(ops) => Some(crate::canvas_gpu::StandIn {
-                key: self.key,
+                key: self.editor.key,
                 op: match ops.as_slice() {
                     [op] if !matches!(op, Op::Spray(_)) => Some(*op),
                     _ => None,
                 },
             }),
             _ => Some(crate::canvas_gpu::StandIn {
-                key: self.key,
+                key: self.editor.key,
                 op: None,
             }),
         };
         let changed = match action {
-            Action::Commit(ops) => match self.history.push_ops(ops) {
+            Action::Commit(ops) => match self.editor.history.push_ops(ops) {
                 Ok(()) => true,
                 Err(e) => {
                     self.error(e.to_string());
@@ -82,8 +86,8 @@ impl MarblingApp {
             } => {
                 if pristine && from_link {
                     // Nothing to keep: the link's design starts the history.
-                    self.view = None;
-                    self.history = crate::History::new(design);
+                    self.editor.view = None;
+                    self.editor.history = crate::History::new(design);
                 } else {
                     self.replace_document(design, format!("opened {from}"));
                 }
@@ -96,29 +100,43 @@ impl MarblingApp {
                 true
             }
             Action::NewSheet => {
-                let mut d = crate::app::blank(self.new_size);
-                d.background = crate::PALETTES[self.palette].background;
+                let mut d = crate::app::blank(self.panels.new_size);
+                d.background = crate::PALETTES[self.prefs.palette].background;
                 self.replace_document(
                     d,
-                    format!("new sheet {}×{}", self.new_size[0], self.new_size[1]),
+                    format!(
+                        "new sheet {}×{}",
+                        self.panels.new_size[0], self.panels.new_size[1]
+                    ),
                 );
                 self.info("a new design (Undo brings the previous one back)");
                 true
             }
-            Action::Undo => self.history.undo(),
-            Action::Redo => self.history.redo(),
+            Action::Undo => self.editor.history.undo(),
+            Action::Redo => self.editor.history.redo(),
             Action::View(n) => {
-                self.history.view(n);
-                self.playback = None;
+                self.editor.history.view(n);
+                self.editor.playback = None;
                 self.refresh();
                 self.fit_if_resized(shown_size);
-                self.stand_in = stand_in.map(|s| (self.key, s));
+                self.editor.stand_in = stand_in.map(|s| (self.editor.key, s));
                 return;
             }
-            Action::Restore(i) => self.history.restore(i),
-            Action::OpenRecent(i) => match self.recent.design(i) {
+            Action::Play(on) => {
+                self.editor.history.view(None);
+                self.editor.playback = on.then(crate::playback::Playback::start);
+                self.refresh();
+                self.fit_if_resized(shown_size);
+                return;
+            }
+            Action::SetMode(mode) => {
+                self.set_mode(mode);
+                return;
+            }
+            Action::Restore(i) => self.editor.history.restore(i),
+            Action::OpenRecent(i) => match self.session.recent.design(i) {
                 Ok(d) => {
-                    let label = self.recent.entries[i].label.clone();
+                    let label = self.session.recent.entries[i].label.clone();
                     self.replace_document(d, format!("restored recent design ({label})"));
                     self.info("restored a recent design (Undo goes back)");
                     true
@@ -129,20 +147,20 @@ impl MarblingApp {
                 }
             },
             Action::SetPaperColor(c) => {
-                let mut paper = self.history.shown_paper();
+                let mut paper = self.editor.history.shown_paper();
                 paper.background = c;
                 paper.background_noise = None;
-                self.history.push_paper(paper, c.to_string(), true);
+                self.editor.history.push_paper(paper, c.to_string(), true);
                 true
             }
             Action::SetSurface {
                 surface: (background, overlays),
                 what,
             } => {
-                let mut paper = self.history.shown_paper();
+                let mut paper = self.editor.history.shown_paper();
                 paper.background_noise = background;
                 paper.overlays = overlays;
-                self.history.push_paper(paper, what.clone(), false);
+                self.editor.history.push_paper(paper, what.clone(), false);
                 self.set_mode(Mode::Marbling);
                 self.info(format!("design surface: {what}"));
                 true
@@ -152,45 +170,47 @@ impl MarblingApp {
             // The address bar's link no longer shows the design: drop it, so a reload
             // shows the edited design (from the autosave) instead of the link's.
             if self
+                .editor
                 .last_fragment
                 .as_deref()
                 .is_some_and(|f| f.split('&').any(|p| p.starts_with("d=")))
             {
                 platform::clear_fragment();
-                self.last_fragment = None;
+                self.editor.last_fragment = None;
             }
             self.after_change();
             self.fit_if_resized(shown_size);
-            self.stand_in = stand_in.map(|s| (self.key, s));
+            self.editor.stand_in = stand_in.map(|s| (self.editor.key, s));
         }
     }
 
     /// The design changed: stop playback, redraw, autosave soon.
     fn after_change(&mut self) {
-        self.playback = None;
+        self.editor.playback = None;
         self.refresh();
-        self.autosave_pending = true;
+        self.session.autosave_pending = true;
     }
 
     /// A sheet of another size (New, Open, or undoing either) is fitted to the canvas.
     fn fit_if_resized(&mut self, before: (u32, u32)) {
-        if self.shown.size() != before {
-            self.view = None;
+        if self.editor.shown.size() != before {
+            self.editor.view = None;
         }
     }
 
     /// A new document step; the design it replaces goes to *Recent designs*.
     fn replace_document(&mut self, design: Design, label: String) {
-        let current = self.history.design();
+        let current = self.editor.history.design();
         if !current.ops.is_empty() || current.uses_v2() {
             let kept = current.clone();
-            self.recent
+            self.session
+                .recent
                 .push(&kept, format!("before {label}"), platform::now_ms());
-            self.recent_pending = true;
+            self.session.recent_pending = true;
         }
-        self.mode = Mode::Marbling;
-        self.active = None;
-        self.history.push_document(design, label);
+        self.editor.mode = Mode::Marbling;
+        self.editor.active = None;
+        self.editor.history.push_document(design, label);
     }
 }
 
@@ -222,23 +242,48 @@ mod tests {
         a.apply(Action::Commit(
             (0..30).map(|i| spray(f64::from(i))).collect(),
         ));
-        let stroke = a.history.design().clone();
-        assert_eq!(a.shown.op_count(), 30);
+        let stroke = a.editor.history.design().clone();
+        assert_eq!(a.editor.shown.op_count(), 30);
         a.apply(Action::NewSheet);
-        assert!(a.history.design().ops.is_empty());
-        assert_eq!(a.recent.entries.len(), 1);
-        assert!(a.autosave_pending && a.recent_pending);
-        a.view = Some(crate::view::ViewState::fit(&a.shown.design, [800.0, 600.0]));
+        assert!(a.editor.history.design().ops.is_empty());
+        assert_eq!(a.session.recent.entries.len(), 1);
+        assert!(a.session.autosave_pending && a.session.recent_pending);
+        a.editor.view = Some(crate::view::ViewState::fit(
+            &a.editor.shown.design,
+            [800.0, 600.0],
+        ));
         a.apply(Action::Undo);
-        assert_eq!(a.history.design(), &stroke);
+        assert_eq!(a.editor.history.design(), &stroke);
         assert!(
-            a.view.is_none(),
+            a.editor.view.is_none(),
             "the 40×30 sheet is fitted again after the undo"
         );
         a.apply(Action::Undo);
-        assert!(a.history.design().ops.is_empty());
+        assert!(a.editor.history.design().ops.is_empty());
         a.apply(Action::OpenRecent(0));
-        assert_eq!(a.history.design(), &stroke);
+        assert_eq!(a.editor.history.design(), &stroke);
+    }
+
+    #[test]
+    fn play_and_earlier_steps_are_views_of_the_design_not_copies() {
+        let mut a = app();
+        for i in 0..3 {
+            a.apply(Action::Commit(vec![
+                spray(f64::from(i)),
+                spray(f64::from(i) + 0.5),
+            ]));
+        }
+        let design = a.editor.history.design_shared().clone();
+        a.apply(Action::View(Some(1)));
+        assert_eq!(a.editor.shown.op_count(), 2);
+        assert!(std::sync::Arc::ptr_eq(&a.editor.shown.design, &design));
+        a.apply(Action::Play(true));
+        assert!(a.editor.playback.is_some());
+        assert_eq!(a.editor.shown.op_count(), 1, "the first op is eased in");
+        assert!(std::sync::Arc::ptr_eq(&a.editor.shown.design, &design));
+        a.apply(Action::Play(false));
+        assert!(a.editor.playback.is_none());
+        assert_eq!(a.editor.shown, crate::shown::Shown::all(design));
     }
 
     #[test]
@@ -246,14 +291,14 @@ mod tests {
         let mut a = app();
         a.apply(Action::Commit(vec![spray(1.0)]));
         a.apply(Action::SetPaperColor(Rgb8::new(10, 20, 30)));
-        assert_eq!(a.shown.design.background, Rgb8::new(10, 20, 30));
+        assert_eq!(a.editor.shown.design.background, Rgb8::new(10, 20, 30));
         assert_eq!(
-            a.history.steps().last().expect("a value").label,
+            a.editor.history.steps().last().expect("a value").label,
             "paper #0a141e"
         );
         a.apply(Action::Undo);
-        assert_eq!(a.shown.design.background, Rgb8::new(250, 250, 250));
-        assert_eq!(a.shown.op_count(), 1);
+        assert_eq!(a.editor.shown.design.background, Rgb8::new(250, 250, 250));
+        assert_eq!(a.editor.shown.op_count(), 1);
     }
 
     #[test]
@@ -262,7 +307,7 @@ mod tests {
         d.ops = (0..MAX_OPS).map(|i| spray(i as f64 % 40.0)).collect();
         let mut a = MarblingApp::with_design(d.clone(), "test".into(), false);
         a.apply(Action::Commit(vec![spray(3.0)]));
-        let m = a.message.clone().expect("a message");
+        let m = a.panels.message.clone().expect("a message");
         assert!(m.error);
         assert_eq!(
             m.text,
@@ -272,8 +317,8 @@ mod tests {
             }
             .to_string()
         );
-        assert_eq!(a.history.design(), &d);
-        assert!(!a.autosave_pending);
+        assert_eq!(a.editor.history.design(), &d);
+        assert!(!a.session.autosave_pending);
     }
 
     #[test]
@@ -282,13 +327,13 @@ mod tests {
         for i in 0..4 {
             a.apply(Action::Commit(vec![spray(f64::from(i))]));
         }
-        let full = a.history.design().clone();
+        let full = a.editor.history.design().clone();
         a.apply(Action::View(Some(1)));
-        assert_eq!(a.shown.op_count(), 1);
+        assert_eq!(a.editor.shown.op_count(), 1);
         a.apply(Action::Commit(vec![spray(30.0), spray(31.0)]));
-        assert_eq!(a.shown.op_count(), 3);
-        assert_eq!(a.history.branches().len(), 1);
+        assert_eq!(a.editor.shown.op_count(), 3);
+        assert_eq!(a.editor.history.branches().len(), 1);
         a.apply(Action::Restore(0));
-        assert_eq!(a.history.design(), &full);
+        assert_eq!(a.editor.history.design(), &full);
     }
 }

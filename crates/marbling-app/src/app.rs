@@ -2,21 +2,19 @@
 
 use crate::action::Action;
 use crate::autosave;
-use crate::canvas_gpu::{CanvasGpu, CanvasStatus};
-use crate::export::{ExportSize, ExportStep, PngExport, export_file_name};
+use crate::canvas_gpu::CanvasGpu;
+use crate::export::{ExportStep, PngExport, export_file_name};
 use crate::gpu_errors::GpuErrors;
 use crate::history::Surface;
 use crate::mode::Mode;
-use crate::noise_panel::NoiseAnalysis;
-use crate::noise_settings::NoiseSettings;
-use crate::platform::{self, PickSlot};
-use crate::playback::Playback;
+use crate::platform;
+use crate::prefs::Prefs;
 use crate::recovery::{self, LostFlag, ParkedState};
+use crate::state::{Editor, Hooks, Panels, Renderer, Session};
 use crate::tools::{Gesture, ToolKind, ToolSettings};
-use crate::view::ViewState;
 use crate::{History, PALETTES};
 use marbling_core::{Antialias, Design, DesignError, Rgb8, decode_share, share_fragment};
-use std::sync::{Arc, Mutex};
+use std::sync::Arc;
 
 /// A line shown in the status bar; errors also go to `data-error`.
 #[derive(Clone, Debug, PartialEq)]
@@ -38,90 +36,21 @@ pub struct ActiveGesture {
     pub seed: u64,
 }
 
-/// The marbling playground.
+/// The marbling playground: its state in parts (src/state.rs); what changes the
+/// document is [`MarblingApp::apply`] (src/action.rs).
 pub struct MarblingApp {
-    pub(crate) history: History,
-    /// Bumped whenever the shown design changes (the GPU re-uploads on change).
-    pub(crate) key: u64,
-    /// What may stand in for the shown design (`.0` = [`Self::key`]) while its exact
-    /// frame is drawn: the design before the last edit, and the op the edit added.
-    pub(crate) stand_in: Option<(u64, crate::canvas_gpu::StandIn)>,
-    /// When the user last acted on the page (egui's clock, seconds).
-    pub(crate) last_input_s: f64,
-    /// The design on the canvas (the history, a viewed prefix or a playback frame).
-    pub(crate) shown: crate::shown::Shown,
-    pub(crate) tool: ToolKind,
-    pub(crate) settings: ToolSettings,
-    pub(crate) palette: usize,
-    pub(crate) ink: Rgb8,
-    pub(crate) antialias: Antialias,
-    /// `None` until the canvas size is known (then the design is fitted).
-    pub(crate) view: Option<ViewState>,
-    pub(crate) active: Option<ActiveGesture>,
-    pub(crate) next_seed: u64,
-    pub(crate) status: Arc<Mutex<CanvasStatus>>,
-    pub(crate) message: Option<Message>,
-    pub(crate) pick: PickSlot,
-    pub(crate) last_fragment: Option<String>,
-    pub(crate) playback: Option<Playback>,
-    /// Playback speed, ops per second.
-    pub(crate) play_speed: f64,
-    /// The gallery's thumbnail atlas and each example's rectangle in it (see
-    /// src/thumbnails.rs), made on first show.
-    pub(crate) thumbnails: Option<(egui::TextureHandle, Vec<egui::Rect>)>,
-    /// `webgpu`, `webgl2`, or the native backend's name.
-    pub(crate) backend: String,
-    /// False when no wgpu render state exists (the canvas then says so).
-    pub(crate) gpu: bool,
-    pub(crate) autosave_pending: bool,
-    /// True while the design is the start-up example nobody has touched (a link then
-    /// replaces it instead of stacking on it).
-    pub(crate) pristine: bool,
-    /// When the autosave was last written, ms since 1970.
-    pub(crate) last_autosave_ms: f64,
-    /// Storage writes waiting for a frame (key, value).
-    pub(crate) pending_writes: Vec<(&'static str, String)>,
-    /// The preferences last stored, and when.
-    pub(crate) stored_prefs: (Option<crate::prefs::Prefs>, f64),
-    /// *Recent designs* (kept in storage).
-    pub(crate) recent: crate::recent::Recent,
-    /// True when the recent list must be written.
-    pub(crate) recent_pending: bool,
-    /// Thumbnails of recent designs, by share fragment (made on first show).
-    /// (`None`: too large to draw one quickly, or unreadable).
-    pub(crate) recent_thumbnails: std::collections::HashMap<String, Option<egui::TextureHandle>>,
-    pub(crate) hooks: Vec<(&'static str, Option<String>)>,
-    pub(crate) new_size: [u32; 2],
-    /// The sheet's top-left corner on the page (physical pixels) and the scale.
-    pub(crate) sheet_on_page: Option<[f64; 3]>,
-    /// Samples per pixel of the live preview, from how fast its frames come.
-    pub(crate) preview_quality: crate::preview_quality::PreviewQuality,
-    /// Recent frame intervals, seconds (for `data-frame-ms`).
-    pub(crate) frame_times: std::collections::VecDeque<f64>,
-    /// Frames drawn since start (for `data-frames`).
-    pub(crate) frames: u64,
-    /// The size Export PNG renders at.
-    pub(crate) export_size: ExportSize,
-    /// A PNG export in progress and the file name it will get.
-    pub(crate) export: Option<(PngExport, String)>,
-    /// Where this frame drew the panel's main controls (for `data-controls`).
-    pub(crate) controls: Vec<(std::borrow::Cow<'static, str>, egui::Rect)>,
-    /// Raised when the GPU device is lost.
-    pub(crate) lost: LostFlag,
-    /// GPU errors no error scope caught (shown instead of wgpu's panic).
-    pub(crate) gpu_errors: GpuErrors,
-    /// True once the state is parked for the renderer's restart.
-    pub(crate) parked: bool,
-    /// Marbling or the noise playground.
-    pub(crate) mode: Mode,
-    /// The noise playground's parameters.
-    pub(crate) noise: NoiseSettings,
-    /// The noise (and zoom factor) the canvas shows, to notice changes.
-    pub(crate) noise_shown: Option<(NoiseSettings, f64)>,
-    /// Statistics of the shown noise (`Some(None)`: none can be computed).
-    pub(crate) noise_analysis: Option<Option<NoiseAnalysis>>,
-    /// The side panel's last rendering, shown while the panel does not change.
-    pub(crate) panel_cache: crate::panel_cache::PanelCache,
+    /// The document being edited and how it is shown.
+    pub(crate) editor: Editor,
+    /// Tool, tool settings, palette, ink and antialiasing (kept in storage).
+    pub(crate) prefs: Prefs,
+    /// Autosave, recent designs and what is owed to storage.
+    pub(crate) session: Session,
+    /// The GPU renderer's side.
+    pub(crate) renderer: Renderer,
+    /// The automation hooks.
+    pub(crate) hooks: Hooks,
+    /// The panels' own state.
+    pub(crate) panels: Panels,
 }
 
 /// Default canvas of a new design, design pixels.
@@ -148,9 +77,9 @@ impl MarblingApp {
         let fallback =
             Design::from_json(crate::gallery::EXAMPLES[0].json).unwrap_or_else(|_| blank(NEW_SIZE));
         let mut app = Self::with_design(fallback, backend, gpu);
-        app.pristine = true;
-        app.lost = lost;
-        app.gpu_errors = gpu_errors;
+        app.editor.pristine = true;
+        app.renderer.lost = lost;
+        app.renderer.gpu_errors = gpu_errors;
         autosave::flush_on_page_hide();
         if let Some(parked) = recovery::take_parked() {
             app.unpark(parked);
@@ -164,14 +93,16 @@ impl MarblingApp {
             load(autosave::LEGACY_KEY),
         );
         if let Some(r) = found.record {
-            app.pristine = false;
-            app.history = History::new(r.design);
+            app.editor.pristine = false;
+            app.editor.history = History::new(r.design);
             autosave::unsaved().seq = r.seq;
         }
         for (key, why) in found.unreadable {
             // Kept where no autosave overwrites it.
             if let Some(text) = load(&key) {
-                app.pending_writes.push((autosave::UNREADABLE_KEY, text));
+                app.session
+                    .pending_writes
+                    .push((autosave::UNREADABLE_KEY, text));
             }
             app.error(format!(
                 "the autosave could not be restored ({why}); its text is kept under {}",
@@ -179,14 +110,14 @@ impl MarblingApp {
             ));
         }
         if let Some(text) = load(crate::prefs::KEY) {
-            match crate::prefs::Prefs::decode(&text, app.prefs()) {
-                Ok(p) => app.set_prefs(p),
+            match crate::prefs::Prefs::decode(&text, app.prefs) {
+                Ok(p) => app.prefs = p,
                 Err(e) => log::warn!("{e}"),
             }
         }
-        app.stored_prefs.0 = Some(app.prefs());
+        app.session.stored_prefs.0 = Some(app.prefs);
         if let Some(text) = load(crate::recent::KEY) {
-            app.recent = crate::recent::Recent::decode(&text);
+            app.session.recent = crate::recent::Recent::decode(&text);
         }
         app.refresh();
         app.check_fragment();
@@ -197,109 +128,47 @@ impl MarblingApp {
     pub fn with_design(design: Design, backend: String, gpu: bool) -> Self {
         let palette = PALETTES[0];
         Self {
-            history: History::new(design.clone()),
-            key: 0,
-            stand_in: None,
-            last_input_s: 0.0,
-            shown: crate::shown::Shown::all(Arc::new(design)),
-            tool: ToolKind::Drop,
-            settings: ToolSettings::default(),
-            palette: 0,
-            ink: palette.inks[0],
-            antialias: Antialias::Rgss,
-            view: None,
-            active: None,
-            next_seed: 1,
-            status: Arc::new(Mutex::new(CanvasStatus::default())),
-            message: None,
-            pick: PickSlot::default(),
-            last_fragment: None,
-            playback: None,
-            play_speed: 8.0,
-            thumbnails: None,
-            backend,
-            gpu,
-            autosave_pending: false,
-            pristine: false,
-            last_autosave_ms: f64::NEG_INFINITY,
-            pending_writes: Vec::new(),
-            stored_prefs: (None, f64::NEG_INFINITY),
-            recent: Default::default(),
-            recent_pending: false,
-            recent_thumbnails: Default::default(),
-            hooks: Vec::new(),
-            new_size: NEW_SIZE,
-            sheet_on_page: None,
-            preview_quality: Default::default(),
-            frame_times: std::collections::VecDeque::new(),
-            frames: 0,
-            export_size: ExportSize::Screen,
-            export: None,
-            controls: Vec::new(),
-            lost: LostFlag::default(),
-            gpu_errors: GpuErrors::default(),
-            parked: false,
-            mode: Mode::Marbling,
-            noise: NoiseSettings::default(),
-            noise_shown: None,
-            noise_analysis: None,
-            panel_cache: Default::default(),
+            editor: Editor::new(design),
+            prefs: Prefs {
+                tool: ToolKind::Drop,
+                settings: ToolSettings::default(),
+                palette: 0,
+                ink: palette.inks[0],
+                antialias: Antialias::Rgss,
+            },
+            session: Session::default(),
+            renderer: Renderer::new(backend, gpu),
+            hooks: Hooks::default(),
+            panels: Panels::default(),
         }
-    }
-
-    /// The preferences now in force.
-    pub(crate) fn prefs(&self) -> crate::prefs::Prefs {
-        crate::prefs::Prefs {
-            tool: self.tool,
-            settings: self.settings,
-            palette: self.palette,
-            ink: self.ink,
-            antialias: self.antialias,
-        }
-    }
-
-    fn set_prefs(&mut self, p: crate::prefs::Prefs) {
-        self.tool = p.tool;
-        self.settings = p.settings;
-        self.palette = p.palette;
-        self.ink = p.ink;
-        self.antialias = p.antialias;
     }
 
     /// The editing state a restarted renderer must keep.
     fn park_state(&self) -> ParkedState {
         ParkedState {
-            history: self.history.clone(),
-            tool: self.tool,
-            settings: self.settings,
-            palette: self.palette,
-            ink: self.ink,
-            antialias: self.antialias,
-            last_fragment: self.last_fragment.clone(),
+            history: self.editor.history.clone(),
+            prefs: self.prefs,
+            last_fragment: self.editor.last_fragment.clone(),
         }
     }
 
     fn unpark(&mut self, p: ParkedState) {
-        self.history = p.history;
-        self.tool = p.tool;
-        self.settings = p.settings;
-        self.palette = p.palette;
-        self.ink = p.ink;
-        self.antialias = p.antialias;
-        self.last_fragment = p.last_fragment;
+        self.editor.history = p.history;
+        self.prefs = p.prefs;
+        self.editor.last_fragment = p.last_fragment;
     }
 
     /// Reacts to a lost GPU device once: parks the editing state for the restarted
     /// renderer (web) or says how to go on (native, where the autosave keeps the work).
     fn check_device_lost(&mut self) {
-        if !self.lost.is_raised() || self.parked {
+        if !self.renderer.lost.is_raised() || self.renderer.parked {
             return;
         }
-        self.parked = true;
-        self.export = None;
+        self.renderer.parked = true;
+        self.renderer.export = None;
         // Written in this frame, whatever the debounce says.
-        self.autosave_pending = true;
-        self.last_autosave_ms = f64::NEG_INFINITY;
+        self.session.autosave_pending = true;
+        self.session.last_autosave_ms = f64::NEG_INFINITY;
         recovery::park(self.park_state());
         if cfg!(target_arch = "wasm32") {
             self.info("the GPU device was lost: restarting the renderer…");
@@ -312,31 +181,32 @@ impl MarblingApp {
 
     /// The shown design changed: new key, new snapshot.
     pub(crate) fn refresh(&mut self) {
-        self.key += 1;
-        if self.mode == Mode::Noise {
-            let d = self.history.design();
+        self.editor.key += 1;
+        if self.editor.mode == Mode::Noise {
+            let d = self.editor.history.design();
             match self
+                .editor
                 .noise
                 .design([d.width, d.height], self.noise_zoom_factor())
             {
-                Ok(noise) => self.shown = crate::shown::Shown::all(Arc::new(noise)),
+                Ok(noise) => self.editor.shown = crate::shown::Shown::all(Arc::new(noise)),
                 Err(e) => self.error(format!("noise: {e}")),
             }
             return;
         }
-        self.shown = match &self.playback {
-            Some(p) => p.frame(self.history.design_shared()),
-            None => self.history.shown(),
+        self.editor.shown = match &self.editor.playback {
+            Some(p) => p.frame(self.editor.history.design_shared()),
+            None => self.editor.history.shown(),
         };
     }
 
     /// Switches between marbling and the noise playground.
     pub(crate) fn set_mode(&mut self, mode: Mode) {
-        if mode != self.mode {
-            self.mode = mode;
-            self.playback = None;
-            self.active = None;
-            self.noise_shown = None;
+        if mode != self.editor.mode {
+            self.editor.mode = mode;
+            self.editor.playback = None;
+            self.editor.active = None;
+            self.editor.noise_shown = None;
             self.refresh();
         }
     }
@@ -344,13 +214,13 @@ impl MarblingApp {
     /// In the noise playground: re-renders when a parameter or the zoom rule's factor
     /// changed.
     fn follow_noise(&mut self) {
-        if self.mode != Mode::Noise {
+        if self.editor.mode != Mode::Noise {
             return;
         }
-        let now = (self.noise.clone(), self.noise_zoom_factor());
-        if self.noise_shown.as_ref() != Some(&now) {
-            self.noise_shown = Some(now);
-            self.noise_analysis = None;
+        let now = (self.editor.noise.clone(), self.noise_zoom_factor());
+        if self.editor.noise_shown.as_ref() != Some(&now) {
+            self.editor.noise_shown = Some(now);
+            self.editor.noise_analysis = None;
             self.refresh();
         }
     }
@@ -364,14 +234,14 @@ impl MarblingApp {
     }
 
     pub(crate) fn error(&mut self, text: impl Into<String>) {
-        self.message = Some(Message {
+        self.panels.message = Some(Message {
             text: text.into(),
             error: true,
         });
     }
 
     pub(crate) fn info(&mut self, text: impl Into<String>) {
-        self.message = Some(Message {
+        self.panels.message = Some(Message {
             text: text.into(),
             error: false,
         });
@@ -400,15 +270,15 @@ impl MarblingApp {
             return;
         }
         let fragment = platform::fragment();
-        if fragment == self.last_fragment {
+        if fragment == self.editor.last_fragment {
             return;
         }
-        self.last_fragment = fragment.clone();
+        self.editor.last_fragment = fragment.clone();
         let Some(f) = fragment.filter(|f| f.split('&').any(|p| p.starts_with("d="))) else {
             return;
         };
         match decode_share(&f) {
-            Ok(design) if &design == self.history.design() => {}
+            Ok(design) if &design == self.editor.history.design() => {}
             Ok(design) => self.apply(Action::Load {
                 design,
                 from: "share link".to_owned(),
@@ -423,7 +293,7 @@ impl MarblingApp {
         format!(
             "{}#{}",
             platform::base_url(),
-            share_fragment(self.history.design())
+            share_fragment(self.editor.history.design())
         )
     }
 
@@ -433,17 +303,17 @@ impl MarblingApp {
             self.error("Export PNG needs the GPU renderer, which is not available");
             return;
         };
-        let design: &Design = match self.mode {
-            Mode::Noise => &self.shown.design,
-            Mode::Marbling => self.history.design(),
+        let design: &Design = match self.editor.mode {
+            Mode::Noise => &self.editor.shown.design,
+            Mode::Marbling => self.editor.history.design(),
         };
-        let scale = self.export_size.scale(design);
-        match PngExport::start(&rs.device, &rs.queue, design, scale, self.antialias) {
+        let scale = self.panels.export_size.scale(design);
+        match PngExport::start(&rs.device, &rs.queue, design, scale, self.prefs.antialias) {
             Ok(export) => {
                 let name = export_file_name(design, export.size(), "png");
                 let (w, h) = export.size();
                 self.info(format!("exporting {w}×{h} PNG…"));
-                self.export = Some((export, name));
+                self.renderer.export = Some((export, name));
             }
             Err(e) => self.error(format!("Export PNG: {e}")),
         }
@@ -451,7 +321,7 @@ impl MarblingApp {
 
     /// Moves a running PNG export on by one tile; hands the file over when complete.
     fn advance_export(&mut self, frame: &eframe::Frame, ctx: &egui::Context) {
-        let Some((mut export, name)) = self.export.take() else {
+        let Some((mut export, name)) = self.renderer.export.take() else {
             return;
         };
         let Some(rs) = frame.wgpu_render_state() else {
@@ -460,7 +330,7 @@ impl MarblingApp {
         };
         match export.step(&rs.device, &rs.queue) {
             Ok(ExportStep::Working { .. }) => {
-                self.export = Some((export, name));
+                self.renderer.export = Some((export, name));
                 ctx.request_repaint();
             }
             Ok(ExportStep::Finished(image)) => match image.to_png() {
@@ -476,7 +346,7 @@ impl MarblingApp {
 
     /// Export SVG: the design's ink outlines traced forward (T = 1 design pixel).
     pub(crate) fn export_svg(&mut self) {
-        let design = self.history.design();
+        let design = self.editor.history.design();
         let opts = marbling_vector::TraceOptions::default();
         match marbling_vector::design_to_svg(design, &opts) {
             Ok(svg) => {
@@ -496,7 +366,7 @@ impl MarblingApp {
         name: impl Into<std::borrow::Cow<'static, str>>,
         response: &egui::Response,
     ) {
-        self.controls.push((name.into(), response.rect));
+        self.hooks.controls.push((name.into(), response.rect));
     }
 
     fn handle_shortcuts(&mut self, ctx: &egui::Context) {
@@ -528,14 +398,14 @@ impl MarblingApp {
             ];
             for (key, tool) in keys.into_iter().zip(ToolKind::ALL) {
                 if ctx.input(|i| i.key_pressed(key) && i.modifiers.is_none()) {
-                    self.tool = tool;
+                    self.prefs.tool = tool;
                 }
             }
         }
     }
 
     fn poll_picked_file(&mut self) {
-        let picked = self.pick.lock().ok().and_then(|mut s| s.take());
+        let picked = self.panels.pick.lock().ok().and_then(|mut s| s.take());
         match picked {
             Some(Ok((name, bytes))) => self.open_json(&name, &bytes),
             Some(Err(e)) => self.error(e),
@@ -544,10 +414,16 @@ impl MarblingApp {
     }
 
     fn advance_playback(&mut self, ctx: &egui::Context) {
-        let Some(mut p) = self.playback else { return };
+        let Some(mut p) = self.editor.playback else {
+            return;
+        };
         let dt = f64::from(ctx.input(|i| i.stable_dt)).min(0.1);
-        let running = p.advance(dt, self.play_speed, self.history.design().ops.len());
-        self.playback = running.then_some(p);
+        let running = p.advance(
+            dt,
+            self.editor.play_speed,
+            self.editor.history.design().ops.len(),
+        );
+        self.editor.playback = running.then_some(p);
         self.refresh();
         if running {
             ctx.request_repaint();
@@ -559,56 +435,58 @@ impl MarblingApp {
     /// a waiting one when the page goes away). A full storage drops the oldest recent
     /// designs first, then says the design was not autosaved.
     fn autosave(&mut self, frame: &mut eframe::Frame, ctx: &egui::Context) {
-        let prefs = self.prefs();
+        let prefs = self.prefs;
         let now = platform::now_ms();
-        if self.stored_prefs.0 != Some(prefs)
-            && now - self.stored_prefs.1 >= autosave::MIN_INTERVAL_MS
+        if self.session.stored_prefs.0 != Some(prefs)
+            && now - self.session.stored_prefs.1 >= autosave::MIN_INTERVAL_MS
         {
-            self.pending_writes
+            self.session
+                .pending_writes
                 .push((crate::prefs::KEY, prefs.encode()));
-            self.stored_prefs = (Some(prefs), now);
-        } else if self.stored_prefs.0 != Some(prefs) {
+            self.session.stored_prefs = (Some(prefs), now);
+        } else if self.session.stored_prefs.0 != Some(prefs) {
             ctx.request_repaint_after(std::time::Duration::from_secs(1));
         }
-        for (key, value) in std::mem::take(&mut self.pending_writes) {
+        for (key, value) in std::mem::take(&mut self.session.pending_writes) {
             if let Err(e) = platform::store_string(frame, key, &value) {
                 self.error(format!("{key}: {e}"));
             }
         }
-        if std::mem::take(&mut self.recent_pending) {
+        if std::mem::take(&mut self.session.recent_pending) {
             while let Err(e) =
-                platform::store_string(frame, crate::recent::KEY, &self.recent.encode())
+                platform::store_string(frame, crate::recent::KEY, &self.session.recent.encode())
             {
-                if !self.recent.drop_oldest() {
+                if !self.session.recent.drop_oldest() {
                     self.error(format!("recent designs were not saved: {e}"));
                     break;
                 }
             }
         }
-        if !self.autosave_pending {
+        if !self.session.autosave_pending {
             return;
         }
-        let wait = self.last_autosave_ms + autosave::MIN_INTERVAL_MS - now;
+        let wait = self.session.last_autosave_ms + autosave::MIN_INTERVAL_MS - now;
         if wait > 0.0 {
             let mut u = autosave::unsaved();
             if u.design
                 .as_ref()
-                .is_none_or(|d| **d != *self.history.design())
+                .is_none_or(|d| **d != *self.editor.history.design())
             {
-                u.design = Some(Arc::new(self.history.design().clone()));
+                u.design = Some(Arc::new(self.editor.history.design().clone()));
             }
             ctx.request_repaint_after(std::time::Duration::from_secs_f64(wait / 1000.0));
             return;
         }
-        self.autosave_pending = false;
-        self.last_autosave_ms = now;
+        self.session.autosave_pending = false;
+        self.session.last_autosave_ms = now;
         let mut u = autosave::unsaved();
         u.design = None;
         let seq = u.seq + 1;
-        let text = autosave::encode(seq, now, self.history.design());
+        let text = autosave::encode(seq, now, self.editor.history.design());
         let mut result = platform::store_string(frame, autosave::slot(seq), &text);
-        while result.is_err() && self.recent.drop_oldest() {
-            let _ = platform::store_string(frame, crate::recent::KEY, &self.recent.encode());
+        while result.is_err() && self.session.recent.drop_oldest() {
+            let _ =
+                platform::store_string(frame, crate::recent::KEY, &self.session.recent.encode());
             result = platform::store_string(frame, autosave::slot(seq), &text);
         }
         match result {
@@ -627,7 +505,7 @@ impl MarblingApp {
         // Recorded: the exact frame of this design and view is in the canvas texture's
         // commands. Ready: the GPU has also finished it (the queue's work-done callback).
         let (recorded, finished) = {
-            let st = self.status.lock().ok();
+            let st = self.renderer.status.lock().ok();
             let drawn = st.as_ref().and_then(|s| {
                 s.drawn
                     .as_ref()
@@ -637,10 +515,10 @@ impl MarblingApp {
                 s.exact_done.load(std::sync::atomic::Ordering::SeqCst) == s.work.exact
             });
             (
-                self.gpu
-                    && self.active.is_none()
-                    && self.playback.is_none()
-                    && drawn == Some((self.key, true)),
+                self.renderer.gpu
+                    && self.editor.active.is_none()
+                    && self.editor.playback.is_none()
+                    && drawn == Some((self.editor.key, true)),
                 finished,
             )
         };
@@ -651,24 +529,27 @@ impl MarblingApp {
             ctx.request_repaint_after(std::time::Duration::from_millis(100));
         }
         let progress = self
+            .renderer
             .status
             .lock()
             .ok()
             .and_then(|s| s.progress)
-            .filter(|_| self.gpu && self.active.is_none() && !ready)
+            .filter(|_| self.renderer.gpu && self.editor.active.is_none() && !ready)
             // Rounded down: 1 only when done (and then the hook is gone).
             .map(|p| format!("{:.3}", (p * 1000.0).floor() / 1000.0));
         let (preview_ready, work) = self
+            .renderer
             .status
             .lock()
             .ok()
             .map(|s| {
-                let asked = s.cache_ready == Some(self.key);
+                let asked = s.cache_ready == Some(self.editor.key);
                 if recorded && !asked {
                     // One more frame builds the live-preview cache.
                     ctx.request_repaint();
                 }
-                let done = s.cache_done.load(std::sync::atomic::Ordering::SeqCst) == self.key;
+                let done =
+                    s.cache_done.load(std::sync::atomic::Ordering::SeqCst) == self.editor.key;
                 if asked && !done {
                     // Backends that report finished work only when polled (wgpu's GL)
                     // hear of it in a later frame: look again soon.
@@ -678,26 +559,31 @@ impl MarblingApp {
             })
             .unwrap_or_default();
         let preview_samples = self
+            .renderer
             .preview_quality
-            .antialias(self.antialias)
+            .antialias(self.prefs.antialias)
             .samples()
             .len()
             .min(marbling_gpu::params::MAX_PREVIEW_SAMPLES);
         let error = self
+            .panels
             .message
             .as_ref()
             .filter(|m| m.error)
             .map(|m| m.text.clone());
         let view = self
+            .hooks
             .sheet_on_page
             .map(|[x, y, s]| format!("{x:.3},{y:.3},{s:.9}"));
-        let frame_ms = (!self.frame_times.is_empty()).then(|| {
+        let frame_ms = (!self.hooks.frame_times.is_empty()).then(|| {
             format!(
                 "{:.2}",
-                1000.0 * self.frame_times.iter().sum::<f64>() / self.frame_times.len() as f64
+                1000.0 * self.hooks.frame_times.iter().sum::<f64>()
+                    / self.hooks.frame_times.len() as f64
             )
         });
         let controls = self
+            .hooks
             .controls
             .iter()
             .map(|(n, r)| {
@@ -712,18 +598,19 @@ impl MarblingApp {
             .collect::<Vec<_>>()
             .join(";");
         let exporting = self
+            .renderer
             .export
             .as_ref()
             .map(|(e, _)| format!("{}x{}", e.size().0, e.size().1));
         let wanted: Vec<(&'static str, Option<String>)> = vec![
             ("data-ready", ready.then(|| "1".to_owned())),
             ("data-progress", progress),
-            ("data-backend", Some(self.backend.clone())),
-            ("data-ops", Some(self.shown.op_count().to_string())),
+            ("data-backend", Some(self.renderer.backend.clone())),
+            ("data-ops", Some(self.editor.shown.op_count().to_string())),
             ("data-error", error),
             ("data-view", view),
             ("data-frame-ms", frame_ms),
-            ("data-frames", Some(self.frames.to_string())),
+            ("data-frames", Some(self.hooks.frames.to_string())),
             ("data-preview-ready", preview_ready.then(|| "1".to_owned())),
             (
                 "data-gpu-work",
@@ -736,13 +623,13 @@ impl MarblingApp {
                     work.preview,
                     work.caches,
                     preview_samples,
-                    self.panel_cache.copies,
-                    self.panel_cache.renders
+                    self.panels.panel_cache.copies,
+                    self.panels.panel_cache.renders
                 )),
             ),
             ("data-controls", Some(controls)),
             ("data-exporting", exporting),
-            ("data-mode", Some(self.mode.name().to_owned())),
+            ("data-mode", Some(self.editor.mode.name().to_owned())),
             (
                 "data-recovered",
                 (recovery::recoveries() > 0).then(|| recovery::recoveries().to_string()),
@@ -752,11 +639,11 @@ impl MarblingApp {
             recovery::note_drawn();
         }
         for (name, value) in &wanted {
-            if !self.hooks.contains(&(*name, value.clone())) {
+            if !self.hooks.written.contains(&(*name, value.clone())) {
                 platform::set_body_attribute(name, value.as_deref());
             }
         }
-        self.hooks = wanted;
+        self.hooks.written = wanted;
     }
 }
 
@@ -772,11 +659,11 @@ impl eframe::App for MarblingApp {
         let ctx = ui.ctx().clone();
         // Mean interval of the last 60 frames, for the `data-frame-ms` hook.
         let dt = f64::from(ctx.input(|i| i.unstable_dt));
-        if self.frame_times.len() == 60 {
-            self.frame_times.pop_front();
+        if self.hooks.frame_times.len() == 60 {
+            self.hooks.frame_times.pop_front();
         }
-        self.frame_times.push_back(dt);
-        self.frames += 1;
+        self.hooks.frame_times.push_back(dt);
+        self.hooks.frames += 1;
         self.check_device_lost();
         self.poll_picked_file();
         self.check_fragment();
@@ -784,7 +671,7 @@ impl eframe::App for MarblingApp {
         self.advance_playback(&ctx);
         self.advance_export(frame, &ctx);
         self.follow_noise();
-        self.controls.clear();
+        self.hooks.controls.clear();
         // The window is cleared to the grey around the sheet and the canvas has no fill,
         // so no canvas pixel is drawn twice: on a software GPU each full-window fill costs
         // milliseconds a frame (docs/BENCHMARKS.md). The side panel's and status bar's
@@ -809,7 +696,7 @@ impl eframe::App for MarblingApp {
             .show_separator_line(false)
             .show(ui, |ui| self.status_bar(ui));
         let clear_color = eframe::App::clear_color(self, &ctx.global_style().visuals);
-        self.panel_cache.substitute(
+        self.panels.panel_cache.substitute(
             &ctx,
             frame.wgpu_render_state().map(Into::into),
             layer,
@@ -819,12 +706,17 @@ impl eframe::App for MarblingApp {
         egui::CentralPanel::default()
             .frame(egui::Frame::central_panel(ui.style()).fill(egui::Color32::TRANSPARENT))
             .show(ui, |ui| self.canvas(ui, frame));
-        if let Some(e) = self.status.lock().ok().and_then(|s| s.error.clone())
-            && self.message.as_ref().is_none_or(|m| m.text != e)
+        if let Some(e) = self
+            .renderer
+            .status
+            .lock()
+            .ok()
+            .and_then(|s| s.error.clone())
+            && self.panels.message.as_ref().is_none_or(|m| m.text != e)
         {
             self.error(e);
         }
-        for e in self.gpu_errors.take() {
+        for e in self.renderer.gpu_errors.take() {
             self.error(e);
         }
         self.autosave(frame, &ctx);
@@ -834,8 +726,8 @@ impl eframe::App for MarblingApp {
     /// Natively eframe calls this on exit: the waiting autosave is written.
     fn save(&mut self, storage: &mut dyn eframe::Storage) {
         let mut u = autosave::unsaved();
-        if self.autosave_pending && u.design.is_none() {
-            u.design = Some(Arc::new(self.history.design().clone()));
+        if self.session.autosave_pending && u.design.is_none() {
+            u.design = Some(Arc::new(self.editor.history.design().clone()));
         }
         u.flush(|key, value| {
             storage.set_string(key, value.to_owned());

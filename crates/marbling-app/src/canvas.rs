@@ -20,27 +20,28 @@ impl MarblingApp {
         let size = [f64::from(rect.width()), f64::from(rect.height())];
         let ppp = f64::from(ui.ctx().pixels_per_point());
         let view = *self
+            .editor
             .view
-            .get_or_insert_with(|| ViewState::fit(&self.shown.design, size).snapped(ppp));
+            .get_or_insert_with(|| ViewState::fit(&self.editor.shown.design, size).snapped(ppp));
         let pointer = response.hover_pos();
         let local = |p: Pos2| [f64::from(p.x - rect.min.x), f64::from(p.y - rect.min.y)];
 
         self.navigate(ui, &response, rect, ppp);
-        let view = self.view.unwrap_or(view);
-        if self.mode == crate::mode::Mode::Marbling {
+        let view = self.editor.view.unwrap_or(view);
+        if self.editor.mode == crate::mode::Mode::Marbling {
             self.drive_tool(ui, &response, rect, &view);
         }
 
         // The design's rectangle on screen, clipped to the canvas.
         let tl = view.to_screen(Point::ZERO);
-        let (w, h) = self.shown.size();
+        let (w, h) = self.editor.shown.size();
         let br = view.to_screen(Point::new(f64::from(w), f64::from(h)));
         let sheet = Rect::from_min_max(
             rect.min + Vec2::new(tl[0] as f32, tl[1] as f32),
             rect.min + Vec2::new(br[0] as f32, br[1] as f32),
         );
         let placement = CanvasPlacement::new(rect, sheet, ppp);
-        if self.gpu {
+        if self.renderer.gpu {
             self.paint_design(ui, frame, rect, placement, &view);
         } else {
             let [r, g, b] = crate::canvas_gpu::SURROUND;
@@ -65,12 +66,12 @@ impl MarblingApp {
         let design_pointer = pointer.map(|p| view.to_design(local(p)));
         // For automation: the sheet's top-left in CSS/physical pixels of the page, and
         // physical pixels per design pixel.
-        self.sheet_on_page = Some([
+        self.hooks.sheet_on_page = Some([
             placement.sheet_px[0],
             placement.sheet_px[1],
             view.zoom * ppp,
         ]);
-        if self.mode == crate::mode::Mode::Marbling {
+        if self.editor.mode == crate::mode::Mode::Marbling {
             overlay::draw(&painter, rect, &view, self, design_pointer);
         }
         let overlay_end = crate::layer_shapes::count(ui.ctx(), painter.layer_id());
@@ -87,7 +88,9 @@ impl MarblingApp {
     /// zoom level samples exactly the points of a CPU render at that scale (whole-pixel
     /// pans keep it snapped).
     fn navigate(&mut self, ui: &egui::Ui, response: &egui::Response, rect: Rect, ppp: f64) {
-        let Some(view) = &mut self.view else { return };
+        let Some(view) = &mut self.editor.view else {
+            return;
+        };
         let before = *view;
         let space = ui.input(|i| i.key_down(egui::Key::Space));
         if response.dragged_by(PointerButton::Middle)
@@ -137,22 +140,22 @@ impl MarblingApp {
         let to_design =
             |p: Pos2| view.to_design([f64::from(p.x - rect.min.x), f64::from(p.y - rect.min.y)]);
         if touches || space {
-            self.active = None;
+            self.editor.active = None;
             return;
         }
         if pressed
             && response.hovered()
             && let Some(p) = pos
         {
-            self.playback = None;
-            self.active = Some(ActiveGesture {
-                tool: self.tool,
+            self.editor.playback = None;
+            self.editor.active = Some(ActiveGesture {
+                tool: self.prefs.tool,
                 gesture: Gesture::new(to_design(p)),
-                seed: self.next_seed,
+                seed: self.editor.next_seed,
             });
-            self.next_seed += 1;
+            self.editor.next_seed += 1;
         }
-        if let Some(active) = &mut self.active {
+        if let Some(active) = &mut self.editor.active {
             if down {
                 if let Some(p) = pos.map(to_design)
                     && active.gesture.end() != p
@@ -163,9 +166,15 @@ impl MarblingApp {
                 ui.ctx().request_repaint();
             }
             if released || !down {
-                let done = self.active.take();
+                let done = self.editor.active.take();
                 if let Some(a) = done {
-                    let ops = ops_for(a.tool, &self.settings, &a.gesture, self.ink, a.seed);
+                    let ops = ops_for(
+                        a.tool,
+                        &self.prefs.settings,
+                        &a.gesture,
+                        self.prefs.ink,
+                        a.seed,
+                    );
                     self.apply(crate::action::Action::Commit(ops));
                 }
             }
@@ -174,8 +183,14 @@ impl MarblingApp {
 
     /// The ops the current gesture would add if released now.
     pub(crate) fn pending_ops(&self) -> Vec<Op> {
-        match &self.active {
-            Some(a) => ops_for(a.tool, &self.settings, &a.gesture, self.ink, a.seed),
+        match &self.editor.active {
+            Some(a) => ops_for(
+                a.tool,
+                &self.prefs.settings,
+                &a.gesture,
+                self.prefs.ink,
+                a.seed,
+            ),
             None => Vec::new(),
         }
     }
@@ -200,31 +215,36 @@ impl MarblingApp {
         ];
         let pending = self.pending_ops();
         let stand_in = self
+            .editor
             .stand_in
-            .filter(|(key, _)| *key == self.key)
+            .filter(|(key, _)| *key == self.editor.key)
             .map(|(_, s)| s);
         let (shown, design_key, single) = match pending.as_slice() {
-            [] => (self.shown.clone(), self.key, None),
-            [op] if !matches!(op, Op::Spray(_)) => (self.shown.clone(), self.key, Some(*op)),
+            [] => (self.editor.shown.clone(), self.editor.key, None),
+            [op] if !matches!(op, Op::Spray(_)) => {
+                (self.editor.shown.clone(), self.editor.key, Some(*op))
+            }
             many => {
                 // Several ops at once (spray, a rake of separate tines): exact render of
                 // the design with them after it, keyed by what they are, so the preview
                 // follows every change of the stroke (the GPU writes only new ops).
                 (
-                    self.shown.then(many),
-                    (self.key.wrapping_mul(1_000_003) ^ fingerprint(many)) | (1 << 63),
+                    self.editor.shown.then(many),
+                    (self.editor.key.wrapping_mul(1_000_003) ^ fingerprint(many)) | (1 << 63),
                     None,
                 )
             }
         };
         let antialias = if single.is_some() {
             let dt = f64::from(ui.input(|i| i.unstable_dt));
-            let samples = self.antialias.samples().len();
-            self.preview_quality.record(dt, samples);
-            self.preview_quality.antialias(self.antialias)
+            let samples = self.prefs.antialias.samples().len();
+            self.renderer.preview_quality.record(dt, samples);
+            self.renderer
+                .preview_quality
+                .antialias(self.prefs.antialias)
         } else {
-            self.preview_quality.end_drag();
-            self.antialias
+            self.renderer.preview_quality.end_drag();
+            self.prefs.antialias
         };
         let request = FrameRequest {
             design_key,
@@ -234,27 +254,27 @@ impl MarblingApp {
             antialias,
             pending: single,
             // A gesture's several ops drawn exactly: the design's cache stands in.
-            stand_in: if design_key == self.key {
+            stand_in: if design_key == self.editor.key {
                 stand_in
             } else {
                 Some(StandIn {
-                    key: self.key,
+                    key: self.editor.key,
                     op: None,
                 })
             },
-            transient: design_key != self.key,
+            transient: design_key != self.editor.key,
         };
         let acting =
             ui.input(|i| !i.events.is_empty() || i.pointer.any_down() || i.pointer.is_moving());
         if acting {
-            self.last_input_s = ui.input(|i| i.time);
+            self.renderer.last_input_s = ui.input(|i| i.time);
         }
-        let idle = ui.input(|i| i.time) - self.last_input_s > IDLE_AFTER_S;
+        let idle = ui.input(|i| i.time) - self.renderer.last_input_s > IDLE_AFTER_S;
         let callback = CanvasCallback {
             shown,
             request,
             placement,
-            status: self.status.clone(),
+            status: self.renderer.status.clone(),
             ctx: ui.ctx().clone(),
             active: !idle,
         };

@@ -30,6 +30,7 @@ pub mod recent;
 pub mod recovery;
 mod refine;
 pub mod shown;
+mod state;
 pub mod style;
 #[cfg(test)]
 mod test_window;

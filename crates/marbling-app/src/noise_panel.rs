@@ -49,7 +49,7 @@ impl NoiseAnalysis {
 impl MarblingApp {
     /// The zoom factor the zoom-independent rule applies now (1 when it is off).
     pub(crate) fn noise_zoom_factor(&self) -> f64 {
-        let s = &self.noise;
+        let s = &self.editor.noise;
         if !s.zoom_independent || !s.kind.has_frequency() {
             return 1.0;
         }
@@ -57,14 +57,14 @@ impl MarblingApp {
             NoiseKind::Paper | NoiseKind::Canvas => 1.0 / s.fiber_length,
             _ => s.frequency,
         };
-        let zoom = self.view.map_or(1.0, |v| v.zoom);
+        let zoom = self.editor.view.map_or(1.0, |v| v.zoom);
         crate::noise_settings::zoom_octave_factor(feature_frequency, zoom)
     }
 
     /// The noise panel.
     pub(crate) fn noise_section(&mut self, ui: &mut egui::Ui) {
         ui.label(RichText::new("Noise").strong());
-        let s = &mut self.noise;
+        let s = &mut self.editor.noise;
         egui::ComboBox::from_label("noise")
             .selected_text(s.kind.type_name())
             .show_ui(ui, |ui| {
@@ -95,11 +95,11 @@ impl MarblingApp {
 
     /// Min/max/mean, the histogram and the spectrum.
     fn noise_readout(&mut self, ui: &mut egui::Ui) {
-        if self.noise_analysis.is_none() {
-            let layer = self.noise.layer(self.noise_zoom_factor());
-            self.noise_analysis = Some(layer.ok().and_then(|l| NoiseAnalysis::of(&l)));
+        if self.editor.noise_analysis.is_none() {
+            let layer = self.editor.noise.layer(self.noise_zoom_factor());
+            self.editor.noise_analysis = Some(layer.ok().and_then(|l| NoiseAnalysis::of(&l)));
         }
-        let Some(Some(a)) = &self.noise_analysis else {
+        let Some(Some(a)) = &self.editor.noise_analysis else {
             ui.label("no statistics for this noise");
             return;
         };
@@ -148,14 +148,14 @@ impl MarblingApp {
                 let link = format!(
                     "{}#{}",
                     crate::platform::base_url(),
-                    marbling_core::share_fragment(&self.shown.design)
+                    marbling_core::share_fragment(&self.editor.shown.design)
                 );
                 ui.ctx().copy_text(link.clone());
                 self.info(format!("noise link copied ({} characters)", link.len()));
             }
         });
         ui.label(RichText::new("Use on the design").strong());
-        let layer = match self.noise.layer(factor) {
+        let layer = match self.editor.noise.layer(factor) {
             Ok(l) => l,
             Err(e) => {
                 ui.label(RichText::new(e).color(egui::Color32::from_rgb(255, 110, 110)));
@@ -168,9 +168,9 @@ impl MarblingApp {
                 .on_hover_text("The design's background becomes this noise, marbled like ink");
             self.control("noise-background", &bg);
             if bg.clicked() {
-                match Palette::named(self.noise.palette_name()) {
+                match Palette::named(self.editor.noise.palette_name()) {
                     Ok(p) => {
-                        let mut surface = self.history.surface();
+                        let mut surface = self.editor.history.surface();
                         surface.0 = Some(NoiseBackground::new(layer.clone(), p));
                         self.set_surface(surface, "noise background");
                     }
@@ -178,7 +178,9 @@ impl MarblingApp {
                 }
             }
         });
-        ui.add(Slider::new(&mut self.noise.grain_strength, 0.0..=1.0).text("grain strength"));
+        ui.add(
+            Slider::new(&mut self.editor.noise.grain_strength, 0.0..=1.0).text("grain strength"),
+        );
         ui.horizontal_wrapped(|ui| {
             let paper = ui
                 .button("Paper grain")
@@ -196,12 +198,12 @@ impl MarblingApp {
                 None
             };
             if let Some(kind) = kind {
-                let strength = self.noise.grain_strength;
+                let strength = self.editor.noise.grain_strength;
                 let overlay = match kind {
                     GrainKind::Paper => Overlay::paper_grain(layer.clone(), strength),
                     GrainKind::Pigment => Overlay::pigment_grain(layer.clone(), strength),
                 };
-                let mut surface = self.history.surface();
+                let mut surface = self.editor.history.surface();
                 surface.1.retain(|o| o.kind != kind);
                 surface.1.push(overlay);
                 self.set_surface(surface, kind.name());
@@ -211,7 +213,7 @@ impl MarblingApp {
 
     /// The design's noise background and overlays, with a way to remove them.
     pub(crate) fn surface_section(&mut self, ui: &mut egui::Ui) {
-        let (background, overlays) = self.history.surface();
+        let (background, overlays) = self.editor.history.surface();
         if background.is_none() && overlays.is_empty() {
             return;
         }

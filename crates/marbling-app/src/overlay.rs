@@ -39,8 +39,8 @@ pub fn draw(
     app: &MarblingApp,
     pointer: Option<Point>,
 ) {
-    let s = &app.settings;
-    let (tool, a, b, held) = match &app.active {
+    let s = &app.prefs.settings;
+    let (tool, a, b, held) = match &app.editor.active {
         Some(g) => (
             g.tool,
             g.gesture.start,
@@ -48,13 +48,13 @@ pub fn draw(
             g.gesture.held_seconds,
         ),
         None => match pointer {
-            Some(p) => (app.tool, p, p, 0.0),
+            Some(p) => (app.prefs.tool, p, p, 0.0),
             None => return,
         },
     };
     let z = view.zoom as f32;
     let at = |p: Point| screen(rect, view, p);
-    let dragging = app.active.is_some();
+    let dragging = app.editor.active.is_some();
     let drag = b - a;
     // Direction of motion: the drag, or (hovering) to the right.
     let m = if drag.hypot() >= 1.0 {
@@ -114,7 +114,7 @@ pub fn draw(
         }
         ToolKind::Circular | ToolKind::Vortex => {
             let r = if dragging {
-                app.active.as_ref().map_or(0.0, |g| {
+                app.editor.active.as_ref().map_or(0.0, |g| {
                     g.gesture
                         .path
                         .iter()

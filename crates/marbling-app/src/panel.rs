@@ -8,7 +8,6 @@ use crate::export::ExportSize;
 use crate::gallery::EXAMPLES;
 use crate::mode::Mode;
 use crate::platform;
-use crate::playback::Playback;
 use crate::tools::ToolKind;
 use egui::{Color32, RichText, Slider};
 use marbling_core::{Antialias, Rgb8};
@@ -20,7 +19,7 @@ fn color32(c: Rgb8) -> Color32 {
 impl MarblingApp {
     pub(crate) fn side_panel(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
         ui.horizontal(|ui| {
-            let mut mode = self.mode;
+            let mut mode = self.editor.mode;
             let m = ui.selectable_value(
                 &mut mode,
                 Mode::Marbling,
@@ -29,13 +28,13 @@ impl MarblingApp {
             self.control("mode-marbling", &m);
             let n = ui.selectable_value(&mut mode, Mode::Noise, RichText::new("Noise").heading());
             self.control("mode-noise", &n);
-            self.set_mode(mode);
+            self.apply(Action::SetMode(mode));
         });
         self.file_section(ui);
         ui.separator();
         self.export_section(ui, _frame);
         ui.separator();
-        if self.mode == Mode::Noise {
+        if self.editor.mode == Mode::Noise {
             self.noise_section(ui);
             return;
         }
@@ -63,12 +62,12 @@ impl MarblingApp {
             let open = ui.button("Open…").on_hover_text("Open a design JSON file");
             self.control("open", &open);
             if open.clicked() {
-                platform::pick_file(self.pick.clone(), ui.ctx().clone());
+                platform::pick_file(self.panels.pick.clone(), ui.ctx().clone());
             }
             let save = ui.button("Save JSON");
             self.control("save-json", &save);
             if save.clicked() {
-                let json = self.history.design().to_json_pretty();
+                let json = self.editor.history.design().to_json_pretty();
                 match platform::save_file("design.json", "application/json", json.as_bytes()) {
                     Ok(()) => self.info("design saved as JSON"),
                     Err(e) => self.error(e),
@@ -81,7 +80,7 @@ impl MarblingApp {
             if copy.clicked() {
                 let link = self.share_link();
                 if link.len() > marbling_core::MAX_LINK_CHARS {
-                    let json = self.history.design().to_json_pretty();
+                    let json = self.editor.history.design().to_json_pretty();
                     let saved =
                         platform::save_file("design.json", "application/json", json.as_bytes());
                     self.error(format!(
@@ -97,7 +96,7 @@ impl MarblingApp {
                 }
                 if let Some((_, fragment)) = link.split_once('#') {
                     platform::set_fragment(fragment);
-                    self.last_fragment = Some(fragment.to_owned());
+                    self.editor.last_fragment = Some(fragment.to_owned());
                 }
                 ui.ctx().copy_text(link.clone());
                 self.info(format!("link copied ({} characters)", link.len()));
@@ -106,13 +105,13 @@ impl MarblingApp {
         ui.horizontal(|ui| {
             ui.label("New sheet");
             ui.add(
-                egui::DragValue::new(&mut self.new_size[0])
+                egui::DragValue::new(&mut self.panels.new_size[0])
                     .range(1..=marbling_core::MAX_SIDE)
                     .suffix(" px"),
             );
             ui.label("×");
             ui.add(
-                egui::DragValue::new(&mut self.new_size[1])
+                egui::DragValue::new(&mut self.panels.new_size[1])
                     .range(1..=marbling_core::MAX_SIDE)
                     .suffix(" px"),
             );
@@ -124,24 +123,24 @@ impl MarblingApp {
         ui.horizontal_wrapped(|ui| {
             ui.label("PNG size");
             for size in ExportSize::CHOICES {
-                let r = ui.selectable_value(&mut self.export_size, size, size.label());
+                let r = ui.selectable_value(&mut self.panels.export_size, size, size.label());
                 self.control(size.control_name(), &r);
             }
         });
-        let design = self.history.design();
-        let scale = self.export_size.scale(design);
+        let design = self.editor.history.design();
+        let scale = self.panels.export_size.scale(design);
         let size_text = match marbling_core::output_size(design, scale) {
             Ok((w, h)) => format!("{w} × {h} px"),
             Err(e) => e.to_string(),
         };
         ui.horizontal_wrapped(|ui| {
-            if let Some((export, _)) = &self.export {
+            if let Some((export, _)) = &self.renderer.export {
                 let (w, h) = export.size();
                 ui.label(format!("rendering {w} × {h}…"));
                 let cancel = ui.button("Cancel");
                 self.control("export-cancel", &cancel);
                 if cancel.clicked() {
-                    self.export = None;
+                    self.renderer.export = None;
                     self.info("export cancelled");
                 }
             } else {
@@ -168,12 +167,12 @@ impl MarblingApp {
         ui.label(RichText::new("Tool").strong());
         ui.horizontal_wrapped(|ui| {
             for (i, t) in ToolKind::ALL.into_iter().enumerate() {
-                ui.selectable_value(&mut self.tool, t, t.label())
+                ui.selectable_value(&mut self.prefs.tool, t, t.label())
                     .on_hover_text(format!("key {}", i + 1));
             }
         });
-        let s = &mut self.settings;
-        match self.tool {
+        let s = &mut self.prefs.settings;
+        match self.prefs.tool {
             ToolKind::Drop => {
                 ui.label("Click to drop; hold to grow.");
                 ui.add(
@@ -261,30 +260,30 @@ impl MarblingApp {
             }
         }
         egui::ComboBox::from_label("antialiasing")
-            .selected_text(self.antialias.name())
+            .selected_text(self.prefs.antialias.name())
             .show_ui(ui, |ui| {
                 for a in Antialias::ALL {
-                    ui.selectable_value(&mut self.antialias, a, a.name());
+                    ui.selectable_value(&mut self.prefs.antialias, a, a.name());
                 }
             });
     }
 
     fn ink_section(&mut self, ui: &mut egui::Ui) {
         ui.label(RichText::new("Ink").strong());
-        let before = self.palette;
+        let before = self.prefs.palette;
         egui::ComboBox::from_label("palette")
-            .selected_text(PALETTES[self.palette].name)
+            .selected_text(PALETTES[self.prefs.palette].name)
             .show_ui(ui, |ui| {
                 for (i, p) in PALETTES.iter().enumerate() {
-                    ui.selectable_value(&mut self.palette, i, p.name);
+                    ui.selectable_value(&mut self.prefs.palette, i, p.name);
                 }
             });
-        if self.palette != before {
-            self.ink = PALETTES[self.palette].inks[0];
+        if self.prefs.palette != before {
+            self.prefs.ink = PALETTES[self.prefs.palette].inks[0];
         }
         ui.horizontal_wrapped(|ui| {
-            for &c in PALETTES[self.palette].inks {
-                let selected = c == self.ink;
+            for &c in PALETTES[self.prefs.palette].inks {
+                let selected = c == self.prefs.ink;
                 let (rect, resp) =
                     ui.allocate_exact_size(egui::vec2(24.0, 24.0), egui::Sense::click());
                 ui.painter().rect_filled(rect, 4.0, color32(c));
@@ -297,17 +296,17 @@ impl MarblingApp {
                     );
                 }
                 if resp.on_hover_text(c.to_string()).clicked() {
-                    self.ink = c;
+                    self.prefs.ink = c;
                 }
             }
         });
         ui.horizontal(|ui| {
-            let mut rgb = [self.ink.r, self.ink.g, self.ink.b];
+            let mut rgb = [self.prefs.ink.r, self.prefs.ink.g, self.prefs.ink.b];
             if egui::color_picker::color_edit_button_srgb(ui, &mut rgb).changed() {
-                self.ink = Rgb8::new(rgb[0], rgb[1], rgb[2]);
+                self.prefs.ink = Rgb8::new(rgb[0], rgb[1], rgb[2]);
             }
             ui.label("ink");
-            let bg = self.history.design().background;
+            let bg = self.editor.history.design().background;
             let mut rgb = [bg.r, bg.g, bg.b];
             let paper = egui::color_picker::color_edit_button_srgb(ui, &mut rgb);
             self.control("paper-color", &paper);
@@ -322,38 +321,36 @@ impl MarblingApp {
         ui.label(RichText::new("History").strong());
         ui.horizontal(|ui| {
             let undo = ui
-                .add_enabled(self.history.can_undo(), egui::Button::new("Undo"))
+                .add_enabled(self.editor.history.can_undo(), egui::Button::new("Undo"))
                 .on_hover_text("Ctrl/Cmd+Z: takes the last gesture back");
             self.control("undo", &undo);
             if undo.clicked() {
                 self.apply(Action::Undo);
             }
             let redo = ui
-                .add_enabled(self.history.can_redo(), egui::Button::new("Redo"))
+                .add_enabled(self.editor.history.can_redo(), egui::Button::new("Redo"))
                 .on_hover_text("Ctrl/Cmd+Shift+Z");
             self.control("redo", &redo);
             if redo.clicked() {
                 self.apply(Action::Redo);
             }
-            let playing = self.playback.is_some();
+            let playing = self.editor.playback.is_some();
             let play = ui.add_enabled(
-                !self.history.design().ops.is_empty(),
+                !self.editor.history.design().ops.is_empty(),
                 egui::Button::new(if playing { "Stop" } else { "Play" }),
             );
             self.control("play", &play);
             if play.clicked() {
-                self.apply(Action::View(None));
-                self.playback = (!playing).then(Playback::start);
-                self.refresh();
+                self.apply(Action::Play(!playing));
             }
         });
         ui.add(
-            Slider::new(&mut self.play_speed, 0.5..=200.0)
+            Slider::new(&mut self.editor.play_speed, 0.5..=200.0)
                 .text("ops/s")
                 .logarithmic(true),
         );
-        let n = self.history.steps().len();
-        let shown = self.history.shown_steps();
+        let n = self.editor.history.steps().len();
+        let shown = self.editor.history.shown_steps();
         let mut clicked = None;
         let mut rows_drawn = Vec::new();
         egui::ScrollArea::vertical()
@@ -365,7 +362,7 @@ impl MarblingApp {
                     let label = if i == 0 {
                         "start".to_owned()
                     } else {
-                        format!("{i}. {}", self.history.steps()[i - 1].label)
+                        format!("{i}. {}", self.editor.history.steps()[i - 1].label)
                     };
                     let r = ui.selectable_label(i == shown, label);
                     if r.clicked() {
@@ -380,7 +377,7 @@ impl MarblingApp {
         if let Some(k) = clicked {
             self.apply(Action::View(Some(k)));
         }
-        if self.history.is_viewing_earlier() {
+        if self.editor.history.is_viewing_earlier() {
             ui.label(
                 RichText::new(format!(
                     "Showing step {shown} of {n}. Editing now starts a new branch; the later steps stay restorable below."
@@ -389,6 +386,7 @@ impl MarblingApp {
             );
         }
         let branches: Vec<String> = self
+            .editor
             .history
             .branches()
             .iter()
@@ -409,7 +407,7 @@ impl MarblingApp {
     }
 
     fn recent_section(&mut self, ui: &mut egui::Ui) {
-        let count = self.recent.entries.len();
+        let count = self.session.recent.entries.len();
         let header = egui::CollapsingHeader::new(format!("Recent designs ({count})"))
             .id_salt("recent")
             .show(ui, |ui| {
@@ -424,20 +422,22 @@ impl MarblingApp {
                 let mut open = None;
                 let mut made_one = false;
                 for i in 0..count {
-                    let e = self.recent.entries[i].clone();
-                    let thumb = match self.recent_thumbnails.get(&e.fragment) {
+                    let e = self.session.recent.entries[i].clone();
+                    let thumb = match self.panels.recent_thumbnails.get(&e.fragment) {
                         Some(t) => t.clone(),
                         None if !made_one => {
                             made_one = true;
-                            let t =
-                                crate::thumbnails::recent_thumbnail(&self.recent, i).map(|img| {
+                            let t = crate::thumbnails::recent_thumbnail(&self.session.recent, i)
+                                .map(|img| {
                                     ui.ctx().load_texture(
                                         format!("recent {i}"),
                                         img,
                                         egui::TextureOptions::LINEAR,
                                     )
                                 });
-                            self.recent_thumbnails.insert(e.fragment.clone(), t.clone());
+                            self.panels
+                                .recent_thumbnails
+                                .insert(e.fragment.clone(), t.clone());
                             t
                         }
                         None => {
@@ -516,7 +516,7 @@ impl MarblingApp {
 
     fn gallery_section(&mut self, ui: &mut egui::Ui) {
         ui.label(RichText::new("Gallery").strong());
-        if self.thumbnails.is_none() {
+        if self.panels.thumbnails.is_none() {
             match crate::thumbnails::atlas(&EXAMPLES) {
                 Ok(atlas) => {
                     let texture = ui.ctx().load_texture(
@@ -524,7 +524,7 @@ impl MarblingApp {
                         atlas.image,
                         egui::TextureOptions::LINEAR,
                     );
-                    self.thumbnails = Some((texture, atlas.uv));
+                    self.panels.thumbnails = Some((texture, atlas.uv));
                 }
                 Err(e) => {
                     ui.label(e);
@@ -532,7 +532,7 @@ impl MarblingApp {
                 }
             }
         }
-        let Some((texture, uvs)) = &self.thumbnails else {
+        let Some((texture, uvs)) = &self.panels.thumbnails else {
             return;
         };
         const THUMB: egui::Vec2 = egui::vec2(80.0, 50.0);
@@ -582,26 +582,26 @@ impl MarblingApp {
 
     pub(crate) fn status_bar(&mut self, ui: &mut egui::Ui) {
         ui.horizontal(|ui| {
-            let (w, h) = self.shown.size();
+            let (w, h) = self.editor.shown.size();
             ui.label(format!(
                 "{w}×{h} · {} ops · {}",
-                self.shown.op_count(),
-                self.backend
+                self.editor.shown.op_count(),
+                self.renderer.backend
             ));
-            if self.preview_quality.reduced() {
+            if self.renderer.preview_quality.reduced() {
                 ui.label("· preview 1 sample/px").on_hover_text(
                     "Frames came slower than 30 per second while dragging, so the live \
                      preview takes one sample per pixel; released ops are still rendered \
                      exactly with the chosen antialiasing.",
                 );
             }
-            if let Some(v) = &self.view {
+            if let Some(v) = &self.editor.view {
                 ui.label(format!("zoom {:.0} %", v.zoom * 100.0));
                 if ui.small_button("fit").clicked() {
-                    self.view = None;
+                    self.editor.view = None;
                 }
             }
-            if let Some(m) = &self.message {
+            if let Some(m) = &self.panels.message {
                 let color = if m.error {
                     Color32::from_rgb(255, 110, 110)
                 } else {

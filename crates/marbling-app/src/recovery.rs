@@ -8,8 +8,6 @@
 //! relies on the autosave (written after every op) instead.
 
 use crate::History;
-use crate::tools::{ToolKind, ToolSettings};
-use marbling_core::{Antialias, Rgb8};
 use std::cell::RefCell;
 use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, AtomicU32, Ordering};
@@ -19,16 +17,8 @@ use std::sync::atomic::{AtomicBool, AtomicU32, Ordering};
 pub struct ParkedState {
     /// The design with its undo/redo stacks.
     pub history: History,
-    /// The selected tool.
-    pub tool: ToolKind,
-    /// The tools' parameters.
-    pub settings: ToolSettings,
-    /// Index into [`crate::PALETTES`].
-    pub palette: usize,
-    /// The current ink.
-    pub ink: Rgb8,
-    /// Antialiasing of exact frames.
-    pub antialias: Antialias,
+    /// Tool, tool settings, palette, ink and antialiasing.
+    pub prefs: crate::prefs::Prefs,
     /// The fragment already loaded (so the successor does not reload the link).
     pub last_fragment: Option<String>,
 }
@@ -128,7 +118,8 @@ impl LostFlag {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use marbling_core::Design;
+    use crate::tools::{ToolKind, ToolSettings};
+    use marbling_core::{Antialias, Design, Rgb8};
 
     #[test]
     fn parked_state_is_handed_over_once_with_one_restart() {
@@ -136,11 +127,13 @@ mod tests {
         assert!(!take_restart_request());
         park(ParkedState {
             history: history.clone(),
-            tool: ToolKind::Rake,
-            settings: ToolSettings::default(),
-            palette: 2,
-            ink: Rgb8::new(9, 9, 9),
-            antialias: Antialias::Grid4,
+            prefs: crate::prefs::Prefs {
+                tool: ToolKind::Rake,
+                settings: ToolSettings::default(),
+                palette: 2,
+                ink: Rgb8::new(9, 9, 9),
+                antialias: Antialias::Grid4,
+            },
             last_fragment: None,
         });
         let before = recoveries();
@@ -161,7 +154,7 @@ mod tests {
         assert!(!give_up());
         let parked = take_parked().expect("parked");
         assert_eq!(parked.history, history);
-        assert_eq!(parked.tool, ToolKind::Rake);
+        assert_eq!(parked.prefs.tool, ToolKind::Rake);
         assert!(take_parked().is_none());
     }
 

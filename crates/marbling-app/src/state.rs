@@ -1,0 +1,205 @@
+//! The playground's state, in parts that change for different reasons (as the egui demo
+//! structures its apps): the document being edited ([`Editor`]), what is kept in the
+//! page's storage ([`Session`]), the GPU renderer's side ([`Renderer`]), the automation
+//! hooks ([`Hooks`]) and the panels' own state ([`Panels`]); the tool preferences are
+//! [`crate::prefs::Prefs`]. Everything that changes the document goes through
+//! `MarblingApp::apply` (src/action.rs).
+
+use crate::app::{ActiveGesture, Message, NEW_SIZE};
+use crate::canvas_gpu::{CanvasStatus, StandIn};
+use crate::export::{ExportSize, PngExport};
+use crate::gpu_errors::GpuErrors;
+use crate::mode::Mode;
+use crate::noise_panel::NoiseAnalysis;
+use crate::noise_settings::NoiseSettings;
+use crate::platform::PickSlot;
+use crate::playback::Playback;
+use crate::recovery::LostFlag;
+use crate::shown::Shown;
+use crate::view::ViewState;
+use crate::{History, prefs::Prefs, recent::Recent};
+use marbling_core::Design;
+use std::borrow::Cow;
+use std::collections::{HashMap, VecDeque};
+use std::sync::{Arc, Mutex};
+
+/// The document being edited and how it is shown: history, view, gesture, playback, and
+/// the noise playground's parameters.
+pub struct Editor {
+    /// The design's history (the design is its current state).
+    pub history: History,
+    /// Bumped whenever the shown design changes (the GPU brings its upload up to date).
+    pub key: u64,
+    /// What may stand in for the shown design (`.0` = [`Self::key`]) while its exact
+    /// frame is drawn: the design before the last edit, and the op the edit added.
+    pub stand_in: Option<(u64, StandIn)>,
+    /// The design on the canvas (the history, a viewed step or a playback frame).
+    pub shown: Shown,
+    /// `None` until the canvas size is known (then the design is fitted).
+    pub view: Option<ViewState>,
+    /// The tool being dragged.
+    pub active: Option<ActiveGesture>,
+    /// Seed of the next gesture's random choices.
+    pub next_seed: u64,
+    /// Play in progress.
+    pub playback: Option<Playback>,
+    /// Playback speed, ops per second.
+    pub play_speed: f64,
+    /// True while the design is the start-up example nobody has touched (a link then
+    /// replaces it instead of stacking on it).
+    pub pristine: bool,
+    /// The address bar's fragment last loaded.
+    pub last_fragment: Option<String>,
+    /// Marbling or the noise playground.
+    pub mode: Mode,
+    /// The noise playground's parameters.
+    pub noise: NoiseSettings,
+    /// The noise (and zoom factor) the canvas shows, to notice changes.
+    pub noise_shown: Option<(NoiseSettings, f64)>,
+    /// Statistics of the shown noise (`Some(None)`: none can be computed).
+    pub noise_analysis: Option<Option<NoiseAnalysis>>,
+}
+
+impl Editor {
+    /// Editing `design`, fitted to the canvas on the first frame.
+    pub fn new(design: Design) -> Self {
+        let history = History::new(design);
+        Self {
+            shown: Shown::all(history.design_shared().clone()),
+            history,
+            key: 0,
+            stand_in: None,
+            view: None,
+            active: None,
+            next_seed: 1,
+            playback: None,
+            play_speed: 8.0,
+            pristine: false,
+            last_fragment: None,
+            mode: Mode::Marbling,
+            noise: NoiseSettings::default(),
+            noise_shown: None,
+            noise_analysis: None,
+        }
+    }
+}
+
+/// What is kept in the page's storage, and what is owed to it.
+pub struct Session {
+    /// True when the design changed since the last autosave.
+    pub autosave_pending: bool,
+    /// When the autosave was last written, ms since 1970.
+    pub last_autosave_ms: f64,
+    /// Storage writes waiting for a frame (key, value).
+    pub pending_writes: Vec<(&'static str, String)>,
+    /// The preferences last stored, and when.
+    pub stored_prefs: (Option<Prefs>, f64),
+    /// *Recent designs*.
+    pub recent: Recent,
+    /// True when the recent list must be written.
+    pub recent_pending: bool,
+}
+
+impl Default for Session {
+    fn default() -> Self {
+        Self {
+            autosave_pending: false,
+            last_autosave_ms: f64::NEG_INFINITY,
+            pending_writes: Vec::new(),
+            stored_prefs: (None, f64::NEG_INFINITY),
+            recent: Recent::default(),
+            recent_pending: false,
+        }
+    }
+}
+
+/// The GPU renderer's side: what the canvas reports back, device loss and errors, the
+/// live preview's quality, a PNG export in progress.
+pub struct Renderer {
+    /// Shared with the canvas's paint callback.
+    pub status: Arc<Mutex<CanvasStatus>>,
+    /// `webgpu`, `webgl2`, or the native backend's name.
+    pub backend: String,
+    /// False when no wgpu render state exists (the canvas then says so).
+    pub gpu: bool,
+    /// Raised when the GPU device is lost.
+    pub lost: LostFlag,
+    /// GPU errors no error scope caught (shown instead of wgpu's panic).
+    pub gpu_errors: GpuErrors,
+    /// True once the state is parked for the renderer's restart.
+    pub parked: bool,
+    /// Samples per pixel of the live preview, from how fast its frames come.
+    pub preview_quality: crate::preview_quality::PreviewQuality,
+    /// A PNG export in progress and the file name it will get.
+    pub export: Option<(PngExport, String)>,
+    /// When the user last acted on the page (egui's clock, seconds): the canvas refines
+    /// at its idle pace a while after.
+    pub last_input_s: f64,
+}
+
+impl Renderer {
+    /// A renderer on `backend` (`gpu`: whether a wgpu render state exists).
+    pub fn new(backend: String, gpu: bool) -> Self {
+        Self {
+            status: Arc::default(),
+            backend,
+            gpu,
+            lost: LostFlag::default(),
+            gpu_errors: GpuErrors::default(),
+            parked: false,
+            preview_quality: Default::default(),
+            export: None,
+            last_input_s: 0.0,
+        }
+    }
+}
+
+/// The `<body>` automation hooks and what they are computed from.
+#[derive(Default)]
+pub struct Hooks {
+    /// The attributes as last written.
+    pub written: Vec<(&'static str, Option<String>)>,
+    /// Where this frame drew the panel's main controls (for `data-controls`).
+    pub controls: Vec<(Cow<'static, str>, egui::Rect)>,
+    /// Recent frame intervals, seconds (for `data-frame-ms`).
+    pub frame_times: VecDeque<f64>,
+    /// Frames drawn since start (for `data-frames`).
+    pub frames: u64,
+    /// The sheet's top-left corner on the page (physical pixels) and the scale.
+    pub sheet_on_page: Option<[f64; 3]>,
+}
+
+/// The panels' own state: the status line, file picks, thumbnails, the panel cache and
+/// the sizes chosen for New and Export.
+pub struct Panels {
+    /// A line shown in the status bar; errors also go to `data-error`.
+    pub message: Option<Message>,
+    /// Where an asynchronous file pick delivers.
+    pub pick: PickSlot,
+    /// The gallery's thumbnail atlas and each example's rectangle in it (see
+    /// src/thumbnails.rs), made on first show.
+    pub thumbnails: Option<(egui::TextureHandle, Vec<egui::Rect>)>,
+    /// Thumbnails of recent designs, by share fragment (made on first show; `None`: too
+    /// large to draw one quickly, or unreadable).
+    pub recent_thumbnails: HashMap<String, Option<egui::TextureHandle>>,
+    /// The side panel's last rendering, shown while the panel does not change.
+    pub panel_cache: crate::panel_cache::PanelCache,
+    /// The size of a new sheet, design pixels.
+    pub new_size: [u32; 2],
+    /// The size Export PNG renders at.
+    pub export_size: ExportSize,
+}
+
+impl Default for Panels {
+    fn default() -> Self {
+        Self {
+            message: None,
+            pick: PickSlot::default(),
+            thumbnails: None,
+            recent_thumbnails: HashMap::new(),
+            panel_cache: Default::default(),
+            new_size: NEW_SIZE,
+            export_size: ExportSize::Screen,
+        }
+    }
+}
