@@ -50,13 +50,18 @@ try {
     }
     const frames = await page.evaluate(() => window.frameTimes);
     // Gaps from the design's first frame on (the page's own start-up is not ours).
-    let worst = 0;
-    let count = 0;
+    const gaps = [];
     for (let i = 1; i < frames.length; i++) {
       if (frames[i] < loadedAt) continue;
-      worst = Math.max(worst, frames[i] - frames[i - 1]);
-      count++;
+      gaps.push([frames[i] - frames[i - 1], (frames[i - 1] - loadedAt) / 1000]);
     }
+    const count = gaps.length;
+    const sorted = gaps.map(([g]) => g).sort((x, y) => x - y);
+    const worst = sorted.at(-1) ?? 0;
+    const median = sorted[Math.floor(sorted.length / 2)] ?? 0;
+    // The three longest gaps and when they began (s after the design's first frame).
+    const longest = [...gaps].sort((x, y) => y[0] - x[0]).slice(0, 3)
+      .map(([g, at]) => `${g.toFixed(0)} ms at ${at.toFixed(1)} s`).join(', ');
     const work = await attr(page, 'data-gpu-work');
     const progress = await attr(page, 'data-progress');
     const tiles = /tiles=(\d+)/.exec(work ?? '')?.[1];
@@ -65,7 +70,8 @@ try {
     console.log(`${backend}, ${ops} ops, 800×600 in 1280×900: loaded ${loadedS.toFixed(1)} s, exact frame ${fmt(readyS)}`
       + `${readyS === null ? ` (progress ${progress})` : ''}, preview cache ${fmt(previewS)}, ${tiles} tiles `
       + `(last frame budget ${units} op-samples), `
-      + `${count} animation frames, worst gap ${worst.toFixed(0)} ms`);
+      + `${count} animation frames, median interval ${median.toFixed(0)} ms, worst gap ${worst.toFixed(0)} ms`
+      + ` (longest: ${longest})`);
     await context.close();
     fs.rmSync(file, { force: true });
   }
