@@ -39,7 +39,7 @@ pub use render::{
 pub use sampling::Antialias;
 pub use share::{
     MAX_LINK_CHARS, MAX_LINK_JSON_BYTES, ShareError, decode_share, encode_share_payload,
-    share_fragment,
+    encode_share_payload_fast, share_fragment,
 };
 pub use surface::{
     GrainKind, MAX_PALETTE_STOPS, NoiseBackground, NoiseLayer, OVERLAY_TYPES, Overlay, Palette,
