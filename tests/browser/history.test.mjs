@@ -1,8 +1,9 @@
 // The editor's history as a user meets it, in Chromium on WebGL2 (the history does not
 // depend on the GPU path): a gesture is one undo, its preview follows the drag, a
 // linked design keeps its edits across a reload, New and the paper colour are undoable,
-// editing an earlier step keeps the later ones restorable, and replaced designs are in
-// Recent designs. One browser for all of them; a 5-op design keeps each frame cheap.
+// editing an earlier step keeps the later ones restorable, replaced designs are in
+// Recent designs, and an edit past the op cap is refused without losing anything. One
+// browser for all of them; a 5-op design keeps each frame cheap.
 import { after, before, describe, test } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
@@ -188,6 +189,58 @@ describe('history on webgl2', () => {
     await waitOps(page, N + 1);
     await page.screenshot({ path: path.join(SHOTS, 'history-recent-webgl2.png'), timeout: READY_MS });
     assert.deepEqual(errors, []);
+    await context.close();
+  });
+
+  test('at the op cap a stroke is refused with a message; the design and its autosave stay', async () => {
+    // 99,995 spray droplets, opened as a file (too long for a link): a stroke of more
+    // than 5 droplets would pass the 100,000-op cap. The exact frame of so many ops never
+    // completes on SwiftShader, so only data-ops is awaited, never data-ready.
+    const CAP = 100000;
+    const have = CAP - 5;
+    let seed = 1;
+    const rnd = () => (seed = (seed * 16807) % 2147483647) / 2147483647;
+    const inks = ['#1d3557', '#e63946', '#2a9d8f'];
+    const ops = Array.from({ length: have }, (_, i) => ({
+      type: 'spray', center: [Math.round(rnd() * 30000) / 100, Math.round(rnd() * 20000) / 100], radius: 1, color: inks[i % 3],
+    }));
+    const file = path.join(os.tmpdir(), `marbling-cap-${process.pid}.json`);
+    fs.writeFileSync(file, JSON.stringify({ ...SMALL, ops }));
+    const context = await browser.newContext({ viewport: { width: 900, height: 640 }, deviceScaleFactor: 1 });
+    await context.addInitScript((p) => localStorage.setItem('marbling.prefs.v1', p), prefs('spray', { spray_density: 2 }));
+    const page = await context.newPage();
+    const errors = [];
+    page.on('pageerror', (e) => errors.push(String(e)));
+    await page.goto(site.url);
+    await page.waitForFunction(() => document.body.dataset.ops !== undefined, null, { timeout: READY_MS });
+    const [chooser] = await Promise.all([page.waitForEvent('filechooser', { timeout: READY_MS }), clickControl(page, 'open')]);
+    await chooser.setFiles(file);
+    const opsAre = (n) => page.waitForFunction((k) => document.body.dataset.ops === String(k), n, { timeout: READY_MS });
+    await opsAre(have);
+    // The autosave of so big a design fits in the page's storage (it is compressed).
+    const autosaved = () => page.evaluate(() => ['a', 'b'].map((k) => localStorage.getItem(`marbling.autosave.${k}`) ?? '').sort((x, y) => y.length - x.length)[0].length);
+    await page.waitForFunction(() => ['a', 'b'].some((k) => (localStorage.getItem(`marbling.autosave.${k}`) ?? '').length > 500000), null, { timeout: READY_MS });
+    console.log(`history: the ${have}-op design autosaved in ${await autosaved()} characters (its JSON: ${fs.statSync(file).size} bytes)`);
+    assert.equal(await attr(page, 'data-error'), null);
+
+    const s = await sheet(page);
+    const p = (x, y) => ({ x: s.x + x * s.scale, y: s.y + y * s.scale });
+    await page.mouse.move(p(30, 40).x, p(30, 40).y);
+    await page.mouse.down();
+    for (let i = 1; i <= 6; i++) await page.mouse.move(p(30 + 40 * i, 40 + 10 * i).x, p(30 + 40 * i, 40 + 10 * i).y);
+    await page.mouse.up();
+    await page.waitForFunction(() => document.body.dataset.error !== undefined, null, { timeout: READY_MS });
+    const error = await attr(page, 'data-error');
+    console.log(`history: at the cap: ${error}`);
+    assert.match(error, new RegExp(`^the design has ${have} ops and this adds \\d+: more than ${CAP} cannot be saved or shared, so nothing was added$`));
+    assert.equal(await attr(page, 'data-ops'), String(have));
+
+    // Nothing was overwritten: a reload restores the design from its autosave.
+    await page.reload();
+    await opsAre(have);
+    assert.equal(await attr(page, 'data-error'), null);
+    assert.deepEqual(errors, []);
+    fs.rmSync(file, { force: true });
     await context.close();
   });
 });

@@ -1,10 +1,14 @@
 //! Export PNG: an exact render of the design at a print size on the app's own GPU
-//! device, drawn tile by tile and read back asynchronously (a browser cannot block on
-//! the GPU), one tile in flight at a time, then PNG-encoded and handed to the user.
+//! device, read back tile by tile asynchronously (a browser cannot block on the GPU),
+//! one tile in flight at a time, then PNG-encoded and handed to the user. Each tile is
+//! drawn in parts over successive frames, as much a frame as keeps frames at
+//! [`IDLE_FRAME_MS`] (the canvas's [`FrameBudget`]), so no submission holds the GPU for
+//! long and the page stays live.
 //!
 //! The pixels are those of `marbling render --backend gpu` at the same scale: the same
 //! WGSL pass, sample positions and sRGB handling, so an export matches the CLI.
 
+use crate::refine::{FrameBudget, IDLE_FRAME_MS, Refinement, per_pixel};
 use marbling_core::{Antialias, Design, RgbaImage, output_size};
 use marbling_gpu::{ExactRenderer, PreparedDesign, RenderTarget, View, copy_to_buffer, tile_grid};
 use std::sync::{Arc, Mutex};
@@ -12,8 +16,7 @@ use std::sync::{Arc, Mutex};
 /// Format of the export tiles: the shader sRGB-encodes into it itself, like the CPU.
 const EXPORT_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8Unorm;
 
-/// Tile side, pixels: small enough that no single draw of a 10,000-op design keeps a
-/// browser's GPU busy long enough to be reset, large enough to need few draws.
+/// Side of the tiles read back, pixels (each drawn in parts within the frame budget).
 pub const EXPORT_TILE_SIDE: u32 = 1024;
 
 /// The output sizes offered by Export PNG.
@@ -99,8 +102,15 @@ pub struct PngExport {
     antialias: Antialias,
     tiles: Vec<(u32, u32, u32, u32)>,
     next: usize,
+    /// The tile being drawn, its texture and the parts drawn so far.
+    drawing: Option<((u32, u32, u32, u32), RenderTarget, Refinement)>,
     in_flight: Option<InFlight>,
     image: Option<RgbaImage>,
+    budget: FrameBudget,
+    /// When the last step drew, ms (the interval to the next steers the budget).
+    last_draw_ms: Option<f64>,
+    /// Parts drawn (submissions), for tests.
+    parts: usize,
 }
 
 impl PngExport {
@@ -126,8 +136,12 @@ impl PngExport {
             antialias,
             tiles: tile_grid(width, height, side),
             next: 0,
+            drawing: None,
             in_flight: None,
             image: Some(RgbaImage::filled(width, height, [0, 0, 0, 255])),
+            budget: FrameBudget::default(),
+            last_draw_ms: None,
+            parts: 0,
         })
     }
 
@@ -143,8 +157,14 @@ impl PngExport {
         self.image.as_ref().map_or((0, 0), |i| (i.width, i.height))
     }
 
-    /// Advances the export without blocking: collects a tile whose read-back finished
-    /// and submits the next one. Call once per frame until it returns `Finished`.
+    /// Submissions drawn so far (each a part of a tile within the frame budget).
+    pub fn parts(&self) -> usize {
+        self.parts
+    }
+
+    /// Advances the export without blocking: collects a tile whose read-back finished,
+    /// draws the next part of the tile being drawn (or begins the next tile), and asks
+    /// for a drawn tile to be read back. Call once per frame until it returns `Finished`.
     pub fn step(
         &mut self,
         device: &wgpu::Device,
@@ -163,9 +183,12 @@ impl PngExport {
                 }
             }
         }
-        if self.next < self.tiles.len() {
-            self.submit(device, queue, self.tiles[self.next]);
+        if self.drawing.is_none() && self.next < self.tiles.len() {
+            self.begin_tile(device, queue, self.tiles[self.next]);
             self.next += 1;
+        }
+        if self.drawing.is_some() {
+            self.draw_part(device, queue);
             return Ok(self.progress());
         }
         self.image
@@ -176,15 +199,21 @@ impl PngExport {
 
     fn progress(&self) -> ExportStep {
         ExportStep::Working {
-            done: self.next - usize::from(self.in_flight.is_some()),
+            done: self.next
+                - usize::from(self.in_flight.is_some())
+                - usize::from(self.drawing.is_some()),
             total: self.tiles.len(),
         }
     }
 
-    /// Draws one tile, copies it to a buffer and asks for the buffer to be mapped.
-    fn submit(&mut self, device: &wgpu::Device, queue: &wgpu::Queue, tile: (u32, u32, u32, u32)) {
+    /// Begins drawing `tile` into a texture of its own.
+    fn begin_tile(
+        &mut self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        tile: (u32, u32, u32, u32),
+    ) {
         let (x0, y0, w, h) = tile;
-        let target = RenderTarget::new(device, w, h, EXPORT_FORMAT);
         self.prepared.set_view(
             queue,
             &View {
@@ -193,13 +222,37 @@ impl PngExport {
                 antialias: self.antialias,
             },
         );
+        let target = RenderTarget::new(device, w, h, EXPORT_FORMAT);
+        self.drawing = Some((tile, target, Refinement::new([0, 0, w, h])));
+    }
+
+    /// Draws the next part of the tile being drawn, as large as this frame's budget;
+    /// after its last part, copies the tile to a buffer and asks for it to be mapped.
+    fn draw_part(&mut self, device: &wgpu::Device, queue: &wgpu::Queue) {
+        let now = crate::platform::now_ms();
+        if let Some(last) = self.last_draw_ms {
+            self.budget.record_frame(now - last, IDLE_FRAME_MS);
+        }
+        self.last_draw_ms = Some(now);
+        let per = per_pixel(self.prepared.op_count(), self.antialias.samples().len());
+        let pixels = (self.budget.units() / per).max(1);
+        let Some((tile, target, refinement)) = &mut self.drawing else {
+            return;
+        };
         let mut encoder =
             device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: None });
-        {
-            let mut pass = target.begin_pass(&mut encoder);
-            self.renderer.draw(&mut pass, &self.prepared);
+        if let Some(part) = refinement.next_tile(pixels) {
+            let mut pass = target.begin_pass_keeping(&mut encoder);
+            self.renderer.draw_rect(&mut pass, &self.prepared, part);
+            self.parts += 1;
         }
-        let (buffer, padded) = copy_to_buffer(device, &mut encoder, &target);
+        if !refinement.is_done() {
+            queue.submit([encoder.finish()]);
+            return;
+        }
+        let tile = *tile;
+        let (buffer, padded) = copy_to_buffer(device, &mut encoder, target);
+        self.drawing = None;
         queue.submit([encoder.finish()]);
         let mapped: MapSlot = Arc::default();
         let slot = mapped.clone();
