@@ -83,12 +83,15 @@ pub enum ExportStep {
     Finished(RgbaImage),
 }
 
+/// A tile of the output: x, y, width, height (pixels).
+type Tile = (u32, u32, u32, u32);
+
 /// The outcome of a tile's buffer mapping, filled in by wgpu's callback.
 type MapSlot = Arc<Mutex<Option<Result<(), wgpu::BufferAsyncError>>>>;
 
 /// A tile drawn and copied, waiting for its buffer to map.
 struct InFlight {
-    tile: (u32, u32, u32, u32),
+    tile: Tile,
     buffer: wgpu::Buffer,
     padded: u32,
     mapped: MapSlot,
@@ -100,10 +103,10 @@ pub struct PngExport {
     prepared: PreparedDesign,
     scale: f64,
     antialias: Antialias,
-    tiles: Vec<(u32, u32, u32, u32)>,
+    tiles: Vec<Tile>,
     next: usize,
     /// The tile being drawn, its texture and the parts drawn so far.
-    drawing: Option<((u32, u32, u32, u32), RenderTarget, Refinement)>,
+    drawing: Option<(Tile, RenderTarget, Refinement)>,
     in_flight: Option<InFlight>,
     image: Option<RgbaImage>,
     budget: FrameBudget,
@@ -207,12 +210,7 @@ impl PngExport {
     }
 
     /// Begins drawing `tile` into a texture of its own.
-    fn begin_tile(
-        &mut self,
-        device: &wgpu::Device,
-        queue: &wgpu::Queue,
-        tile: (u32, u32, u32, u32),
-    ) {
+    fn begin_tile(&mut self, device: &wgpu::Device, queue: &wgpu::Queue, tile: Tile) {
         let (x0, y0, w, h) = tile;
         self.prepared.set_view(
             queue,
