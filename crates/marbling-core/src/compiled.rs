@@ -2,11 +2,12 @@
 //! sin/cos of a wavy comb's angle are computed here instead of at every point.
 //!
 //! This is the one compiled representation of an op. The CPU reference renderer's
-//! inverse walk ([`crate::Walker`]) and forward tracing of ink outlines
-//! (marbling-vector) both use it; the formulas are those of [`Op::forward`] and
-//! [`Op::inverse`] (results agree to rounding, f64 design pixels).
+//! inverse walk ([`crate::Walker`]), forward tracing of ink outlines (marbling-vector)
+//! and the GPU's op record (marbling-gpu's `GpuOp`, built from it) all use it; the
+//! formulas are those of [`Op::forward`] and [`Op::inverse`] (results agree to
+//! rounding, f64 design pixels).
 
-use crate::Op;
+use crate::{Op, OpKind, Rgb8};
 use kurbo::{Point, Vec2};
 use std::f64::consts::TAU;
 
@@ -24,6 +25,8 @@ pub enum CompiledOp {
         r2: f64,
         /// Whether the disc pushes older ink outwards (drop) or not (spray).
         deform: bool,
+        /// The ink.
+        color: Rgb8,
     },
     /// Tine (`spacing == 0`) or rake: shift αλ/(d + λ) along the unit motion m, where d
     /// is the distance to the (nearest) tine line measured along the unit normal n.
@@ -91,12 +94,14 @@ impl CompiledOp {
                 cy: d.center.y,
                 r2: d.radius * d.radius,
                 deform: true,
+                color: d.color,
             },
             Op::Spray(s) => Self::Disc {
                 cx: s.center.x,
                 cy: s.center.y,
                 r2: s.radius * s.radius,
                 deform: false,
+                color: s.color,
             },
             Op::Tine(t) => Self::comb(t.origin, t.direction, t.alpha, t.lambda, 0.0),
             Op::Rake(r) => Self::comb(r.origin, r.direction, r.alpha, r.lambda, r.spacing),
@@ -146,6 +151,18 @@ impl CompiledOp {
         }
     }
 
+    /// Which formula this op applies (the code of its GPU record).
+    pub fn kind(&self) -> OpKind {
+        match *self {
+            Self::Disc { deform: true, .. } => OpKind::Drop,
+            Self::Disc { deform: false, .. } => OpKind::Spray,
+            Self::Comb { .. } => OpKind::Comb,
+            Self::Wave { .. } => OpKind::Wave,
+            Self::Swirl { vortex: false, .. } => OpKind::Circular,
+            Self::Swirl { vortex: true, .. } => OpKind::Vortex,
+        }
+    }
+
     /// Compiles every op of a design, oldest first.
     pub fn compile(ops: &[Op]) -> Vec<Self> {
         ops.iter().map(Self::new).collect()
@@ -156,7 +173,9 @@ impl CompiledOp {
     #[inline]
     pub fn forward(&self, p: Point) -> Point {
         let (x, y) = match *self {
-            Self::Disc { cx, cy, r2, deform } => {
+            Self::Disc {
+                cx, cy, r2, deform, ..
+            } => {
                 let (dx, dy) = (p.x - cx, p.y - cy);
                 let d2 = dx * dx + dy * dy;
                 if !deform || d2 == 0.0 {
@@ -177,7 +196,9 @@ impl CompiledOp {
     #[inline]
     pub fn inverse(&self, p: Point) -> Option<Point> {
         let (x, y) = match *self {
-            Self::Disc { cx, cy, r2, deform } => {
+            Self::Disc {
+                cx, cy, r2, deform, ..
+            } => {
                 let (dx, dy) = (p.x - cx, p.y - cy);
                 let d2 = dx * dx + dy * dy;
                 if d2 < r2 {

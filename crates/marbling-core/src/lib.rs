@@ -13,6 +13,7 @@ mod design;
 mod gestures;
 mod image;
 mod json;
+mod op_kind;
 mod ops;
 mod render;
 pub mod sampling;
@@ -29,6 +30,7 @@ pub use gestures::GestureSpan;
 pub use image::{PngError, RgbaImage};
 pub use json::DesignError;
 pub use kurbo::{Point, Vec2};
+pub use op_kind::OpKind;
 pub use ops::{
     ANGLE_STEP, Back, Circular, Drop, LENGTH_STEP, OP_TYPES, Op, Rake, Spray, Tine, Vortex, Wavy,
 };

@@ -74,7 +74,9 @@ impl Walker {
         let (mut x, mut y) = (p.x, p.y);
         for (k, s) in self.steps.iter().enumerate().rev() {
             match *s {
-                CompiledOp::Disc { cx, cy, r2, deform } => {
+                CompiledOp::Disc {
+                    cx, cy, r2, deform, ..
+                } => {
                     let (dx, dy) = (x - cx, y - cy);
                     let d2 = dx * dx + dy * dy;
                     if d2 < r2 {
@@ -119,7 +121,9 @@ impl Walker {
                 break;
             }
             match *s {
-                CompiledOp::Disc { cx, cy, r2, deform } => {
+                CompiledOp::Disc {
+                    cx, cy, r2, deform, ..
+                } => {
                     // Compact the batch: covered samples leave it with this op's ink.
                     let mut j = 0;
                     for i in 0..ids.len() {

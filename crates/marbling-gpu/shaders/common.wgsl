@@ -1,8 +1,9 @@
 // Shared by render.wgsl and preview.wgsl (the host prepends this file to each; see
 // src/shaders.rs): the inverse of one marbling op in f32, and the sRGB transfer function.
 //
-// Op encoding: two vec4<f32> per op, `a` and `b`, written by the host in
-// src/encode.rs (keep in sync with `encode_op` there). a.x is the kind:
+// Op encoding: two vec4<f32> per op, `a` and `b`, the host's `GpuOp` (src/encode.rs,
+// made from marbling-core's `CompiledOp`). a.x is the kind, the code of marbling-core's
+// `OpKind` (tests/shaders_validate.rs checks the KIND_ constants against it):
 //   KIND_DROP, KIND_SPRAY: a = (kind, cx, cy, r²),          b = (ink linear r, g, b, packed sRGB)
 //   KIND_COMB (tine/rake): a = (kind, ax, ay, mx),          b = (my, αλ, λ, spacing; 0 = tine)
 //   KIND_WAVE:             a = (kind, mx, my, amplitude),   b = (2π/wavelength, phase, 0, 0)
@@ -21,13 +22,13 @@ const KIND_VORTEX: u32 = 5u;
 // else (x, y) is where `p` was before the op. Same formulas as marbling-core's walk.rs.
 fn op_back(a: vec4<f32>, b: vec4<f32>, p: vec2<f32>) -> vec3<f32> {
     switch u32(a.x) {
-        case 0u, 1u: {
+        case KIND_DROP, KIND_SPRAY: {
             return drop_back(a, b, p);
         }
-        case 2u: {
+        case KIND_COMB: {
             return comb_back(a, b, p);
         }
-        case 3u: {
+        case KIND_WAVE: {
             return wave_back(a, b, p);
         }
         default: {

@@ -1,31 +1,17 @@
-//! Packing a design's ops into the f32 texels the shaders read: two `vec4<f32>` per op
-//! (keep in sync with the encoding described at the top of `shaders/common.wgsl`).
+//! Packing a design's ops into the f32 texels the shaders read: each op's GPU record,
+//! [`GpuOp`], is two `vec4<f32>` (keep in sync with the encoding described at the top of
+//! `shaders/common.wgsl`).
 //!
-//! Everything the CPU walker precomputes (unit direction and normal, αλ, r²,
-//! 2π/wavelength) is computed here in f64 and rounded once to f32, so the shader does
-//! as little f32 arithmetic as possible.
+//! A record is made from the op's one compiled form, [`CompiledOp`] (unit direction and
+//! normal, αλ, r², 2π/wavelength computed once in f64), rounded once to f32, so the
+//! shader does as little f32 arithmetic as possible and the CPU and GPU cannot derive
+//! the constants differently. Its first value is the [`OpKind`] code.
 
-use marbling_core::{Op, Rgb8, Vec2};
+use marbling_core::{CompiledOp, Op, OpKind, Rgb8};
 use std::f64::consts::TAU;
-
-/// Kind code of a drop (deforming disc of ink).
-pub const KIND_DROP: f32 = 0.0;
-/// Kind code of a spray (disc of ink, no deformation).
-pub const KIND_SPRAY: f32 = 1.0;
-/// Kind code of a tine or rake (spacing 0 = tine).
-pub const KIND_COMB: f32 = 2.0;
-/// Kind code of a wavy comb.
-pub const KIND_WAVE: f32 = 3.0;
-/// Kind code of a circular comb.
-pub const KIND_CIRCULAR: f32 = 4.0;
-/// Kind code of a vortex.
-pub const KIND_VORTEX: f32 = 5.0;
 
 /// Texels (RGBA f32) per op in the op texture.
 pub const TEXELS_PER_OP: u32 = 2;
-
-/// An encoded op: texels `a` and `b`.
-pub type EncodedOp = [[f32; 4]; 2];
 
 /// The sRGB bytes as one exact f32: r·65536 + g·256 + b (< 2²⁴).
 pub fn pack_srgb(c: Rgb8) -> f32 {
@@ -38,74 +24,80 @@ pub fn color_texel(c: Rgb8) -> [f32; 4] {
     [r, g, b, pack_srgb(c)]
 }
 
-fn comb(
-    origin: marbling_core::Point,
-    dir: Vec2,
-    alpha: f64,
-    lambda: f64,
-    spacing: f64,
-) -> EncodedOp {
-    let m = dir.normalize();
-    [
-        [KIND_COMB, origin.x as f32, origin.y as f32, m.x as f32],
-        [
-            m.y as f32,
-            (alpha * lambda) as f32,
-            lambda as f32,
-            spacing as f32,
-        ],
-    ]
+/// One op as the shaders read it: texels `a` and `b`; `a[0]` is its [`OpKind`] code.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
+pub struct GpuOp {
+    /// The first texel.
+    pub a: [f32; 4],
+    /// The second texel.
+    pub b: [f32; 4],
 }
 
-/// Encodes one op for the shaders.
-pub fn encode_op(op: &Op) -> EncodedOp {
-    match *op {
-        Op::Drop(d) => [
-            [
-                KIND_DROP,
-                d.center.x as f32,
-                d.center.y as f32,
-                (d.radius * d.radius) as f32,
-            ],
-            color_texel(d.color),
-        ],
-        Op::Spray(s) => [
-            [
-                KIND_SPRAY,
-                s.center.x as f32,
-                s.center.y as f32,
-                (s.radius * s.radius) as f32,
-            ],
-            color_texel(s.color),
-        ],
-        Op::Tine(t) => comb(t.origin, t.direction, t.alpha, t.lambda, 0.0),
-        Op::Rake(r) => comb(r.origin, r.direction, r.alpha, r.lambda, r.spacing),
-        Op::Wavy(w) => {
-            let (s, c) = w.angle.sin_cos();
-            [
-                [KIND_WAVE, c as f32, s as f32, w.amplitude as f32],
-                [
-                    (TAU / w.wavelength) as f32,
-                    w.phase.rem_euclid(TAU) as f32,
-                    0.0,
-                    0.0,
-                ],
-            ]
-        }
-        Op::Circular(c) => [
-            [
-                KIND_CIRCULAR,
-                c.center.x as f32,
-                c.center.y as f32,
-                c.radius as f32,
-            ],
-            [(c.alpha * c.lambda) as f32, c.lambda as f32, 0.0, 0.0],
-        ],
-        Op::Vortex(v) => [
-            [KIND_VORTEX, v.center.x as f32, v.center.y as f32, 0.0],
-            [(v.alpha * v.lambda) as f32, v.lambda as f32, 0.0, 0.0],
-        ],
+impl GpuOp {
+    /// The kind this record was made for (`None` for a record of no known kind).
+    pub fn kind(&self) -> Option<OpKind> {
+        let code = self.a[0];
+        (code >= 0.0 && code.fract() == 0.0)
+            .then(|| OpKind::from_code(code as u32))
+            .flatten()
     }
+
+    /// Its two texels, in texture order.
+    pub fn texels(&self) -> [[f32; 4]; 2] {
+        [self.a, self.b]
+    }
+}
+
+impl From<&CompiledOp> for GpuOp {
+    fn from(op: &CompiledOp) -> Self {
+        let kind = op.kind().code() as f32;
+        let f = |v: f64| v as f32;
+        let (a, b) = match *op {
+            CompiledOp::Disc {
+                cx, cy, r2, color, ..
+            } => ([kind, f(cx), f(cy), f(r2)], color_texel(color)),
+            CompiledOp::Comb {
+                ax,
+                ay,
+                mx,
+                my,
+                al,
+                lambda,
+                spacing,
+                ..
+            } => (
+                [kind, f(ax), f(ay), f(mx)],
+                [f(my), f(al), f(lambda), f(spacing)],
+            ),
+            CompiledOp::Wave {
+                mx,
+                my,
+                amp,
+                k,
+                phase,
+                ..
+            } => (
+                [kind, f(mx), f(my), f(amp)],
+                // The phase reduced to [0, 2π) keeps f32 precision in the sine.
+                [f(k), f(phase.rem_euclid(TAU)), 0.0, 0.0],
+            ),
+            CompiledOp::Swirl {
+                cx,
+                cy,
+                r,
+                al,
+                lambda,
+                ..
+            } => ([kind, f(cx), f(cy), f(r)], [f(al), f(lambda), 0.0, 0.0]),
+        };
+        Self { a, b }
+    }
+}
+
+/// Encodes one op for the shaders (through its compiled form).
+pub fn encode_op(op: &Op) -> GpuOp {
+    GpuOp::from(&CompiledOp::new(op))
 }
 
 /// Where ops sit in an op texture: op k at texels (2·(k mod ops_per_row),
@@ -179,10 +171,8 @@ pub fn layout_ops(ops: &[Op], max_side: u32) -> Option<OpTexels> {
     let layout = OpLayout::for_capacity(ops.len(), max_side)?;
     let mut texels = vec![[0.0f32; 4]; layout.width as usize * layout.height as usize];
     for (k, op) in ops.iter().enumerate() {
-        let [a, b] = encode_op(op);
         let i = k * TEXELS_PER_OP as usize;
-        texels[i] = a;
-        texels[i + 1] = b;
+        texels[i..i + 2].copy_from_slice(&encode_op(op).texels());
     }
     Some(OpTexels {
         width: layout.width,
@@ -213,7 +203,10 @@ mod tests {
         for k in [0usize, 1023, 1024, 2499] {
             let (col, row) = (2 * (k as u32 % t.ops_per_row), k as u32 / t.ops_per_row);
             let i = (row * t.width + col) as usize;
-            assert_eq!([t.texels[i], t.texels[i + 1]], encode_op(&d.ops[k]));
+            assert_eq!(
+                [t.texels[i], t.texels[i + 1]],
+                encode_op(&d.ops[k]).texels()
+            );
         }
         assert!(layout_ops(&d.ops, 4).is_none());
         let empty = layout_ops(&[], 2048).expect("fits");

@@ -336,7 +336,7 @@ fn write_ops(queue: &wgpu::Queue, prepared: &mut PreparedDesign, range: std::ops
         let first = row as usize * prepared.layout.ops_per_row as usize + col as usize;
         let texels: Vec<[f32; 4]> = prepared.uploaded[first..first + count as usize]
             .iter()
-            .flat_map(encode_op)
+            .flat_map(|op| encode_op(op).texels())
             .collect();
         queue.write_texture(
             wgpu::TexelCopyTextureInfo {

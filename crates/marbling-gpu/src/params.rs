@@ -1,7 +1,7 @@
 //! Uniform blocks shared with the WGSL shaders: `#[repr(C)]` + bytemuck mirrors of the
 //! WGSL structs (uniform address-space layout; checked against naga by tests/layout.rs).
 
-use crate::encode::{EncodedOp, color_texel};
+use crate::encode::{GpuOp, color_texel};
 use marbling_core::sampling::Sample;
 use marbling_core::{Antialias, Rgb8};
 
@@ -106,7 +106,7 @@ impl PreviewParams {
     /// per design pixel. Modes with more than 4 samples (or a refinement) use RGSS.
     pub fn new(
         design_size: [f64; 2],
-        pending: Option<EncodedOp>,
+        pending: Option<GpuOp>,
         view_origin: [f64; 2],
         view_scale: f64,
         antialias: Antialias,
@@ -120,7 +120,10 @@ impl PreviewParams {
         for (slot, s) in samples.iter_mut().zip(pattern) {
             *slot = sample_texel(s);
         }
-        let [a, b] = pending.unwrap_or([[0.0; 4]; 2]);
+        let GpuOp { a, b } = pending.unwrap_or(GpuOp {
+            a: [0.0; 4],
+            b: [0.0; 4],
+        });
         Self {
             pending_a: a,
             pending_b: b,

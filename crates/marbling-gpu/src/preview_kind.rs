@@ -8,9 +8,8 @@
 //! in headless Chromium on SwiftShader the specialised preview draws a tine drag frame
 //! over 1024×768 about 13 ms faster (docs/BENCHMARKS.md).
 
-use crate::encode::{
-    EncodedOp, KIND_CIRCULAR, KIND_COMB, KIND_DROP, KIND_SPRAY, KIND_VORTEX, KIND_WAVE,
-};
+use crate::encode::GpuOp;
+use marbling_core::OpKind;
 
 /// Which inverse a preview pipeline walks for its pending op.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -37,19 +36,15 @@ impl PreviewKind {
         PreviewKind::Swirl,
     ];
 
-    /// The variant that walks `pending` (an op encoded by [`crate::encode::encode_op`];
-    /// its kind code is `a.x`).
-    pub fn of(pending: Option<&EncodedOp>) -> Self {
-        let Some([a, _]) = pending else {
-            return PreviewKind::Idle;
-        };
-        match a[0] {
-            k if k == KIND_DROP || k == KIND_SPRAY => PreviewKind::Drop,
-            k if k == KIND_COMB => PreviewKind::Comb,
-            k if k == KIND_WAVE => PreviewKind::Wave,
-            k if k == KIND_CIRCULAR || k == KIND_VORTEX => PreviewKind::Swirl,
-            // Unknown codes are never encoded; the cache alone is the safe picture.
-            _ => PreviewKind::Idle,
+    /// The variant that walks `pending` (by the kind its record carries).
+    pub fn of(pending: Option<&GpuOp>) -> Self {
+        match pending.and_then(GpuOp::kind) {
+            Some(OpKind::Drop | OpKind::Spray) => PreviewKind::Drop,
+            Some(OpKind::Comb) => PreviewKind::Comb,
+            Some(OpKind::Wave) => PreviewKind::Wave,
+            Some(OpKind::Circular | OpKind::Vortex) => PreviewKind::Swirl,
+            // No pending op (records of unknown kind are never made): the cache alone.
+            None => PreviewKind::Idle,
         }
     }
 
@@ -112,7 +107,10 @@ mod tests {
         assert_eq!(kinds, [Drop, Drop, Comb, Comb, Wave, Swirl, Swirl]);
         assert_eq!(PreviewKind::of(None), Idle);
         assert_eq!(
-            PreviewKind::of(Some(&[[9.0, 0.0, 0.0, 0.0], [0.0; 4]])),
+            PreviewKind::of(Some(&GpuOp {
+                a: [9.0, 0.0, 0.0, 0.0],
+                b: [0.0; 4]
+            })),
             Idle
         );
     }

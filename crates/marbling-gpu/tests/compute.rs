@@ -92,3 +92,230 @@ fn compute_path_draws_the_fragment_path_bytes() {
     let d = fragment.render(&v1, &opts).expect("fragment render");
     assert!(differing(&c, &d) > 0, "dropping an op changed nothing");
 }
+
+/// `op_back` of `shaders/common.wgsl` for every op of `ops` at every point of `points`,
+/// through a compute pass: (x, y, covered) per (op, point), op-major.
+fn gpu_op_back(
+    ctx: &GpuContext,
+    common: &str,
+    ops: &[marbling_core::Op],
+    points: &[[f32; 2]],
+) -> Vec<[f32; 4]> {
+    use wgpu::util::DeviceExt;
+    let device = &ctx.device;
+    let source = [common, include_str!("op_back.wgsl")].join("\n");
+    let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+        label: Some("op_back test"),
+        source: wgpu::ShaderSource::Wgsl(source.into()),
+    });
+    let pipeline = device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
+        label: Some("op_back test"),
+        layout: None,
+        module: &module,
+        entry_point: Some("cs_op_back"),
+        compilation_options: Default::default(),
+        cache: None,
+    });
+    let records: Vec<marbling_gpu::encode::GpuOp> =
+        ops.iter().map(marbling_gpu::encode::encode_op).collect();
+    let storage = |label, contents: &[u8], usage| {
+        device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+            label: Some(label),
+            contents,
+            usage,
+        })
+    };
+    let op_buffer = storage(
+        "ops",
+        bytemuck::cast_slice(&records),
+        wgpu::BufferUsages::STORAGE,
+    );
+    let point_buffer = storage(
+        "points",
+        bytemuck::cast_slice(points),
+        wgpu::BufferUsages::STORAGE,
+    );
+    let size = (ops.len() * points.len() * 16) as u64;
+    let out = device.create_buffer(&wgpu::BufferDescriptor {
+        label: Some("out"),
+        size,
+        usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_SRC,
+        mapped_at_creation: false,
+    });
+    let readback = device.create_buffer(&wgpu::BufferDescriptor {
+        label: Some("readback"),
+        size,
+        usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
+        mapped_at_creation: false,
+    });
+    let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+        label: None,
+        layout: &pipeline.get_bind_group_layout(0),
+        entries: &[
+            wgpu::BindGroupEntry {
+                binding: 0,
+                resource: op_buffer.as_entire_binding(),
+            },
+            wgpu::BindGroupEntry {
+                binding: 1,
+                resource: point_buffer.as_entire_binding(),
+            },
+            wgpu::BindGroupEntry {
+                binding: 2,
+                resource: out.as_entire_binding(),
+            },
+        ],
+    });
+    let mut encoder =
+        device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: None });
+    {
+        let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor::default());
+        pass.set_pipeline(&pipeline);
+        pass.set_bind_group(0, &bind_group, &[]);
+        pass.dispatch_workgroups((points.len() as u32).div_ceil(64), ops.len() as u32, 1);
+    }
+    encoder.copy_buffer_to_buffer(&out, 0, &readback, 0, size);
+    ctx.queue.submit([encoder.finish()]);
+    let mut result = Vec::new();
+    marbling_gpu::read_buffer(
+        ctx,
+        &readback,
+        size as u32,
+        (size / 4) as u32,
+        1,
+        |_, bytes| {
+            result = bytemuck::cast_slice::<u8, [f32; 4]>(bytes).to_vec();
+        },
+    )
+    .expect("readback");
+    result
+}
+
+/// Every op of `kind` in random designs, walked back on the GPU (f32, `op_back` of
+/// `common`) and the CPU (f64, [`marbling_core::CompiledOp::inverse`]) from random
+/// points around the sheet: how many points got another covered/not-covered answer, and
+/// the worst position error relative to the position's distance from the origin (at
+/// least 1 design px). Points within 1e-4 of a disc's rim are skipped (f32 may put them
+/// on either side).
+fn inverse_errors(ctx: &GpuContext, common: &str, kind: marbling_core::OpKind) -> (usize, f64) {
+    use marbling_core::{CompiledOp, Point};
+    let mut ops = Vec::new();
+    for (seed, mix) in [(1, Mix::Mixed), (2, Mix::DropHeavy), (3, Mix::CombHeavy)] {
+        ops.extend(
+            random_design(seed, 300, 200, 400, mix)
+                .ops
+                .into_iter()
+                .filter(|op| CompiledOp::new(op).kind() == kind)
+                .take(12),
+        );
+    }
+    assert!(ops.len() >= 6, "{kind:?}: only {} ops to test", ops.len());
+    let mut rng = marbling_core::synth::SplitMix64(kind.code() as u64 + 7);
+    let points: Vec<[f32; 2]> = (0..256)
+        .map(|_| {
+            [
+                rng.range(-50.0, 350.0) as f32,
+                rng.range(-50.0, 250.0) as f32,
+            ]
+        })
+        .collect();
+    let gpu = gpu_op_back(ctx, common, &ops, &points);
+    let (mut worst, mut compared, mut other_answer) = (0.0f64, 0, 0);
+    for (i, op) in ops.iter().enumerate() {
+        let c = CompiledOp::new(op);
+        for (j, p) in points.iter().enumerate() {
+            let p64 = Point::new(f64::from(p[0]), f64::from(p[1]));
+            if let CompiledOp::Disc { cx, cy, r2, .. } = c {
+                let d2 = (p64.x - cx).powi(2) + (p64.y - cy).powi(2);
+                if (d2 - r2).abs() <= 1e-4 * r2.max(1.0) {
+                    continue;
+                }
+            }
+            let [x, y, covered, _] = gpu[i * points.len() + j];
+            match (c.inverse(p64), covered == 1.0) {
+                (None, true) => {}
+                (Some(q), false) => {
+                    let err = (q - Point::new(f64::from(x), f64::from(y))).hypot()
+                        / q.to_vec2().hypot().max(1.0);
+                    worst = worst.max(err);
+                    compared += 1;
+                }
+                _ => other_answer += 1,
+            }
+        }
+    }
+    eprintln!(
+        "{kind:?}: {compared} points compared, worst relative error {worst:e}, {other_answer} other ink answers"
+    );
+    (other_answer, worst)
+}
+
+/// The per-kind test: the same ink answers, positions within 1e-4 relative.
+fn wgsl_inverse_matches_cpu(kind: marbling_core::OpKind) {
+    let Some(ctx) = common::or_skip(GpuContext::new_headless()) else {
+        return;
+    };
+    let (other_answer, worst) = inverse_errors(&ctx, marbling_gpu::shaders::COMMON, kind);
+    assert_eq!(
+        other_answer, 0,
+        "{kind:?}: the GPU put points in or out of ink wrongly"
+    );
+    assert!(worst <= 1e-4, "{kind:?}: relative error {worst:e} > 1e-4");
+}
+
+/// The comparison sees a mistake: a drop inverse with 0.1 % of r² missing, and a wave
+/// whose phase is off by 0.01 rad.
+#[test]
+fn a_wrong_wgsl_inverse_is_caught() {
+    let Some(ctx) = common::or_skip(GpuContext::new_headless()) else {
+        return;
+    };
+    let common = marbling_gpu::shaders::COMMON;
+    for (kind, right, wrong) in [
+        (
+            marbling_core::OpKind::Drop,
+            "sqrt(1.0 - a.w / d2)",
+            "sqrt(1.0 - 0.999 * a.w / d2)",
+        ),
+        (
+            marbling_core::OpKind::Wave,
+            "dot(p, n) + b.y)",
+            "dot(p, n) + b.y + 0.01)",
+        ),
+    ] {
+        assert!(common.contains(right), "{right} is not in common.wgsl");
+        let broken = common.replacen(right, wrong, 1);
+        let (_, worst) = inverse_errors(&ctx, &broken, kind);
+        assert!(worst > 1e-4, "{kind:?}: a wrong inverse passed ({worst:e})");
+    }
+}
+
+#[test]
+fn wgsl_inverse_of_drop_matches_cpu() {
+    wgsl_inverse_matches_cpu(marbling_core::OpKind::Drop);
+}
+
+#[test]
+fn wgsl_inverse_of_spray_matches_cpu() {
+    wgsl_inverse_matches_cpu(marbling_core::OpKind::Spray);
+}
+
+#[test]
+fn wgsl_inverse_of_comb_matches_cpu() {
+    wgsl_inverse_matches_cpu(marbling_core::OpKind::Comb);
+}
+
+#[test]
+fn wgsl_inverse_of_wave_matches_cpu() {
+    wgsl_inverse_matches_cpu(marbling_core::OpKind::Wave);
+}
+
+#[test]
+fn wgsl_inverse_of_circular_matches_cpu() {
+    wgsl_inverse_matches_cpu(marbling_core::OpKind::Circular);
+}
+
+#[test]
+fn wgsl_inverse_of_vortex_matches_cpu() {
+    wgsl_inverse_matches_cpu(marbling_core::OpKind::Vortex);
+}

@@ -175,3 +175,28 @@ fn float_literal_scan_finds_what_tint_would_refuse() {
     assert_eq!(found, ["3.4028235e38", "1.5e-3"]);
     assert!("3.4028235e38".parse::<f64>().expect("a float") > f64::from(f32::MAX));
 }
+
+/// The shaders' `KIND_…` constants are the codes of [`marbling_core::OpKind`] (the one
+/// list the GPU records are made from), and there is no other.
+#[test]
+fn the_shaders_op_kinds_are_the_op_kind_codes() {
+    let source = marbling_gpu::shaders::COMMON;
+    let module = naga::front::wgsl::parse_str(source).expect("common.wgsl parses");
+    let mut found = Vec::new();
+    for (_, c) in module.constants.iter() {
+        let Some(name) = c.name.as_deref().filter(|n| n.starts_with("KIND_")) else {
+            continue;
+        };
+        let naga::Expression::Literal(naga::Literal::U32(value)) =
+            module.global_expressions[c.init]
+        else {
+            panic!("{name} is not a u32 literal");
+        };
+        found.push((name.to_owned(), value));
+    }
+    let expected: Vec<(String, u32)> = marbling_core::OpKind::ALL
+        .iter()
+        .map(|k| (k.wgsl_name().to_owned(), k.code()))
+        .collect();
+    assert_eq!(found, expected);
+}
