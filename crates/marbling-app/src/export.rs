@@ -250,8 +250,8 @@ impl PngExport {
         }
         let tile = *tile;
         let (buffer, padded) = copy_to_buffer(device, &mut encoder, target);
-        self.drawing = None;
         queue.submit([encoder.finish()]);
+        self.drawing = None;
         let mapped: MapSlot = Arc::default();
         let slot = mapped.clone();
         buffer.map_async(wgpu::MapMode::Read, .., move |r| {
