@@ -62,7 +62,7 @@ impl MarblingApp {
             Action::Commit(ops) => Some(crate::canvas_gpu::StandIn {
                 key: self.editor.key,
                 op: match ops.as_slice() {
-                    [op] if !matches!(op, Op::Spray(_)) => Some(*op),
+                    [op] if crate::canvas::previewable(op) => Some(op.clone()),
                     _ => None,
                 },
             }),

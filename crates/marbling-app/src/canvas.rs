@@ -217,12 +217,13 @@ impl MarblingApp {
         let stand_in = self
             .editor
             .stand_in
+            .clone()
             .filter(|(key, _)| *key == self.editor.key)
             .map(|(_, s)| s);
         let (shown, design_key, single) = match pending.as_slice() {
             [] => (self.editor.shown.clone(), self.editor.key, None),
-            [op] if !matches!(op, Op::Spray(_)) => {
-                (self.editor.shown.clone(), self.editor.key, Some(*op))
+            [op] if previewable(op) => {
+                (self.editor.shown.clone(), self.editor.key, Some(op.clone()))
             }
             many => {
                 // Several ops at once (spray, a rake of separate tines): exact render of
@@ -319,4 +320,11 @@ fn wheel_points(i: &egui::InputState) -> f64 {
             _ => 0.0,
         })
         .sum()
+}
+
+/// Whether the live preview can walk `op` alone over the cached design: one GPU record
+/// (not a drop pattern, a finite comb or a stylus) and not a spray droplet (sprays come
+/// many to a gesture, drawn exactly).
+pub(crate) fn previewable(op: &Op) -> bool {
+    !matches!(op, Op::Spray(_)) && marbling_gpu::encode::encode_op(op).is_some()
 }

@@ -56,7 +56,7 @@ pub struct FrameRequest {
 }
 
 /// A design close to the requested one whose preview cache can stand in for it.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct StandIn {
     /// That design's key.
     pub key: u64,
@@ -576,7 +576,7 @@ impl CanvasCallback {
         } else if cached(req.design_key) {
             gpu.aim_preview(queue, req, None, canvas_px);
             Show::Refining
-        } else if let Some(s) = req.stand_in.filter(|s| cached(s.key)) {
+        } else if let Some(s) = req.stand_in.clone().filter(|s| cached(s.key)) {
             gpu.aim_preview(queue, req, s.op.as_ref(), canvas_px);
             Show::Refining
         } else {
@@ -809,9 +809,9 @@ mod tests {
         assert_eq!(callback.status.lock().expect("status").work.tiles, tiles);
 
         // An edit: the design before it stands in at once, with the new op over it.
-        let op = design.ops[0];
+        let op = design.ops[0].clone();
         let mut edited = (*design).clone();
-        edited.ops.push(op);
+        edited.ops.push(op.clone());
         callback.shown = Shown::all(Arc::new(edited));
         callback.request.design_key = 2;
         callback.request.stand_in = Some(StandIn {

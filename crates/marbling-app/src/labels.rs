@@ -39,6 +39,14 @@ fn single(op: &Op) -> String {
         Op::Wavy(_) => "wavy comb".to_owned(),
         Op::Circular(_) => "circular comb".to_owned(),
         Op::Vortex(_) => "vortex".to_owned(),
+        Op::Shift(s) => format!("shift {}", arrow(s.offset)),
+        Op::Turn(_) => "turn".to_owned(),
+        Op::Comb(c) => format!("comb of {} tines {}", c.tines.len(), arrow(c.direction)),
+        Op::Drops(d) => format!("{} drops", d.len()),
+        Op::Sprays(d) => format!("{} spray droplets", d.len()),
+        Op::Jiggle(_) => "jiggle".to_owned(),
+        Op::Stylus(s) if s.tip_count() > 1 => format!("stylus of {} tips", s.tip_count()),
+        Op::Stylus(_) => "stylus stroke".to_owned(),
     }
 }
 

@@ -2,7 +2,7 @@
 //! strength (combs, swirls) or zero radius (drops, sprays).
 
 use crate::shown::Shown;
-use marbling_core::{Design, Op};
+use marbling_core::{Design, Op, Point, Radii};
 use std::sync::Arc;
 
 /// Where a playback is: op `index` is `t` (0..=1) of the way in.
@@ -22,7 +22,7 @@ pub fn ease(t: f64) -> f64 {
 
 /// `op` at fraction `s` (0..=1) of its strength or radius.
 pub fn scaled(op: &Op, s: f64) -> Op {
-    let mut op = *op;
+    let mut op = op.clone();
     // Radii stay > 0 so the scaled op is still valid.
     let tiny = 1e-6;
     match &mut op {
@@ -33,8 +33,44 @@ pub fn scaled(op: &Op, s: f64) -> Op {
         Op::Wavy(w) => w.amplitude *= s,
         Op::Circular(c) => c.alpha *= s,
         Op::Vortex(v) => v.alpha *= s,
+        Op::Shift(t) => t.offset *= s,
+        Op::Turn(t) => t.angle *= s,
+        Op::Comb(c) => c.alpha *= s,
+        Op::Drops(d) | Op::Sprays(d) => {
+            d.radii = match &d.radii {
+                Radii::One(r) => Radii::One((r * s).max(tiny)),
+                Radii::Each(list) => Radii::Each(list.iter().map(|r| (r * s).max(tiny)).collect()),
+            }
+        }
+        Op::Jiggle(j) => {
+            j.along *= s;
+            j.across *= s;
+        }
+        // A stroke is drawn along its path: the first fraction s of its length.
+        Op::Stylus(st) => st.path = path_part(&st.path, s),
     }
     op
+}
+
+/// The first fraction `s` (0..=1) of a path's length (at least two points).
+fn path_part(path: &[Point], s: f64) -> Arc<[Point]> {
+    let total: f64 = path.windows(2).map(|w| (w[1] - w[0]).hypot()).sum();
+    let mut left = total * s.clamp(0.0, 1.0);
+    let mut out = vec![path[0]];
+    for w in path.windows(2) {
+        let len = (w[1] - w[0]).hypot();
+        if left >= len {
+            out.push(w[1]);
+            left -= len;
+        } else {
+            out.push(w[0] + (w[1] - w[0]) * (left / len));
+            break;
+        }
+    }
+    if out.len() < 2 {
+        out.push(path[0]);
+    }
+    out.into()
 }
 
 impl Playback {

@@ -83,7 +83,7 @@ mod tests {
         let view = Shown {
             design: d.clone(),
             ops: 5,
-            tail: vec![d.ops[9]],
+            tail: vec![d.ops[9].clone()],
         };
         assert_eq!(view.op_count(), 6);
         let m = view.to_design();

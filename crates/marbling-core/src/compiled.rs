@@ -7,12 +7,16 @@
 //! formulas are those of [`Op::forward`] and [`Op::inverse`] (results agree to
 //! rounding, f64 design pixels).
 
+use crate::ops::{StylusSegment, rotate, solve_kepler};
 use crate::{Op, OpKind, Rgb8};
 use kurbo::{Point, Vec2};
 use std::f64::consts::TAU;
+use std::sync::Arc;
 
-/// One op with its constants precomputed. Lengths are design pixels.
-#[derive(Clone, Copy, Debug, PartialEq)]
+/// One op with its constants precomputed. Lengths are design pixels. A drop pattern
+/// (`drops`, `sprays`) compiles to one [`CompiledOp::Disc`] per drop; every other op
+/// to one compiled op.
+#[derive(Clone, Debug, PartialEq)]
 pub enum CompiledOp {
     /// Drop (`deform`) or spray (`!deform`): a disc of new ink of centre (cx, cy) and
     /// squared radius r2. A drop maps P ↦ C + (P − C)·√(1 + r²/ρ²); a spray moves nothing.
@@ -83,12 +87,89 @@ pub enum CompiledOp {
         /// Vortex rather than circular comb.
         vortex: bool,
     },
+    /// Shift or turn: P′ = C + R(θ)(P − C) + o.
+    Rigid {
+        /// Centre x.
+        cx: f64,
+        /// Centre y.
+        cy: f64,
+        /// sin θ.
+        sin: f64,
+        /// cos θ.
+        cos: f64,
+        /// Offset x.
+        ox: f64,
+        /// Offset y.
+        oy: f64,
+    },
+    /// Finite comb: shift αλ/(d + λ) along the unit motion m, d = minᵢ |s − oᵢ|,
+    /// s = (P − A)·n.
+    Tines {
+        /// Origin x.
+        ax: f64,
+        /// Origin y.
+        ay: f64,
+        /// Unit motion x.
+        mx: f64,
+        /// Unit motion y.
+        my: f64,
+        /// α·λ, design px².
+        al: f64,
+        /// λ, design px.
+        lambda: f64,
+        /// Tine offsets oᵢ along n = (−m.y, m.x), design px.
+        offsets: Arc<[f64]>,
+    },
+    /// Jiggle: P′ = P + A·sin φ·u + B·cos φ·v, φ = k(P·u) + φ₀, v = (−u.y, u.x).
+    Jiggle {
+        /// u x (cos θ).
+        ux: f64,
+        /// u y (sin θ).
+        uy: f64,
+        /// 2π / wavelength, radians per design px.
+        k: f64,
+        /// A, design px.
+        along: f64,
+        /// B, design px.
+        across: f64,
+        /// φ₀, radians.
+        phase: f64,
+    },
+    /// Stylus: its segments, in order.
+    Stylus {
+        /// The path's segments of non-zero length.
+        segments: Arc<[StylusSegment]>,
+    },
 }
 
 impl CompiledOp {
-    /// Compiles one op.
-    pub fn new(op: &Op) -> Self {
-        match *op {
+    /// Compiles one op: one compiled op, or one per drop of a drop pattern.
+    pub fn of(op: &Op) -> Vec<Self> {
+        let mut out = Vec::new();
+        Self::push(op, &mut out);
+        out
+    }
+
+    /// Appends the compiled form of `op` to `out`.
+    pub fn push(op: &Op, out: &mut Vec<Self>) {
+        match op {
+            Op::Drops(d) | Op::Sprays(d) => {
+                out.extend(
+                    d.expand(matches!(op, Op::Sprays(_)))
+                        .map(|o| Self::single(&o)),
+                );
+            }
+            _ => out.push(Self::single(op)),
+        }
+    }
+
+    /// How many compiled ops `op` gives.
+    pub fn count(op: &Op) -> usize {
+        op.counted_ops()
+    }
+
+    fn single(op: &Op) -> Self {
+        match op {
             Op::Drop(d) => Self::Disc {
                 cx: d.center.x,
                 cy: d.center.y,
@@ -105,6 +186,54 @@ impl CompiledOp {
             },
             Op::Tine(t) => Self::comb(t.origin, t.direction, t.alpha, t.lambda, 0.0),
             Op::Rake(r) => Self::comb(r.origin, r.direction, r.alpha, r.lambda, r.spacing),
+            Op::Shift(s) => Self::Rigid {
+                cx: 0.0,
+                cy: 0.0,
+                sin: 0.0,
+                cos: 1.0,
+                ox: s.offset.x,
+                oy: s.offset.y,
+            },
+            Op::Turn(t) => {
+                let (sin, cos) = t.angle.sin_cos();
+                Self::Rigid {
+                    cx: t.center.x,
+                    cy: t.center.y,
+                    sin,
+                    cos,
+                    ox: 0.0,
+                    oy: 0.0,
+                }
+            }
+            Op::Comb(c) => {
+                let m = c.direction.normalize();
+                Self::Tines {
+                    ax: c.origin.x,
+                    ay: c.origin.y,
+                    mx: m.x,
+                    my: m.y,
+                    al: c.alpha * c.lambda,
+                    lambda: c.lambda,
+                    offsets: c.tines.clone(),
+                }
+            }
+            Op::Jiggle(j) => {
+                let (sin, cos) = j.angle.sin_cos();
+                Self::Jiggle {
+                    ux: cos,
+                    uy: sin,
+                    k: TAU / j.wavelength,
+                    along: j.along,
+                    across: j.across,
+                    phase: j.phase,
+                }
+            }
+            Op::Stylus(s) => Self::Stylus {
+                segments: s.segments().into(),
+            },
+            Op::Drops(_) | Op::Sprays(_) => {
+                unreachable!("drop patterns compile to one disc per drop (CompiledOp::push)")
+            }
             Op::Wavy(w) => {
                 let (s, c) = w.angle.sin_cos();
                 Self::Wave {
@@ -160,12 +289,29 @@ impl CompiledOp {
             Self::Wave { .. } => OpKind::Wave,
             Self::Swirl { vortex: false, .. } => OpKind::Circular,
             Self::Swirl { vortex: true, .. } => OpKind::Vortex,
+            Self::Rigid { .. } => OpKind::Rigid,
+            Self::Tines { .. } => OpKind::Tines,
+            Self::Jiggle { .. } => OpKind::Jiggle,
+            Self::Stylus { .. } => OpKind::Stylus,
         }
     }
 
-    /// Compiles every op of a design, oldest first.
+    /// The ink this op lays, if it lays any.
+    pub fn ink(&self) -> Option<Rgb8> {
+        match self {
+            Self::Disc { color, .. } => Some(*color),
+            _ => None,
+        }
+    }
+
+    /// Compiles every op of a design, oldest first (a drop pattern gives one op per
+    /// drop).
     pub fn compile(ops: &[Op]) -> Vec<Self> {
-        ops.iter().map(Self::new).collect()
+        let mut out = Vec::with_capacity(ops.len());
+        for op in ops {
+            Self::push(op, &mut out);
+        }
+        out
     }
 
     /// Where older ink at `p` ends up after this op (a spray, or a drop's own centre,
@@ -187,6 +333,12 @@ impl CompiledOp {
             Self::Comb { .. } => comb_shift(p.x, p.y, self, 1.0),
             Self::Wave { .. } => wave_shift(p.x, p.y, self, 1.0),
             Self::Swirl { .. } => swirl_turn(p.x, p.y, self, 1.0),
+            Self::Rigid { .. } => rigid_move(p.x, p.y, self, 1.0),
+            Self::Tines { .. } => tines_shift(p.x, p.y, self, 1.0),
+            Self::Jiggle { .. } => return jiggle_forward(p, self),
+            Self::Stylus { ref segments } => {
+                return segments.iter().fold(p, |p, s| s.forward(p));
+            }
         };
         Point::new(x, y)
     }
@@ -212,9 +364,108 @@ impl CompiledOp {
             Self::Comb { .. } => comb_shift(p.x, p.y, self, -1.0),
             Self::Wave { .. } => wave_shift(p.x, p.y, self, -1.0),
             Self::Swirl { .. } => swirl_turn(p.x, p.y, self, -1.0),
+            Self::Rigid { .. } => rigid_move(p.x, p.y, self, -1.0),
+            Self::Tines { .. } => tines_shift(p.x, p.y, self, -1.0),
+            Self::Jiggle { .. } => return Some(jiggle_back(p, self)),
+            Self::Stylus { ref segments } => {
+                return Some(segments.iter().rev().fold(p, |p, s| s.inverse(p)));
+            }
         };
         Some(Point::new(x, y))
     }
+}
+
+/// A shift or turn of (x, y): forward (`sign` = 1) or inverse (−1). Identity for
+/// other ops.
+#[inline(always)]
+pub(crate) fn rigid_move(x: f64, y: f64, s: &CompiledOp, sign: f64) -> (f64, f64) {
+    let CompiledOp::Rigid {
+        cx,
+        cy,
+        sin,
+        cos,
+        ox,
+        oy,
+    } = *s
+    else {
+        return (x, y);
+    };
+    if sign > 0.0 {
+        let r = rotate(Vec2::new(x - cx, y - cy), sin, cos);
+        (cx + r.x + ox, cy + r.y + oy)
+    } else {
+        let r = rotate(Vec2::new(x - ox - cx, y - oy - cy), -sin, cos);
+        (cx + r.x, cy + r.y)
+    }
+}
+
+/// A finite comb's shift at (x, y) times `sign` (constant along m, so −1 inverts
+/// exactly). Identity for other ops.
+#[inline(always)]
+pub(crate) fn tines_shift(x: f64, y: f64, s: &CompiledOp, sign: f64) -> (f64, f64) {
+    let CompiledOp::Tines {
+        ax,
+        ay,
+        mx,
+        my,
+        al,
+        lambda,
+        ref offsets,
+    } = *s
+    else {
+        return (x, y);
+    };
+    let along = (x - ax) * -my + (y - ay) * mx;
+    let d = offsets
+        .iter()
+        .map(|o| (along - o).abs())
+        .fold(f64::INFINITY, f64::min);
+    let f = sign * al / (d + lambda);
+    (x + f * mx, y + f * my)
+}
+
+/// The jiggle's forward map. Identity for other ops.
+fn jiggle_forward(p: Point, s: &CompiledOp) -> Point {
+    let CompiledOp::Jiggle {
+        ux,
+        uy,
+        k,
+        along,
+        across,
+        phase,
+    } = *s
+    else {
+        return p;
+    };
+    let phi = k * (p.x * ux + p.y * uy) + phase;
+    let (sn, cs) = phi.sin_cos();
+    Point::new(
+        p.x + along * sn * ux - across * cs * uy,
+        p.y + along * sn * uy + across * cs * ux,
+    )
+}
+
+/// The jiggle's inverse: solves φ + kA·sin φ = k(P′·u) + φ₀ (reduced to [0, 2π)).
+/// Identity for other ops.
+pub(crate) fn jiggle_back(p: Point, s: &CompiledOp) -> Point {
+    let CompiledOp::Jiggle {
+        ux,
+        uy,
+        k,
+        along,
+        across,
+        phase,
+    } = *s
+    else {
+        return p;
+    };
+    let t = k * (p.x * ux + p.y * uy) + phase;
+    let t = t - (t / TAU).floor() * TAU;
+    let (sn, cs) = solve_kepler(t, k * along).sin_cos();
+    Point::new(
+        p.x - along * sn * ux + across * cs * uy,
+        p.y - along * sn * uy - across * cs * ux,
+    )
 }
 
 /// Inverse of a drop outside its disc: P = C + (P' − C)·√(1 − r²/ρ²), given
@@ -325,7 +576,7 @@ mod tests {
         for mix in [Mix::Mixed, Mix::DropHeavy, Mix::CombHeavy] {
             let design = random_design(3, 300, 200, 300, mix);
             for op in &design.ops {
-                let c = CompiledOp::new(op);
+                let [c] = CompiledOp::of(op).try_into().expect("one compiled op");
                 for _ in 0..40 {
                     let p = Point::new(rng.range(-100.0, 400.0), rng.range(-100.0, 300.0));
                     assert!(close(op.forward(p), c.forward(p)), "{op:?}");
@@ -344,7 +595,7 @@ mod tests {
         let design = random_design(5, 300, 200, 200, Mix::Mixed);
         let mut rng = SplitMix64(2);
         for op in &design.ops {
-            let c = CompiledOp::new(op);
+            let [c] = CompiledOp::of(op).try_into().expect("one compiled op");
             for _ in 0..40 {
                 let p = Point::new(rng.range(-50.0, 350.0), rng.range(-50.0, 250.0));
                 match c.inverse(c.forward(p)) {

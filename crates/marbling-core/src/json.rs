@@ -8,18 +8,23 @@
 //! - optional `"overlays": [{"type": "paper-grain" | "pigment-grain", "noise": SPEC,
 //!   "strength": s}]`, s in [0, 1].
 //!
-//! See [`crate::surface`] for how they colour a render. A design that uses neither is
-//! written as version 1.
+//! See [`crate::surface`] for how they colour a render.
+//!
+//! Schema v3 (`"version": 3`) adds seven op types (shift, turn, comb, drops, sprays,
+//! jiggle, stylus; see [`crate::Op`]). A design is written with the lowest version that
+//! holds it: 1 when it uses neither v2's surfaces nor v3's ops.
 
 use crate::design::{CURRENT_VERSION, SUPPORTED_VERSIONS};
+use crate::ops::OP_TYPES_V3;
 use crate::surface::{GrainKind, NoiseBackground, NoiseLayer, Overlay, Palette};
 use crate::validate::Checker;
 use crate::{
-    Circular, Design, Drop, GestureSpan, Op, Rake, Rgb8, Spray, Tine, ValidationErrors, Vortex,
-    Wavy,
+    Circular, Comb, Design, Drop, DropSet, GestureSpan, Jiggle, Op, Radii, Rake, Rgb8, Shift,
+    Spray, Stylus, Tine, Turn, ValidationErrors, Vortex, Wavy,
 };
 use kurbo::{Point, Vec2};
 use serde_json::{Map, Value, json};
+use std::sync::Arc;
 
 /// Why a design document could not be read.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
@@ -66,6 +71,12 @@ fn op_fields(kind: &str) -> Option<&'static [&'static str]> {
         "wavy" => &["type", "angle", "amplitude", "wavelength", "phase"],
         "circular" => &["type", "center", "radius", "alpha", "lambda"],
         "vortex" => &["type", "center", "alpha", "lambda"],
+        "shift" => &["type", "offset"],
+        "turn" => &["type", "center", "angle"],
+        "comb" => &["type", "origin", "direction", "tines", "alpha", "lambda"],
+        "drops" | "sprays" => &["type", "centers", "radius", "radii", "colors"],
+        "jiggle" => &["type", "angle", "wavelength", "along", "across", "phase"],
+        "stylus" => &["type", "path", "wake", "tips"],
         _ => return None,
     })
 }
@@ -84,6 +95,8 @@ fn type_of(v: &Value) -> &'static str {
 /// Turns JSON values into typed parts, recording every problem with its path.
 struct Reader {
     c: Checker,
+    /// The document's `"version"` (v3 op types need 3).
+    version: u64,
 }
 
 impl Reader {
@@ -176,6 +189,91 @@ impl Reader {
         }
     }
 
+    /// An array field, each item read by `item(self, path of item, item)`.
+    fn list<T>(
+        &mut self,
+        path: &str,
+        obj: &Map<String, Value>,
+        name: &str,
+        what: &str,
+        mut item: impl FnMut(&mut Self, &str, &Value) -> Option<T>,
+    ) -> Option<Arc<[T]>> {
+        let v = self.field(path, obj, name)?;
+        let path = join(path, name);
+        let Some(items) = v.as_array() else {
+            self.c.push(
+                path,
+                format!("must be an array of {what}, got {}", short(v)),
+            );
+            return None;
+        };
+        let read: Vec<Option<T>> = items
+            .iter()
+            .enumerate()
+            .map(|(i, it)| item(self, &format!("{path}[{i}]"), it))
+            .collect();
+        read.into_iter().collect::<Option<Vec<T>>>().map(Arc::from)
+    }
+
+    fn numbers(&mut self, path: &str, obj: &Map<String, Value>, name: &str) -> Option<Arc<[f64]>> {
+        self.list(path, obj, name, "numbers", |r, p, v| r.number_value(p, v))
+    }
+
+    fn points(&mut self, path: &str, obj: &Map<String, Value>, name: &str) -> Option<Arc<[Point]>> {
+        self.list(path, obj, name, "[x, y] points", |r, p, v| {
+            match v.as_array().map(Vec::as_slice) {
+                Some([x, y]) => {
+                    let x = r.number_value(&format!("{p}[0]"), x);
+                    let y = r.number_value(&format!("{p}[1]"), y);
+                    Some(Point::new(x?, y?))
+                }
+                _ => {
+                    r.c.push(
+                        p,
+                        format!("must be an array [x, y] of two numbers, got {}", short(v)),
+                    );
+                    None
+                }
+            }
+        })
+    }
+
+    fn colors(&mut self, path: &str, obj: &Map<String, Value>, name: &str) -> Option<Arc<[Rgb8]>> {
+        self.list(path, obj, name, "colours \"#rrggbb\"", |r, p, v| {
+            match v.as_str().map(str::parse::<Rgb8>) {
+                Some(Ok(c)) => Some(c),
+                _ => {
+                    r.c.push(p, format!("must be a colour \"#rrggbb\", got {}", short(v)));
+                    None
+                }
+            }
+        })
+    }
+
+    /// A drop pattern's fields: `centers`, `radius` or `radii` (one of them), `colors`.
+    fn drop_set(&mut self, p: &str, obj: &Map<String, Value>) -> Option<DropSet> {
+        let centers = self.points(p, obj, "centers");
+        let radii = match (obj.contains_key("radius"), obj.contains_key("radii")) {
+            (true, false) => self.number(p, obj, "radius").map(Radii::One),
+            (false, true) => self.numbers(p, obj, "radii").map(Radii::Each),
+            (both, _) => {
+                let m = if both {
+                    "give either \"radius\" (one for all) or \"radii\" (one per centre), not both"
+                } else {
+                    "missing; give \"radius\" (one for all) or \"radii\" (one per centre)"
+                };
+                self.c.push(join(p, "radius"), m);
+                None
+            }
+        };
+        let colors = self.colors(p, obj, "colors");
+        Some(DropSet {
+            centers: centers?,
+            radii: radii?,
+            colors: colors?,
+        })
+    }
+
     fn side(&mut self, obj: &Map<String, Value>, name: &str) -> Option<u32> {
         let v = self.field("", obj, name)?;
         match v.as_u64().and_then(|n| u32::try_from(n).ok()) {
@@ -229,6 +327,15 @@ impl Reader {
             return None;
         };
         self.object(&path, v, fields)?;
+        if self.version < 3 && OP_TYPES_V3.contains(&kind) {
+            self.c.push(
+                format!("{path}.type"),
+                format!(
+                    "op type {kind:?} needs \"version\": 3 (this document is version {})",
+                    self.version
+                ),
+            );
+        }
         let p = path.as_str();
         let op = match kind {
             "drop" | "spray" => {
@@ -307,13 +414,71 @@ impl Reader {
                     lambda: lambda?,
                 })
             }
-            _ => {
+            "vortex" => {
                 let center = self.point(p, obj, "center");
                 let (alpha, lambda) = (self.number(p, obj, "alpha"), self.number(p, obj, "lambda"));
                 Op::Vortex(Vortex {
                     center: center?,
                     alpha: alpha?,
                     lambda: lambda?,
+                })
+            }
+            "shift" => Op::Shift(Shift {
+                offset: self.vector(p, obj, "offset")?,
+            }),
+            "turn" => {
+                let (center, angle) = (self.point(p, obj, "center"), self.number(p, obj, "angle"));
+                Op::Turn(Turn {
+                    center: center?,
+                    angle: angle?,
+                })
+            }
+            "comb" => {
+                let (origin, direction) = (
+                    self.point(p, obj, "origin"),
+                    self.vector(p, obj, "direction"),
+                );
+                let tines = self.numbers(p, obj, "tines");
+                let (alpha, lambda) = (self.number(p, obj, "alpha"), self.number(p, obj, "lambda"));
+                Op::Comb(Comb {
+                    origin: origin?,
+                    direction: direction?,
+                    tines: tines?,
+                    alpha: alpha?,
+                    lambda: lambda?,
+                })
+            }
+            "drops" => Op::Drops(self.drop_set(p, obj)?),
+            "sprays" => Op::Sprays(self.drop_set(p, obj)?),
+            "jiggle" => {
+                let (angle, wavelength) = (
+                    self.number(p, obj, "angle"),
+                    self.number(p, obj, "wavelength"),
+                );
+                let (along, across, phase) = (
+                    self.number(p, obj, "along"),
+                    self.number(p, obj, "across"),
+                    self.number(p, obj, "phase"),
+                );
+                Op::Jiggle(Jiggle {
+                    angle: angle?,
+                    wavelength: wavelength?,
+                    along: along?,
+                    across: across?,
+                    phase: phase?,
+                })
+            }
+            _ => {
+                let (path_points, wake) =
+                    (self.points(p, obj, "path"), self.number(p, obj, "wake"));
+                let tips = match obj.get("tips") {
+                    None => Some(None),
+                    Some(_) => self.numbers(p, obj, "tips").map(Some),
+                };
+                Op::Stylus(Stylus {
+                    path: path_points?,
+                    wake: wake?,
+                    tips: tips?,
                 })
             }
         };
@@ -326,7 +491,7 @@ impl Reader {
         let obj = self.object("", v, if v1 { TOP_FIELDS_V1 } else { TOP_FIELDS })?;
         let version = self.field("", obj, "version")?;
         match version.as_u64() {
-            Some(n) if SUPPORTED_VERSIONS.contains(&n) => {}
+            Some(n) if SUPPORTED_VERSIONS.contains(&n) => self.version = n,
             _ => {
                 let supported: Vec<String> =
                     SUPPORTED_VERSIONS.iter().map(u64::to_string).collect();
@@ -379,12 +544,16 @@ impl Reader {
         }
         let ops = match self.field("", obj, "ops") {
             Some(Value::Array(items)) => {
-                self.c.op_count(items.len());
                 let ops: Vec<Option<Op>> = items
                     .iter()
                     .enumerate()
                     .map(|(i, item)| self.op(i, item))
                     .collect();
+                self.c.op_count(
+                    ops.iter()
+                        .map(|o| o.as_ref().map_or(1, Op::counted_ops))
+                        .sum(),
+                );
                 ops.into_iter().collect::<Option<Vec<Op>>>()
             }
             Some(other) => {
@@ -602,7 +771,45 @@ fn op_value(op: &Op) -> Value {
             "radius": num(o.radius), "alpha": num(o.alpha), "lambda": num(o.lambda)}),
         Op::Vortex(o) => json!({"type": t, "center": pair(o.center.x, o.center.y),
             "alpha": num(o.alpha), "lambda": num(o.lambda)}),
+        Op::Shift(o) => json!({"type": t, "offset": pair(o.offset.x, o.offset.y)}),
+        Op::Turn(o) => json!({"type": t, "center": pair(o.center.x, o.center.y),
+            "angle": num(o.angle)}),
+        Op::Comb(o) => json!({"type": t, "origin": pair(o.origin.x, o.origin.y),
+            "direction": pair(o.direction.x, o.direction.y), "tines": nums(&o.tines),
+            "alpha": num(o.alpha), "lambda": num(o.lambda)}),
+        Op::Drops(d) | Op::Sprays(d) => {
+            let mut m = Map::new();
+            m.insert("type".into(), json!(t));
+            m.insert("centers".into(), points(&d.centers));
+            match &d.radii {
+                Radii::One(r) => m.insert("radius".into(), num(*r)),
+                Radii::Each(list) => m.insert("radii".into(), nums(list)),
+            };
+            let colors = d.colors.iter().map(|c| json!(c.to_string())).collect();
+            m.insert("colors".into(), Value::Array(colors));
+            Value::Object(m)
+        }
+        Op::Jiggle(o) => json!({"type": t, "angle": num(o.angle), "wavelength": num(o.wavelength),
+            "along": num(o.along), "across": num(o.across), "phase": num(o.phase)}),
+        Op::Stylus(o) => {
+            let mut m = Map::new();
+            m.insert("type".into(), json!(t));
+            m.insert("path".into(), points(&o.path));
+            m.insert("wake".into(), num(o.wake));
+            if let Some(tips) = &o.tips {
+                m.insert("tips".into(), nums(tips));
+            }
+            Value::Object(m)
+        }
     }
+}
+
+fn nums(list: &[f64]) -> Value {
+    Value::Array(list.iter().map(|&v| num(v)).collect())
+}
+
+fn points(list: &[Point]) -> Value {
+    Value::Array(list.iter().map(|p| pair(p.x, p.y)).collect())
 }
 
 fn palette_value(p: &Palette) -> Value {
@@ -634,6 +841,7 @@ impl Design {
         })?;
         let mut reader = Reader {
             c: Checker::default(),
+            version: CURRENT_VERSION,
         };
         let design = reader.design(&value);
         match (design, reader.c.errors.is_empty()) {
@@ -642,8 +850,8 @@ impl Design {
         }
     }
 
-    /// The document as a JSON value in schema field order: version 1 when the design
-    /// uses no v2 feature (exactly the v1 document), else version 2.
+    /// The document as a JSON value in schema field order, with the lowest version that
+    /// holds it ([`Design::version`]): a v1 design is exactly the v1 document.
     pub fn to_value(&self) -> Value {
         debug_assert!(CURRENT_VERSION >= self.version());
         let mut m = Map::new();

@@ -32,7 +32,9 @@ pub use json::DesignError;
 pub use kurbo::{Point, Vec2};
 pub use op_kind::OpKind;
 pub use ops::{
-    ANGLE_STEP, Back, Circular, Drop, LENGTH_STEP, OP_TYPES, Op, Rake, Spray, Tine, Vortex, Wavy,
+    ANGLE_STEP, Back, Circular, Comb, Drop, DropSet, Jiggle, LENGTH_STEP, MAX_COMB_TINES,
+    MAX_DROPS, MAX_STYLUS_POINTS, MAX_STYLUS_TIPS, MAX_STYLUS_WORK, OP_TYPES, Op, Radii, Rake,
+    Shift, Spray, Stylus, StylusSegment, Tine, Turn, Vortex, WAKE_REACH, Wavy, sub_steps_of,
 };
 pub use render::{
     MAX_OUTPUT_PIXELS, MAX_OUTPUT_SIDE, RenderError, RenderOptions, output_size, render,

@@ -19,17 +19,29 @@ pub enum OpKind {
     Circular = 4,
     /// A vortex.
     Vortex = 5,
+    /// A shift or a turn (a rigid motion of the tank).
+    Rigid = 6,
+    /// A finite comb of tines at listed offsets.
+    Tines = 7,
+    /// A jiggle.
+    Jiggle = 8,
+    /// A stylus stroke.
+    Stylus = 9,
 }
 
 impl OpKind {
     /// Every kind, in code order.
-    pub const ALL: [OpKind; 6] = [
+    pub const ALL: [OpKind; 10] = [
         OpKind::Drop,
         OpKind::Spray,
         OpKind::Comb,
         OpKind::Wave,
         OpKind::Circular,
         OpKind::Vortex,
+        OpKind::Rigid,
+        OpKind::Tines,
+        OpKind::Jiggle,
+        OpKind::Stylus,
     ];
 
     /// The code carried to the GPU.
@@ -51,6 +63,10 @@ impl OpKind {
             OpKind::Wave => "KIND_WAVE",
             OpKind::Circular => "KIND_CIRCULAR",
             OpKind::Vortex => "KIND_VORTEX",
+            OpKind::Rigid => "KIND_RIGID",
+            OpKind::Tines => "KIND_TINES",
+            OpKind::Jiggle => "KIND_JIGGLE",
+            OpKind::Stylus => "KIND_STYLUS",
         }
     }
 }
@@ -65,6 +81,6 @@ mod tests {
             assert_eq!(k.code() as usize, i);
             assert_eq!(OpKind::from_code(k.code()), Some(k));
         }
-        assert_eq!(OpKind::from_code(6), None);
+        assert_eq!(OpKind::from_code(10), None);
     }
 }

@@ -147,15 +147,16 @@ struct Shader {
 
 impl Shader {
     fn new(design: &Design) -> Self {
-        let mut srgb: Vec<Rgb8> = design
-            .ops
+        let walker = Walker::new(&design.ops);
+        let mut srgb: Vec<Rgb8> = walker
+            .steps()
             .iter()
             .map(|o| o.ink().unwrap_or(design.background))
             .collect();
         srgb.push(design.background);
         let linear = srgb.iter().map(|c| c.to_linear()).collect();
         Self {
-            walker: Walker::new(&design.ops),
+            walker,
             srgb,
             linear,
             surface: Surface::new(design),

@@ -1,8 +1,12 @@
 //! Deterministic random designs for tests and benchmarks (no external RNG: the same
 //! seed gives the same design on every platform).
 
-use crate::{Circular, Design, Drop, Op, Rake, Rgb8, Spray, Tine, Vortex, Wavy};
+use crate::{
+    Circular, Comb, Design, Drop, DropSet, Jiggle, Op, Radii, Rake, Rgb8, Shift, Spray, Stylus,
+    Tine, Turn, Vortex, Wavy,
+};
 use kurbo::{Point, Vec2};
+use std::sync::Arc;
 
 /// SplitMix64: a tiny, well-distributed 64-bit generator.
 #[derive(Clone, Debug)]
@@ -41,8 +45,10 @@ pub enum Mix {
     DropHeavy,
     /// A few drops first, then about 90 % tines, rakes and wavy combs.
     CombHeavy,
-    /// All seven op types in roughly equal parts.
+    /// All seven op types of schema v1 in roughly equal parts.
     Mixed,
+    /// All fourteen op types (schema v1 and v3) in roughly equal parts.
+    AllTypes,
 }
 
 const PALETTE: [Rgb8; 6] = [
@@ -66,6 +72,7 @@ pub fn random_design(seed: u64, width: u32, height: u32, n_ops: usize, mix: Mix)
             Mix::CombHeavy if i < n_ops / 20 + 1 => 0,
             Mix::CombHeavy => [0, 2, 2, 2, 3, 3, 3, 4, 4, 5][rng.below(10) as usize],
             Mix::Mixed => rng.below(7) as usize,
+            Mix::AllTypes => rng.below(14) as usize,
         };
         let center = Point::new(rng.range(0.0, w), rng.range(0.0, h));
         let color = PALETTE[rng.below(PALETTE.len() as u64) as usize];
@@ -109,11 +116,80 @@ pub fn random_design(seed: u64, width: u32, height: u32, n_ops: usize, mix: Mix)
                 alpha,
                 lambda,
             }),
-            _ => Op::Vortex(Vortex {
+            6 => Op::Vortex(Vortex {
                 center,
                 alpha: alpha * 0.5,
                 lambda,
             }),
+            7 => Op::Shift(Shift {
+                offset: direction * rng.range(0.0, 0.1 * size),
+            }),
+            8 => Op::Turn(Turn { center, angle }),
+            9 => Op::Comb(Comb {
+                origin: center,
+                direction,
+                tines: (0..1 + rng.below(12))
+                    .map(|_| rng.range(-0.5, 0.5) * size)
+                    .collect(),
+                alpha,
+                lambda,
+            }),
+            10 | 11 => {
+                let n = 1 + rng.below(12) as usize;
+                let centers: Arc<[Point]> = (0..n)
+                    .map(|_| Point::new(rng.range(0.0, w), rng.range(0.0, h)))
+                    .collect();
+                let radii = if rng.below(2) == 0 {
+                    Radii::One(rng.range(0.005, 0.05) * size)
+                } else {
+                    Radii::Each((0..n).map(|_| rng.range(0.005, 0.05) * size).collect())
+                };
+                let colors = (0..1 + rng.below(3))
+                    .map(|_| PALETTE[rng.below(PALETTE.len() as u64) as usize])
+                    .collect();
+                let set = DropSet {
+                    centers,
+                    radii,
+                    colors,
+                };
+                if kind == 10 {
+                    Op::Drops(set)
+                } else {
+                    Op::Sprays(set)
+                }
+            }
+            12 => {
+                let wavelength = rng.range(0.1, 1.0) * size;
+                Op::Jiggle(Jiggle {
+                    angle,
+                    wavelength,
+                    // |kA| ≤ 0.8.
+                    along: rng.range(-0.8, 0.8) * wavelength / std::f64::consts::TAU,
+                    across: rng.range(-0.05, 0.05) * size,
+                    phase: rng.range(0.0, std::f64::consts::TAU),
+                })
+            }
+            _ => {
+                let wake = rng.range(0.01, 0.04) * size;
+                let mut at = center;
+                let mut heading = angle;
+                let path: Arc<[Point]> = (0..2 + rng.below(8))
+                    .map(|k| {
+                        if k > 0 {
+                            heading += rng.range(-1.0, 1.0);
+                            at += Vec2::from_angle(heading) * rng.range(0.02, 0.12) * size;
+                        }
+                        at
+                    })
+                    .collect();
+                let tips = (rng.below(2) == 0).then(|| {
+                    let spacing = rng.range(1.0, 4.0) * wake;
+                    (0..2 + rng.below(3))
+                        .map(|i| i as f64 * spacing)
+                        .collect::<Arc<[f64]>>()
+                });
+                Op::Stylus(Stylus { path, wake, tips })
+            }
         };
         design.ops.push(op);
     }

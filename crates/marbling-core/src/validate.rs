@@ -1,7 +1,8 @@
 //! Value rules of the design schema, each error naming its JSON path.
 
 use crate::design::{MAX_OPS, MAX_SIDE};
-use crate::{Design, Op};
+use crate::ops::{MAX_COMB_TINES, MAX_DROPS, MAX_STYLUS_POINTS, MAX_STYLUS_TIPS, MAX_STYLUS_WORK};
+use crate::{Design, DropSet, Op, Radii};
 use kurbo::{Point, Vec2};
 use std::fmt;
 
@@ -103,9 +104,53 @@ impl Checker {
         }
     }
 
+    /// The design's ops, counted as [`Op::counted_ops`] does.
     pub(crate) fn op_count(&mut self, n: usize) {
         if n > MAX_OPS {
-            self.push("ops", format!("at most {MAX_OPS} ops are allowed, got {n}"));
+            self.push(
+                "ops",
+                format!(
+                    "at most {MAX_OPS} ops are allowed (each drop of a pattern counts), got {n}"
+                ),
+            );
+        }
+    }
+
+    /// A list's length in `lo..=hi`.
+    fn count(&mut self, path: &str, n: usize, lo: usize, hi: usize, what: &str) -> bool {
+        let ok = (lo..=hi).contains(&n);
+        if !ok {
+            self.push(path, format!("must hold {lo}..={hi} {what}, got {n}"));
+        }
+        ok
+    }
+
+    fn drop_set(&mut self, f: &dyn Fn(&str) -> String, d: &DropSet) {
+        if self.count(&f("centers"), d.len(), 1, MAX_DROPS, "centres") {
+            for (i, &c) in d.centers.iter().enumerate() {
+                self.point(&format!("{}[{i}]", f("centers")), c);
+            }
+        }
+        match &d.radii {
+            Radii::One(r) => self.positive(&f("radius"), *r),
+            Radii::Each(list) => {
+                if list.len() != d.len() {
+                    self.push(
+                        f("radii"),
+                        format!(
+                            "must hold one radius per centre ({}), got {}",
+                            d.len(),
+                            list.len()
+                        ),
+                    );
+                }
+                for (i, &r) in list.iter().enumerate() {
+                    self.positive(&format!("{}[{i}]", f("radii")), r);
+                }
+            }
+        }
+        if d.colors.is_empty() {
+            self.push(f("colors"), "must hold at least one colour, got none");
         }
     }
 
@@ -183,6 +228,78 @@ impl Checker {
                 self.finite(&f("alpha"), v.alpha);
                 self.positive(&f("lambda"), v.lambda);
             }
+            Op::Shift(s) => self.point(&f("offset"), s.offset.to_point()),
+            Op::Turn(t) => {
+                self.point(&f("center"), t.center);
+                self.finite(&f("angle"), t.angle);
+            }
+            Op::Comb(c) => {
+                self.point(&f("origin"), c.origin);
+                self.direction(&f("direction"), c.direction);
+                if self.count(
+                    &f("tines"),
+                    c.tines.len(),
+                    1,
+                    MAX_COMB_TINES,
+                    "tine offsets",
+                ) {
+                    for (k, &o) in c.tines.iter().enumerate() {
+                        self.finite(&format!("{}[{k}]", f("tines")), o);
+                    }
+                }
+                self.finite(&f("alpha"), c.alpha);
+                self.positive(&f("lambda"), c.lambda);
+            }
+            Op::Drops(d) | Op::Sprays(d) => self.drop_set(&f, d),
+            Op::Jiggle(j) => {
+                self.finite(&f("angle"), j.angle);
+                self.positive(&f("wavelength"), j.wavelength);
+                let along_ok = self.finite(&f("along"), j.along);
+                self.finite(&f("across"), j.across);
+                self.finite(&f("phase"), j.phase);
+                let ka = j.k_along();
+                if along_ok && j.wavelength > 0.0 && ka.abs() >= 1.0 {
+                    self.push(
+                        f("along"),
+                        format!(
+                            "must satisfy |2π·along/wavelength| < 1 (the jiggle must not fold the tank), got {:.4} for along {} and wavelength {}; use a smaller along or a longer wavelength",
+                            ka.abs(),
+                            j.along,
+                            j.wavelength
+                        ),
+                    );
+                }
+            }
+            Op::Stylus(s) => {
+                let path_ok = self.count(&f("path"), s.path.len(), 2, MAX_STYLUS_POINTS, "points");
+                let mut finite = path_ok;
+                for (k, &p) in s.path.iter().enumerate() {
+                    let ok = self.finite(&format!("{}[{k}][0]", f("path")), p.x)
+                        & self.finite(&format!("{}[{k}][1]", f("path")), p.y);
+                    finite &= ok;
+                }
+                self.positive(&f("wake"), s.wake);
+                let mut tips_ok = true;
+                if let Some(tips) = &s.tips {
+                    tips_ok = self.count(&f("tips"), tips.len(), 1, MAX_STYLUS_TIPS, "tip offsets");
+                    for (k, &o) in tips.iter().enumerate() {
+                        tips_ok &= self.finite(&format!("{}[{k}]", f("tips")), o);
+                    }
+                }
+                if finite && tips_ok && s.wake.is_finite() && s.wake > 0.0 {
+                    let work = s.sub_steps().saturating_mul(s.tip_count());
+                    if work > MAX_STYLUS_WORK {
+                        self.push(
+                            f("path"),
+                            format!(
+                                "needs {} sub-steps × {} tip(s) = {work}, more than {MAX_STYLUS_WORK}; use a larger wake or a shorter path",
+                                s.sub_steps(),
+                                s.tip_count()
+                            ),
+                        );
+                    }
+                }
+            }
         }
     }
 
@@ -202,7 +319,7 @@ impl Design {
         let mut c = Checker::default();
         c.side("width", self.width);
         c.side("height", self.height);
-        c.op_count(self.ops.len());
+        c.op_count(self.counted_ops());
         for (i, op) in self.ops.iter().enumerate() {
             c.op(i, op);
         }

@@ -5,13 +5,17 @@
 //! constants in registers and lets the compiler vectorise the combs).
 
 use crate::Op;
-use crate::compiled::{CompiledOp, comb_shift, drop_back, swirl_turn, wave_shift};
+use crate::compiled::{
+    CompiledOp, comb_shift, drop_back, jiggle_back, rigid_move, swirl_turn, tines_shift, wave_shift,
+};
 use kurbo::Point;
 
 /// Where a sample's walk ended.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Traced {
-    /// Covered by the ink of op number `usize` (an index into `Design::ops`).
+    /// Covered by the ink of compiled op number `usize` (an index into
+    /// [`Walker::steps`]; the same as into `Design::ops` for designs without drop
+    /// patterns).
     Ink(usize),
     /// Reached the background at this (back-traced) design point.
     Background(Point),
@@ -59,7 +63,12 @@ impl Walker {
         }
     }
 
-    /// Number of ops.
+    /// The compiled ops, oldest first (a drop pattern has one per drop).
+    pub fn steps(&self) -> &[CompiledOp] {
+        &self.steps
+    }
+
+    /// Number of compiled ops.
     pub fn len(&self) -> usize {
         self.steps.len()
     }
@@ -89,6 +98,12 @@ impl Walker {
                 CompiledOp::Comb { .. } => (x, y) = comb_shift(x, y, s, -1.0),
                 CompiledOp::Wave { .. } => (x, y) = wave_shift(x, y, s, -1.0),
                 CompiledOp::Swirl { .. } => (x, y) = swirl_turn(x, y, s, -1.0),
+                CompiledOp::Rigid { .. } => (x, y) = rigid_move(x, y, s, -1.0),
+                CompiledOp::Tines { .. } => (x, y) = tines_shift(x, y, s, -1.0),
+                CompiledOp::Jiggle { .. } | CompiledOp::Stylus { .. } => {
+                    let q = s.inverse(Point::new(x, y)).unwrap_or_default();
+                    (x, y) = (q.x, q.y);
+                }
             }
         }
         Traced::Background(Point::new(x, y))
@@ -153,6 +168,20 @@ impl Walker {
                 CompiledOp::Comb { .. } => apply(xs, ys, |x, y| comb_shift(x, y, s, -1.0)),
                 CompiledOp::Wave { .. } => apply(xs, ys, |x, y| wave_shift(x, y, s, -1.0)),
                 CompiledOp::Swirl { .. } => apply(xs, ys, |x, y| swirl_turn(x, y, s, -1.0)),
+                CompiledOp::Rigid { .. } => apply(xs, ys, |x, y| rigid_move(x, y, s, -1.0)),
+                CompiledOp::Tines { .. } => apply(xs, ys, |x, y| tines_shift(x, y, s, -1.0)),
+                CompiledOp::Jiggle { .. } => apply(xs, ys, |x, y| {
+                    let q = jiggle_back(Point::new(x, y), s);
+                    (q.x, q.y)
+                }),
+                CompiledOp::Stylus { ref segments } => {
+                    for seg in segments.iter().rev() {
+                        apply(xs, ys, |x, y| {
+                            let q = seg.inverse(Point::new(x, y));
+                            (q.x, q.y)
+                        });
+                    }
+                }
             }
         }
         for i in 0..ids.len() {

@@ -1,8 +1,14 @@
 //! Every op is a homeomorphism: inverse ∘ forward = identity (1e-9 relative), and it
-//! preserves area: the forward map's Jacobian determinant is 1 (within 1e-6).
+//! preserves area: the forward map's Jacobian determinant is 1 (within 1e-6) — except
+//! the jiggle, whose determinant is 1 + kA·cos φ (checked against that formula).
 
-use marbling_core::{Back, Circular, Drop, Op, Point, Rake, Rgb8, Spray, Tine, Vec2, Vortex, Wavy};
+use marbling_core::{
+    Back, Circular, Comb, Drop, DropSet, Jiggle, Op, Point, Radii, Rake, Rgb8, Shift, Spray,
+    Stylus, Tine, Turn, Vec2, Vortex, Wavy,
+};
 use proptest::prelude::*;
+use std::f64::consts::TAU;
+use std::sync::Arc;
 
 const INK: Rgb8 = Rgb8::new(10, 20, 30);
 
@@ -76,12 +82,94 @@ fn op() -> impl Strategy<Value = Op> {
                 lambda
             })
         ),
-        (point(), alpha, lambda).prop_map(|(center, alpha, lambda)| Op::Vortex(Vortex {
-            center,
+        (point(), alpha.clone(), lambda.clone()).prop_map(|(center, alpha, lambda)| Op::Vortex(
+            Vortex {
+                center,
+                alpha,
+                lambda
+            }
+        )),
+        v3_op(),
+    ]
+}
+
+/// The ops schema v3 adds.
+fn v3_op() -> impl Strategy<Value = Op> {
+    let alpha = -200.0..200.0f64;
+    let lambda = 0.5..100.0f64;
+    prop_oneof![
+        (direction(), 0.0..40.0f64).prop_map(|(d, k)| Op::Shift(Shift { offset: d * k })),
+        (point(), -10.0..10.0f64).prop_map(|(center, angle)| Op::Turn(Turn { center, angle })),
+        (
+            point(),
+            direction(),
+            prop::collection::vec(-300.0..300.0f64, 1..8),
             alpha,
             lambda
-        })),
+        )
+            .prop_map(|(origin, direction, tines, alpha, lambda)| Op::Comb(Comb {
+                origin,
+                direction,
+                tines: tines.into(),
+                alpha,
+                lambda
+            })),
+        (
+            prop::collection::vec(point(), 1..5),
+            1.0..100.0f64,
+            any::<bool>()
+        )
+            .prop_map(|(centers, radius, spray)| {
+                let set = DropSet {
+                    centers: centers.into(),
+                    radii: Radii::One(radius),
+                    colors: Arc::from([INK, Rgb8::new(200, 100, 0)]),
+                };
+                if spray {
+                    Op::Sprays(set)
+                } else {
+                    Op::Drops(set)
+                }
+            }),
+        (
+            0.0..TAU,
+            5.0..500.0f64,
+            -0.95..0.95f64,
+            -60.0..60.0f64,
+            -10.0..10.0f64
+        )
+            .prop_map(|(angle, wavelength, ka, across, phase)| Op::Jiggle(Jiggle {
+                angle,
+                wavelength,
+                along: ka * wavelength / TAU,
+                across,
+                phase
+            })),
+        stylus(),
     ]
+}
+
+/// A stroke of 2..=5 points from somewhere on the sheet, one tip or up to four.
+fn stylus() -> impl Strategy<Value = Op> {
+    (
+        point(),
+        prop::collection::vec((0.0..TAU, 1.0..200.0f64), 1..5),
+        2.0..40.0f64,
+        prop::option::of(prop::collection::vec(-50.0..50.0f64, 1..4)),
+    )
+        .prop_map(|(start, steps, wake, tips)| {
+            let mut at = start;
+            let mut path = vec![start];
+            for (a, len) in steps {
+                at += Vec2::from_angle(a) * len;
+                path.push(at);
+            }
+            Op::Stylus(Stylus {
+                path: path.into(),
+                wake,
+                tips: tips.map(Into::into),
+            })
+        })
 }
 
 /// Points where an op is hard to invert: near its centre (`eps` × its size away), on its
@@ -103,7 +191,19 @@ fn tricky_point(op: &Op, t: f64, eps: f64) -> Point {
             let m = r.direction.normalize();
             r.origin + m * (t * 300.0) + Vec2::new(-m.y, m.x) * (r.spacing * (t * 10.0).round())
         }
-        Op::Wavy(_) => Point::new(t * 100.0, eps),
+        Op::Wavy(_) | Op::Shift(_) | Op::Turn(_) | Op::Jiggle(_) => Point::new(t * 100.0, eps),
+        Op::Comb(c) => {
+            let m = c.direction.normalize();
+            let k = ((t + 1.0) * 10.0) as usize % c.tines.len();
+            c.origin + m * (t * 300.0) + Vec2::new(-m.y, m.x) * (c.tines[k] + eps)
+        }
+        Op::Drops(d) | Op::Sprays(d) => {
+            d.centers[0] + Vec2::from_angle(t * 7.0) * (eps * d.radius(0))
+        }
+        Op::Stylus(st) => {
+            let (a, b) = (st.path[0], st.path[1]);
+            a + (b - a) * ((t + 1.0) / 2.0) + Vec2::from_angle(t * 7.0) * (eps * st.wake)
+        }
     }
 }
 
@@ -112,7 +212,7 @@ fn round_trip(op: &Op, p: Point) -> Result<(), TestCaseError> {
     let back = match op.inverse(q) {
         Back::Moved(b) => b,
         // A spray covers but does not move: the forward image is the point itself.
-        Back::Ink(_) if matches!(op, Op::Spray(_)) => return Ok(()),
+        Back::Ink(_) if matches!(op, Op::Spray(_) | Op::Sprays(_)) => return Ok(()),
         Back::Ink(_) => {
             return Err(TestCaseError::fail(format!(
                 "{op:?}: forward({p:?}) = {q:?} lands in ink"
@@ -158,6 +258,20 @@ fn near_singular(op: &Op, p: Point, margin: f64) -> bool {
             rho < 1.0 || (rho - c.radius).abs() < margin
         }
         Op::Vortex(v) => (p - v.center).hypot() < 1.0,
+        Op::Shift(_) | Op::Turn(_) | Op::Jiggle(_) | Op::Sprays(_) => false,
+        Op::Comb(c) => {
+            // Tine lines, and lines halfway between two tines (where the nearest changes).
+            let m = c.direction.normalize();
+            let s = (p - c.origin).dot(Vec2::new(-m.y, m.x));
+            let mut d: Vec<f64> = c.tines.iter().map(|o| (s - o).abs()).collect();
+            d.sort_by(f64::total_cmp);
+            d[0] < margin || (d.len() > 1 && d[1] - d[0] < 2.0 * margin)
+        }
+        Op::Drops(d) => d
+            .centers
+            .iter()
+            .any(|&c| (p - c).hypot() < margin.max(1e-3 * d.radius(0))),
+        Op::Stylus(_) => false,
     }
 }
 
@@ -188,13 +302,18 @@ proptest! {
         let h = 1e-5;
         prop_assume!(!near_singular(&op, p, 0.05));
         let (det, largest) = jacobian(&op, p, h);
+        // The jiggle is the one op that is not area preserving: 1 + kA·cos φ.
+        let expected = match &op {
+            Op::Jiggle(j) => j.jacobian(p),
+            _ => 1.0,
+        };
         // Each difference quotient carries a rounding error of about ε·|p|/h (≈ 3e-8 at
         // |p| = 1,400), multiplied in the determinant by the other entries: a steep comb
         // (λ < 1, α λ / (d + λ)² in the hundreds) legitimately lands near 1e-6, so the
         // budget grows with the largest entry. A map that is not area preserving is off
         // by far more (see the test below).
         let budget = 1e-6 * (1.0 + largest);
-        prop_assert!((det - 1.0).abs() <= budget, "{op:?} at {p:?}: det J = {det}, budget {budget:e}");
+        prop_assert!((det - expected).abs() <= budget, "{op:?} at {p:?}: det J = {det}, expected {expected}, budget {budget:e}");
     }
 }
 

@@ -8,6 +8,9 @@
 //   KIND_COMB (tine/rake): a = (kind, ax, ay, mx),          b = (my, αλ, λ, spacing; 0 = tine)
 //   KIND_WAVE:             a = (kind, mx, my, amplitude),   b = (2π/wavelength, phase, 0, 0)
 //   KIND_CIRCULAR, KIND_VORTEX: a = (kind, cx, cy, r),      b = (αλ, λ, 0, 0)
+//   KIND_RIGID (shift, turn):   a = (kind, cx, cy, sin θ),  b = (cos θ, ox, oy, 0)
+//   KIND_JIGGLE:           a = (kind, ux, uy, 2π/λ),        b = (A, B, φ₀ mod 2π, 0)
+// KIND_TINES and KIND_STYLUS span several records; records.wgsl walks them.
 // Packed sRGB is r·65536 + g·256 + b, exact in an f32 (24 bits).
 
 const KIND_DROP: u32 = 0u;
@@ -16,6 +19,10 @@ const KIND_COMB: u32 = 2u;
 const KIND_WAVE: u32 = 3u;
 const KIND_CIRCULAR: u32 = 4u;
 const KIND_VORTEX: u32 = 5u;
+const KIND_RIGID: u32 = 6u;
+const KIND_TINES: u32 = 7u;
+const KIND_JIGGLE: u32 = 8u;
+const KIND_STYLUS: u32 = 9u;
 
 // Walks design point `p` back through the op (a, b): returns (x, y, covered), where
 // covered = 1.0 when `p` lies in the op's ink (the walk stops there with colour `b`),
@@ -31,10 +38,51 @@ fn op_back(a: vec4<f32>, b: vec4<f32>, p: vec2<f32>) -> vec3<f32> {
         case KIND_WAVE: {
             return wave_back(a, b, p);
         }
-        default: {
+        case KIND_CIRCULAR, KIND_VORTEX: {
             return swirl_back(a, b, p);
         }
+        case KIND_RIGID: {
+            return rigid_back(a, b, p);
+        }
+        case KIND_JIGGLE: {
+            return jiggle_back(a, b, p);
+        }
+        default: {
+            // Several-record kinds are walked by records.wgsl, never here.
+            return vec3<f32>(p, 0.0);
+        }
     }
+}
+
+// op_back for KIND_RIGID: P = C + R(−θ)(P′ − o − C).
+fn rigid_back(a: vec4<f32>, b: vec4<f32>, p: vec2<f32>) -> vec3<f32> {
+    let q = p - b.yz - a.yz;
+    let s = a.w;
+    let c = b.x;
+    return vec3<f32>(a.yz + vec2<f32>(q.x * c + q.y * s, -q.x * s + q.y * c), 0.0);
+}
+
+// Newton steps of the jiggle's inverse (safeguarded in the bracket; the error this
+// leaves is measured by tests/compute.rs).
+const JIGGLE_NEWTON: u32 = 6u;
+
+// op_back for KIND_JIGGLE: solves φ + kA·sin φ = k(P′·u) + φ₀ (t reduced to [0, 2π)),
+// then P = P′ − A·sin φ·u − B·cos φ·v with v = (−u.y, u.x).
+fn jiggle_back(a: vec4<f32>, b: vec4<f32>, p: vec2<f32>) -> vec3<f32> {
+    let u = a.yz;
+    let v = vec2<f32>(-u.y, u.x);
+    let tau = 6.2831855;
+    var t = a.w * dot(p, u) + b.z;
+    t = t - floor(t / tau) * tau;
+    let c = a.w * b.x;
+    let lo = t - abs(c);
+    let hi = t + abs(c);
+    var phi = clamp(t - c * sin(t), lo, hi);
+    for (var i = 0u; i < JIGGLE_NEWTON; i++) {
+        let f = phi + c * sin(phi) - t;
+        phi = clamp(phi - f / (1.0 + c * cos(phi)), lo, hi);
+    }
+    return vec3<f32>(p - b.x * sin(phi) * u - b.y * cos(phi) * v, 0.0);
 }
 
 // op_back for KIND_DROP and KIND_SPRAY (a spray droplet leaves the rest in place).

@@ -1,6 +1,6 @@
 // The exact renderer: every sample of every output pixel walks back through ALL ops of
-// the design, newest → oldest, in one fragment-shader pass (common.wgsl, marbling-noise's
-// noise module and surface.wgsl are prepended; see src/shaders.rs).
+// the design, newest → oldest, in one fragment-shader pass (common.wgsl, records.wgsl,
+// marbling-noise's noise module and surface.wgsl are prepended; see src/shaders.rs).
 // Vertex + fragment only, uniforms + a float texture: runs on WebGPU and WebGL2 alike.
 // render_compute.wgsl adds a compute entry point drawing the same `shade`.
 
@@ -12,9 +12,9 @@ struct RenderParams {
     offset: vec2<f32>,
     // Design pixels per output pixel (1 / scale).
     inv_scale: f32,
-    // Number of ops in the op texture.
+    // Number of records in the op texture.
     op_count: u32,
-    // Ops per row of the op texture (2 texels each).
+    // Records per row of the op texture (2 texels each).
     ops_per_row: u32,
     // Samples of the first pass, at samples[0 .. first_count].
     first_count: u32,
@@ -27,7 +27,7 @@ struct RenderParams {
 }
 
 @group(0) @binding(0) var<uniform> params: RenderParams;
-// Rgba32Float, 2 texels per op, op k at (2·(k mod ops_per_row), k div ops_per_row).
+// Rgba32Float, 2 texels per record, record k at (2·(k mod ops_per_row), k div ops_per_row).
 @group(0) @binding(1) var ops: texture_2d<f32>;
 // Schema v2 noise background and grain overlays (surface.flags == 0: none).
 @group(0) @binding(2) var<uniform> surface: SurfaceParams;
@@ -57,29 +57,18 @@ fn trace(p0: vec2<f32>) -> vec4<f32> {
 }
 
 fn walk(p0: vec2<f32>) -> Hit {
-    let n = params.op_count;
-    if n == 0u {
-        return Hit(params.background, true, p0);
+    let e = walk_records(0u, params.op_count, p0);
+    if e.covered {
+        return Hit(e.ink, false, e.p);
     }
-    let last_col = i32(params.ops_per_row * 2u) - 2;
-    var row = i32((n - 1u) / params.ops_per_row);
-    var col = i32(((n - 1u) % params.ops_per_row) * 2u);
-    var p = p0;
-    for (var i = 0u; i < n; i++) {
-        let a = textureLoad(ops, vec2<i32>(col, row), 0);
-        let b = textureLoad(ops, vec2<i32>(col + 1, row), 0);
-        let r = op_back(a, b, p);
-        if r.z > 0.0 {
-            return Hit(b, false, p);
-        }
-        p = r.xy;
-        col -= 2;
-        if col < 0 {
-            col = last_col;
-            row -= 1;
-        }
-    }
-    return Hit(params.background, true, p);
+    return Hit(params.background, true, e.p);
+}
+
+// Record i of the op texture (records.wgsl walks them).
+fn op_record(i: u32) -> OpRecord {
+    let col = i32((i % params.ops_per_row) * 2u);
+    let row = i32(i / params.ops_per_row);
+    return OpRecord(textureLoad(ops, vec2<i32>(col, row), 0), textureLoad(ops, vec2<i32>(col + 1, row), 0));
 }
 
 // Weighted average in linear light of samples[start .. start + count] of output pixel

@@ -1,17 +1,22 @@
-//! Packing a design's ops into the f32 texels the shaders read: each op's GPU record,
-//! [`GpuOp`], is two `vec4<f32>` (keep in sync with the encoding described at the top of
-//! `shaders/common.wgsl`).
+//! Packing a design's ops into the f32 texels the shaders read: records, [`GpuOp`], of
+//! two `vec4<f32>` each (keep in sync with the encoding described at the top of
+//! `shaders/common.wgsl` and `shaders/records.wgsl`).
 //!
-//! A record is made from the op's one compiled form, [`CompiledOp`] (unit direction and
+//! Records are made from the op's one compiled form, [`CompiledOp`] (unit direction and
 //! normal, αλ, r², 2π/wavelength computed once in f64), rounded once to f32, so the
 //! shader does as little f32 arithmetic as possible and the CPU and GPU cannot derive
-//! the constants differently. Its first value is the [`OpKind`] code.
+//! the constants differently. Most ops are one record whose first value is the
+//! [`OpKind`] code; a drop pattern is one record per drop, a finite comb and a stylus
+//! are a header record (newest) with data records before it ([`records`]).
 
 use marbling_core::{CompiledOp, Op, OpKind, Rgb8};
 use std::f64::consts::TAU;
 
-/// Texels (RGBA f32) per op in the op texture.
+/// Texels (RGBA f32) per record in the op texture.
 pub const TEXELS_PER_OP: u32 = 2;
+
+/// Offsets (tines, tips) per data record.
+const OFFSETS_PER_RECORD: usize = 8;
 
 /// The sRGB bytes as one exact f32: r·65536 + g·256 + b (< 2²⁴).
 pub fn pack_srgb(c: Rgb8) -> f32 {
@@ -49,8 +54,10 @@ impl GpuOp {
     }
 }
 
-impl From<&CompiledOp> for GpuOp {
-    fn from(op: &CompiledOp) -> Self {
+impl GpuOp {
+    /// The one record of an op of a one-record kind (every kind but [`OpKind::Tines`]
+    /// and [`OpKind::Stylus`]); `None` for those two.
+    pub fn single(op: &CompiledOp) -> Option<Self> {
         let kind = op.kind().code() as f32;
         let f = |v: f64| v as f32;
         let (a, b) = match *op {
@@ -90,17 +97,128 @@ impl From<&CompiledOp> for GpuOp {
                 lambda,
                 ..
             } => ([kind, f(cx), f(cy), f(r)], [f(al), f(lambda), 0.0, 0.0]),
+            CompiledOp::Rigid {
+                cx,
+                cy,
+                sin,
+                cos,
+                ox,
+                oy,
+            } => ([kind, f(cx), f(cy), f(sin)], [f(cos), f(ox), f(oy), 0.0]),
+            CompiledOp::Jiggle {
+                ux,
+                uy,
+                k,
+                along,
+                across,
+                phase,
+            } => (
+                [kind, f(ux), f(uy), f(k)],
+                [f(along), f(across), f(phase.rem_euclid(TAU)), 0.0],
+            ),
+            CompiledOp::Tines { .. } | CompiledOp::Stylus { .. } => return None,
         };
-        Self { a, b }
+        Some(Self { a, b })
     }
 }
 
-/// Encodes one op for the shaders (through its compiled form).
-pub fn encode_op(op: &Op) -> GpuOp {
-    GpuOp::from(&CompiledOp::new(op))
+/// Data records holding `offsets`, 8 per record, the last padded with the first offset
+/// (which changes no minimum).
+fn offset_records(offsets: &[f64], out: &mut Vec<GpuOp>) {
+    for chunk in offsets.chunks(OFFSETS_PER_RECORD) {
+        let mut v = [offsets[0] as f32; 8];
+        for (slot, &o) in v.iter_mut().zip(chunk) {
+            *slot = o as f32;
+        }
+        out.push(GpuOp {
+            a: [v[0], v[1], v[2], v[3]],
+            b: [v[4], v[5], v[6], v[7]],
+        });
+    }
 }
 
-/// Where ops sit in an op texture: op k at texels (2·(k mod ops_per_row),
+/// Appends the records of one compiled op, oldest first (the header, read first by the
+/// backward walk, last):
+/// - [`OpKind::Tines`]: ⌈T/8⌉ records of tine offsets, then the header.
+/// - [`OpKind::Stylus`]: for more than one tip, ⌈T/8⌉ records of tip offsets; then per
+///   segment two records, `H2` and the header `H1` (see `shaders/records.wgsl`).
+/// - every other kind: its one record ([`GpuOp::single`]).
+pub fn compiled_records(op: &CompiledOp, out: &mut Vec<GpuOp>) {
+    let f = |v: f64| v as f32;
+    match op {
+        CompiledOp::Tines {
+            ax,
+            ay,
+            mx,
+            my,
+            al,
+            lambda,
+            offsets,
+        } => {
+            offset_records(offsets, out);
+            let kind = OpKind::Tines.code() as f32;
+            out.push(GpuOp {
+                a: [kind, f(*ax), f(*ay), f(*mx)],
+                b: [f(*my), f(*al), f(*lambda), offsets.len() as f32],
+            });
+        }
+        CompiledOp::Stylus { segments } => {
+            let Some(first) = segments.first() else {
+                return;
+            };
+            let tips = &first.tips;
+            let tips_start = out.len();
+            if tips.len() > 1 {
+                offset_records(tips, out);
+            }
+            let tip_records = out.len() - tips_start;
+            let kind = OpKind::Stylus.code() as f32;
+            for (k, s) in segments.iter().enumerate() {
+                let h1 = out.len() + 1;
+                let skip = if k == 0 { 2 + tip_records } else { 2 };
+                out.push(GpuOp {
+                    a: [
+                        tips.len() as f32,
+                        f(s.tip_range.0),
+                        f(s.tip_range.1),
+                        (h1 - tips_start) as f32,
+                    ],
+                    b: [skip as f32, f(s.length), 0.0, 0.0],
+                });
+                out.push(GpuOp {
+                    a: [kind, f(s.start.x), f(s.start.y), f(s.n.x)],
+                    b: [f(s.n.y), f(s.delta), s.steps as f32, f(s.wake)],
+                });
+            }
+        }
+        single => out.extend(GpuOp::single(single)),
+    }
+}
+
+/// Appends the records of `op` (of each drop of a drop pattern), oldest first.
+pub fn records(op: &Op, out: &mut Vec<GpuOp>) {
+    for c in CompiledOp::of(op) {
+        compiled_records(&c, out);
+    }
+}
+
+/// The records of `op`, oldest first.
+pub fn op_records(op: &Op) -> Vec<GpuOp> {
+    let mut out = Vec::new();
+    records(op, &mut out);
+    out
+}
+
+/// The one record of an op the live preview can walk (one record; `None` for a drop
+/// pattern, a finite comb or a stylus).
+pub fn encode_op(op: &Op) -> Option<GpuOp> {
+    match CompiledOp::of(op).as_slice() {
+        [c] => GpuOp::single(c),
+        _ => None,
+    }
+}
+
+/// Where records sit in an op texture: record k at texels (2·(k mod ops_per_row),
 /// k div ops_per_row) and the one to its right.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct OpLayout {
@@ -159,26 +277,30 @@ pub struct OpTexels {
     pub height: u32,
     /// Ops per texture row (`width / 2`).
     pub ops_per_row: u32,
-    /// Number of ops encoded.
+    /// Number of records encoded.
     pub op_count: u32,
     /// `width × height` texels, row-major; unused texels are zero.
     pub texels: Vec<[f32; 4]>,
 }
 
-/// Lays out `ops` (oldest first) in a texture at most `max_side` texels wide and high
-/// (`max_side` ≥ 2; WebGL2 guarantees 2048). `None` when they do not fit.
+/// Lays out the records of `ops` (oldest first) in a texture at most `max_side` texels
+/// wide and high (`max_side` ≥ 2; WebGL2 guarantees 2048). `None` when they do not fit.
 pub fn layout_ops(ops: &[Op], max_side: u32) -> Option<OpTexels> {
-    let layout = OpLayout::for_capacity(ops.len(), max_side)?;
+    let mut recs = Vec::with_capacity(ops.len());
+    for op in ops {
+        records(op, &mut recs);
+    }
+    let layout = OpLayout::for_capacity(recs.len(), max_side)?;
     let mut texels = vec![[0.0f32; 4]; layout.width as usize * layout.height as usize];
-    for (k, op) in ops.iter().enumerate() {
+    for (k, r) in recs.iter().enumerate() {
         let i = k * TEXELS_PER_OP as usize;
-        texels[i..i + 2].copy_from_slice(&encode_op(op).texels());
+        texels[i..i + 2].copy_from_slice(&r.texels());
     }
     Some(OpTexels {
         width: layout.width,
         height: layout.height,
         ops_per_row: layout.ops_per_row,
-        op_count: ops.len() as u32,
+        op_count: recs.len() as u32,
         texels,
     })
 }
@@ -205,7 +327,7 @@ mod tests {
             let i = (row * t.width + col) as usize;
             assert_eq!(
                 [t.texels[i], t.texels[i + 1]],
-                encode_op(&d.ops[k]).texels()
+                encode_op(&d.ops[k]).expect("one record").texels()
             );
         }
         assert!(layout_ops(&d.ops, 4).is_none());

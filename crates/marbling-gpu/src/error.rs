@@ -16,10 +16,12 @@ pub enum GpuError {
     /// The requested output is invalid (bad scale, too large).
     #[error(transparent)]
     Render(#[from] marbling_core::RenderError),
-    /// The design has more ops than the op texture can hold on this device.
-    #[error("{ops} ops do not fit in an op texture of at most {max_side}×{max_side} texels")]
+    /// The design has more op records than the op texture can hold on this device.
+    #[error(
+        "{ops} op records (one per op, per drop of a pattern, per stylus segment) do not fit in an op texture of at most {max_side}×{max_side} texels"
+    )]
     TooManyOps {
-        /// Ops in the design.
+        /// Op records of the design.
         ops: usize,
         /// The device's largest 2D texture side.
         max_side: u32,

@@ -5,7 +5,7 @@
 use crate::DesignPrefix;
 use crate::GpuError;
 use crate::bindings;
-use crate::encode::{OpLayout, TEXELS_PER_OP, encode_op};
+use crate::encode::{GpuOp, OpLayout, TEXELS_PER_OP, records};
 use crate::params::RenderParams;
 use crate::shaders::{RENDER_PLAIN_WGSL, render_wgsl};
 use crate::surface::SurfaceParams;
@@ -33,7 +33,11 @@ pub struct PreparedDesign {
     layout: OpLayout,
     /// The ops in the texture, oldest first (all of them are walked).
     uploaded: Vec<Op>,
-    /// Ops written into the texture since it was prepared.
+    /// The number of records after each uploaded op.
+    record_ends: Vec<usize>,
+    /// The records in the texture, oldest first.
+    records: Vec<GpuOp>,
+    /// Records written into the texture since it was prepared.
     written: u64,
     surface: wgpu::Buffer,
     surface_params: SurfaceParams,
@@ -154,8 +158,10 @@ impl ExactRenderer {
         shown: DesignPrefix<'_>,
     ) -> Result<PreparedDesign, GpuError> {
         let max_side = device.limits().max_texture_dimension_2d;
-        let n = shown.op_count();
-        let layout = room_for(n, max_side).ok_or(GpuError::TooManyOps { ops: n, max_side })?;
+        let layout = room_for(shown.op_count(), max_side).ok_or(GpuError::TooManyOps {
+            ops: shown.op_count(),
+            max_side,
+        })?;
         let ops_texture = op_texture(device, layout);
         let uniform = bindings::uniform_buffer::<RenderParams>(device, "marbling render params");
         let surface = bindings::uniform_buffer::<SurfaceParams>(device, "marbling surface params");
@@ -170,6 +176,8 @@ impl ExactRenderer {
             ops_texture,
             layout,
             uploaded: Vec::new(),
+            record_ends: Vec::new(),
+            records: Vec::new(),
             written: 0,
             surface_params: SurfaceParams::new(design),
             surface,
@@ -211,29 +219,41 @@ impl ExactRenderer {
         prepared: &mut PreparedDesign,
         shown: DesignPrefix<'_>,
     ) -> Result<(), GpuError> {
-        let n = shown.op_count();
-        if n > prepared.layout.capacity() {
-            let max_side = device.limits().max_texture_dimension_2d;
-            let layout = room_for(n, max_side).ok_or(GpuError::TooManyOps { ops: n, max_side })?;
-            prepared.ops_texture = op_texture(device, layout);
-            prepared.layout = layout;
-            prepared.uploaded.clear();
-            prepared.bind_group = self.bind_group(
-                device,
-                &prepared.uniform,
-                &prepared.ops_texture,
-                &prepared.surface,
-            );
-        }
         let same = prepared
             .uploaded
             .iter()
             .zip(shown.ops())
             .take_while(|(a, b)| a == b)
             .count();
+        let mut start = same.checked_sub(1).map_or(0, |k| prepared.record_ends[k]);
         prepared.uploaded.truncate(same);
-        prepared.uploaded.extend(shown.ops().skip(same).copied());
-        write_ops(queue, prepared, same..n);
+        prepared.record_ends.truncate(same);
+        prepared.records.truncate(start);
+        for op in shown.ops().skip(same) {
+            records(op, &mut prepared.records);
+            prepared.uploaded.push(op.clone());
+            prepared.record_ends.push(prepared.records.len());
+        }
+        let n = prepared.records.len();
+        if n > prepared.layout.capacity() {
+            let max_side = device.limits().max_texture_dimension_2d;
+            let Some(layout) = room_for(n, max_side) else {
+                prepared.uploaded.clear();
+                prepared.record_ends.clear();
+                prepared.records.clear();
+                return Err(GpuError::TooManyOps { ops: n, max_side });
+            };
+            prepared.ops_texture = op_texture(device, layout);
+            prepared.layout = layout;
+            prepared.bind_group = self.bind_group(
+                device,
+                &prepared.uniform,
+                &prepared.ops_texture,
+                &prepared.surface,
+            );
+            start = 0;
+        }
+        write_records(queue, prepared, start..n);
         let design = shown.design;
         let surface_params = SurfaceParams::new(design);
         if surface_params != prepared.surface_params {
@@ -330,13 +350,17 @@ fn op_texture(device: &wgpu::Device, layout: OpLayout) -> wgpu::Texture {
     })
 }
 
-/// Writes `prepared.uploaded[range]` into its texture, one write per texture row.
-fn write_ops(queue: &wgpu::Queue, prepared: &mut PreparedDesign, range: std::ops::Range<usize>) {
+/// Writes `prepared.records[range]` into its texture, one write per texture row.
+fn write_records(
+    queue: &wgpu::Queue,
+    prepared: &mut PreparedDesign,
+    range: std::ops::Range<usize>,
+) {
     for (row, col, count) in prepared.layout.runs(range.clone()) {
         let first = row as usize * prepared.layout.ops_per_row as usize + col as usize;
-        let texels: Vec<[f32; 4]> = prepared.uploaded[first..first + count as usize]
+        let texels: Vec<[f32; 4]> = prepared.records[first..first + count as usize]
             .iter()
-            .flat_map(|op| encode_op(op).texels())
+            .flat_map(GpuOp::texels)
             .collect();
         queue.write_texture(
             wgpu::TexelCopyTextureInfo {
@@ -376,7 +400,7 @@ impl PreparedDesign {
     fn write_params(&mut self, queue: &wgpu::Queue) {
         self.params = RenderParams::new(
             self.background,
-            self.uploaded.len() as u32,
+            self.records.len() as u32,
             self.layout.ops_per_row,
             self.view.antialias,
             self.view.scale,
@@ -391,13 +415,13 @@ impl PreparedDesign {
         (self.width, self.height)
     }
 
-    /// Number of ops walked.
+    /// Number of records walked (one per op for most ops; see [`crate::encode`]).
     pub fn op_count(&self) -> usize {
-        self.uploaded.len()
+        self.records.len()
     }
 
-    /// Ops written into the op texture since it was prepared (an update that only
-    /// appends writes only the new ones).
+    /// Records written into the op texture since it was prepared (an update that only
+    /// appends writes only the new ones; one record per op for most ops).
     pub fn ops_written(&self) -> u64 {
         self.written
     }

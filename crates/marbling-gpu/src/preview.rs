@@ -243,7 +243,7 @@ impl PreviewCache {
         view_scale: f64,
         antialias: Antialias,
     ) {
-        let encoded = pending.map(encode_op);
+        let encoded = pending.and_then(encode_op);
         self.kind = PreviewKind::of(encoded.as_ref());
         let params = PreviewParams::new(
             self.design_size,

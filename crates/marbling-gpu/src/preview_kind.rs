@@ -24,16 +24,22 @@ pub enum PreviewKind {
     Wave,
     /// Circular combs and vortices (`swirl_back`).
     Swirl,
+    /// Shifts and turns (`rigid_back`).
+    Rigid,
+    /// Jiggles (`jiggle_back`).
+    Jiggle,
 }
 
 impl PreviewKind {
     /// Every variant, in the order of [`PreviewKind::index`].
-    pub const ALL: [PreviewKind; 5] = [
+    pub const ALL: [PreviewKind; 7] = [
         PreviewKind::Idle,
         PreviewKind::Drop,
         PreviewKind::Comb,
         PreviewKind::Wave,
         PreviewKind::Swirl,
+        PreviewKind::Rigid,
+        PreviewKind::Jiggle,
     ];
 
     /// The variant that walks `pending` (by the kind its record carries).
@@ -43,8 +49,13 @@ impl PreviewKind {
             Some(OpKind::Comb) => PreviewKind::Comb,
             Some(OpKind::Wave) => PreviewKind::Wave,
             Some(OpKind::Circular | OpKind::Vortex) => PreviewKind::Swirl,
-            // No pending op (records of unknown kind are never made): the cache alone.
-            None => PreviewKind::Idle,
+            Some(OpKind::Rigid) => PreviewKind::Rigid,
+            Some(OpKind::Jiggle) => PreviewKind::Jiggle,
+            // No pending op: the cache alone. Finite combs and styli span several
+            // records and are never a pending op ([`crate::encode::encode_op`] gives
+            // none for them; the app draws them exactly), nor are records of unknown
+            // kind made.
+            Some(OpKind::Tines | OpKind::Stylus) | None => PreviewKind::Idle,
         }
     }
 
@@ -61,6 +72,8 @@ impl PreviewKind {
             PreviewKind::Comb => "comb",
             PreviewKind::Wave => "wave",
             PreviewKind::Swirl => "swirl",
+            PreviewKind::Rigid => "rigid",
+            PreviewKind::Jiggle => "jiggle",
         }
     }
 
@@ -73,6 +86,8 @@ impl PreviewKind {
             PreviewKind::Comb => "comb_back(a, b, p)",
             PreviewKind::Wave => "wave_back(a, b, p)",
             PreviewKind::Swirl => "swirl_back(a, b, p)",
+            PreviewKind::Rigid => "rigid_back(a, b, p)",
+            PreviewKind::Jiggle => "jiggle_back(a, b, p)",
         };
         format!(
             "fn pending_back(a: vec4<f32>, b: vec4<f32>, p: vec2<f32>) -> vec3<f32> {{\n    return {body};\n}}\n"
@@ -88,27 +103,35 @@ mod tests {
 
     #[test]
     fn every_op_kind_gets_the_variant_with_its_inverse() {
-        let json = r##"{"version":1,"width":100,"height":80,"background":"#ffffff","ops":[
+        let json = r##"{"version":3,"width":100,"height":80,"background":"#ffffff","ops":[
             {"type":"drop","center":[50,40],"radius":10,"color":"#112233"},
             {"type":"spray","center":[20,30],"radius":3,"color":"#112233"},
             {"type":"tine","origin":[0,40],"direction":[1,0],"alpha":10,"lambda":8},
             {"type":"rake","origin":[0,40],"direction":[1,0],"alpha":10,"lambda":8,"spacing":20},
             {"type":"wavy","angle":0.5,"amplitude":5,"wavelength":30,"phase":0},
             {"type":"circular","center":[50,40],"radius":20,"alpha":10,"lambda":8},
-            {"type":"vortex","center":[50,40],"alpha":10,"lambda":8}
+            {"type":"vortex","center":[50,40],"alpha":10,"lambda":8},
+            {"type":"shift","offset":[3,4]},
+            {"type":"turn","center":[50,40],"angle":0.3},
+            {"type":"jiggle","angle":0.2,"wavelength":40,"along":2,"across":5,"phase":0}
         ]}"##;
         let design = Design::from_json(json).expect("valid design");
         let kinds: Vec<PreviewKind> = design
             .ops
             .iter()
-            .map(|op| PreviewKind::of(Some(&encode_op(op))))
+            .map(|op| PreviewKind::of(encode_op(op).as_ref()))
             .collect();
         use PreviewKind::*;
-        assert_eq!(kinds, [Drop, Drop, Comb, Comb, Wave, Swirl, Swirl]);
+        assert_eq!(
+            kinds,
+            [
+                Drop, Drop, Comb, Comb, Wave, Swirl, Swirl, Rigid, Rigid, Jiggle
+            ]
+        );
         assert_eq!(PreviewKind::of(None), Idle);
         assert_eq!(
             PreviewKind::of(Some(&GpuOp {
-                a: [9.0, 0.0, 0.0, 0.0],
+                a: [99.0, 0.0, 0.0, 0.0],
                 b: [0.0; 4]
             })),
             Idle

@@ -7,6 +7,8 @@ use crate::preview_kind::PreviewKind;
 
 /// `shaders/common.wgsl`.
 pub const COMMON: &str = include_str!("../shaders/common.wgsl");
+/// `shaders/records.wgsl`: the walk over op records and the several-record ops.
+pub const RECORDS: &str = include_str!("../shaders/records.wgsl");
 /// `shaders/surface.wgsl`: noise background, pigment and paper grain.
 pub const SURFACE: &str = include_str!("../shaders/surface.wgsl");
 /// `shaders/surface_off.wgsl`: stand-ins for `surface.wgsl` in the plain variant.
@@ -15,10 +17,12 @@ pub const SURFACE_OFF: &str = include_str!("../shaders/surface_off.wgsl");
 pub const RENDER: &str = include_str!("../shaders/render.wgsl");
 
 /// The exact renderer for designs with a plain background and no overlays (every v1
-/// design): `common.wgsl`, `surface_off.wgsl`, `render.wgsl` — no noise code, so it is
-/// as small and fast as before schema v2.
+/// design): `common.wgsl`, `records.wgsl`, `surface_off.wgsl`, `render.wgsl` — no noise
+/// code, so it is as small and fast as before schema v2.
 pub const RENDER_PLAIN_WGSL: &str = concat!(
     include_str!("../shaders/common.wgsl"),
+    "\n",
+    include_str!("../shaders/records.wgsl"),
     "\n",
     include_str!("../shaders/surface_off.wgsl"),
     "\n",
@@ -78,13 +82,13 @@ pub const PRESENT_WGSL: &str = concat!(
     include_str!("../shaders/present.wgsl")
 );
 
-/// The exact renderer: `common.wgsl`, marbling-noise's noise module, `surface.wgsl`,
-/// `render.wgsl`.
+/// The exact renderer: `common.wgsl`, `records.wgsl`, marbling-noise's noise module,
+/// `surface.wgsl`, `render.wgsl`.
 pub fn render_wgsl() -> String {
     let noise = marbling_noise::wgsl::module("noise").unwrap_or_else(|| {
         unreachable!("marbling-noise always provides its noise module");
     });
-    [COMMON, &noise, SURFACE, RENDER].join("\n")
+    [COMMON, RECORDS, &noise, SURFACE, RENDER].join("\n")
 }
 
 /// Every render-pipeline module (vertex + fragment; WebGPU and WebGL2) as (name,

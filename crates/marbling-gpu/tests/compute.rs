@@ -93,17 +93,19 @@ fn compute_path_draws_the_fragment_path_bytes() {
     assert!(differing(&c, &d) > 0, "dropping an op changed nothing");
 }
 
-/// `op_back` of `shaders/common.wgsl` for every op of `ops` at every point of `points`,
-/// through a compute pass: (x, y, covered) per (op, point), op-major.
+/// `walk_records` of `shaders/records.wgsl` (with `op_back` of `common.wgsl`) over each
+/// op's records at every point of `points`, through a compute pass: (x, y, covered)
+/// per (op, point), op-major. `shaders` is common.wgsl then records.wgsl (tests pass
+/// broken copies).
 fn gpu_op_back(
     ctx: &GpuContext,
-    common: &str,
+    shaders: &str,
     ops: &[marbling_core::Op],
     points: &[[f32; 2]],
 ) -> Vec<[f32; 4]> {
     use wgpu::util::DeviceExt;
     let device = &ctx.device;
-    let source = [common, include_str!("op_back.wgsl")].join("\n");
+    let source = [shaders, include_str!("op_back.wgsl")].join("\n");
     let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
         label: Some("op_back test"),
         source: wgpu::ShaderSource::Wgsl(source.into()),
@@ -116,8 +118,13 @@ fn gpu_op_back(
         compilation_options: Default::default(),
         cache: None,
     });
-    let records: Vec<marbling_gpu::encode::GpuOp> =
-        ops.iter().map(marbling_gpu::encode::encode_op).collect();
+    let mut records: Vec<marbling_gpu::encode::GpuOp> = Vec::new();
+    let mut ranges: Vec<[u32; 2]> = Vec::new();
+    for op in ops {
+        let start = records.len() as u32;
+        marbling_gpu::encode::records(op, &mut records);
+        ranges.push([start, records.len() as u32]);
+    }
     let storage = |label, contents: &[u8], usage| {
         device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
             label: Some(label),
@@ -128,6 +135,11 @@ fn gpu_op_back(
     let op_buffer = storage(
         "ops",
         bytemuck::cast_slice(&records),
+        wgpu::BufferUsages::STORAGE,
+    );
+    let range_buffer = storage(
+        "ranges",
+        bytemuck::cast_slice(&ranges),
         wgpu::BufferUsages::STORAGE,
     );
     let point_buffer = storage(
@@ -158,10 +170,14 @@ fn gpu_op_back(
             },
             wgpu::BindGroupEntry {
                 binding: 1,
-                resource: point_buffer.as_entire_binding(),
+                resource: range_buffer.as_entire_binding(),
             },
             wgpu::BindGroupEntry {
                 binding: 2,
+                resource: point_buffer.as_entire_binding(),
+            },
+            wgpu::BindGroupEntry {
+                binding: 3,
                 resource: out.as_entire_binding(),
             },
         ],
@@ -191,21 +207,26 @@ fn gpu_op_back(
     result
 }
 
-/// Every op of `kind` in random designs, walked back on the GPU (f32, `op_back` of
-/// `common`) and the CPU (f64, [`marbling_core::CompiledOp::inverse`]) from random
+/// Every op of `kind` in random designs, walked back on the GPU (f32, `walk_records`
+/// of `shaders`) and the CPU (f64, [`marbling_core::CompiledOp::inverse`]) from random
 /// points around the sheet: how many points got another covered/not-covered answer, and
 /// the worst position error relative to the position's distance from the origin (at
 /// least 1 design px). Points within 1e-4 of a disc's rim are skipped (f32 may put them
 /// on either side).
-fn inverse_errors(ctx: &GpuContext, common: &str, kind: marbling_core::OpKind) -> (usize, f64) {
+fn inverse_errors(ctx: &GpuContext, shaders: &str, kind: marbling_core::OpKind) -> (usize, f64) {
     use marbling_core::{CompiledOp, Point};
     let mut ops = Vec::new();
-    for (seed, mix) in [(1, Mix::Mixed), (2, Mix::DropHeavy), (3, Mix::CombHeavy)] {
+    for (seed, mix) in [
+        (1, Mix::Mixed),
+        (2, Mix::DropHeavy),
+        (3, Mix::CombHeavy),
+        (4, Mix::AllTypes),
+    ] {
         ops.extend(
             random_design(seed, 300, 200, 400, mix)
                 .ops
                 .into_iter()
-                .filter(|op| CompiledOp::new(op).kind() == kind)
+                .filter(|op| matches!(CompiledOp::of(op).as_slice(), [c] if c.kind() == kind))
                 .take(12),
         );
     }
@@ -219,10 +240,10 @@ fn inverse_errors(ctx: &GpuContext, common: &str, kind: marbling_core::OpKind) -
             ]
         })
         .collect();
-    let gpu = gpu_op_back(ctx, common, &ops, &points);
+    let gpu = gpu_op_back(ctx, shaders, &ops, &points);
     let (mut worst, mut compared, mut other_answer) = (0.0f64, 0, 0);
     for (i, op) in ops.iter().enumerate() {
-        let c = CompiledOp::new(op);
+        let [c] = CompiledOp::of(op).try_into().expect("one compiled op");
         for (j, p) in points.iter().enumerate() {
             let p64 = Point::new(f64::from(p[0]), f64::from(p[1]));
             if let CompiledOp::Disc { cx, cy, r2, .. } = c {
@@ -255,7 +276,12 @@ fn wgsl_inverse_matches_cpu(kind: marbling_core::OpKind) {
     let Some(ctx) = common::or_skip(GpuContext::new_headless()) else {
         return;
     };
-    let (other_answer, worst) = inverse_errors(&ctx, marbling_gpu::shaders::COMMON, kind);
+    let shaders = [
+        marbling_gpu::shaders::COMMON,
+        marbling_gpu::shaders::RECORDS,
+    ]
+    .join("\n");
+    let (other_answer, worst) = inverse_errors(&ctx, &shaders, kind);
     assert_eq!(
         other_answer, 0,
         "{kind:?}: the GPU put points in or out of ink wrongly"
@@ -263,14 +289,19 @@ fn wgsl_inverse_matches_cpu(kind: marbling_core::OpKind) {
     assert!(worst <= 1e-4, "{kind:?}: relative error {worst:e} > 1e-4");
 }
 
-/// The comparison sees a mistake: a drop inverse with 0.1 % of r² missing, and a wave
-/// whose phase is off by 0.01 rad.
+/// The comparison sees a mistake: a drop inverse with 0.1 % of r² missing, a wave whose
+/// phase is off by 0.01 rad, a finite comb that skips its last tine record, a stylus
+/// sub-step walked forward instead of back.
 #[test]
 fn a_wrong_wgsl_inverse_is_caught() {
     let Some(ctx) = common::or_skip(GpuContext::new_headless()) else {
         return;
     };
-    let common = marbling_gpu::shaders::COMMON;
+    let shaders = [
+        marbling_gpu::shaders::COMMON,
+        marbling_gpu::shaders::RECORDS,
+    ]
+    .join("\n");
     for (kind, right, wrong) in [
         (
             marbling_core::OpKind::Drop,
@@ -282,11 +313,24 @@ fn a_wrong_wgsl_inverse_is_caught() {
             "dot(p, n) + b.y)",
             "dot(p, n) + b.y + 0.01)",
         ),
+        (
+            marbling_core::OpKind::Tines,
+            "r < i; r++",
+            "r + 1u < i; r++",
+        ),
+        (
+            marbling_core::OpKind::Stylus,
+            "stylus_sub_step(q, -0.5 * delta",
+            "stylus_sub_step(q, 0.5 * delta",
+        ),
     ] {
-        assert!(common.contains(right), "{right} is not in common.wgsl");
-        let broken = common.replacen(right, wrong, 1);
-        let (_, worst) = inverse_errors(&ctx, &broken, kind);
-        assert!(worst > 1e-4, "{kind:?}: a wrong inverse passed ({worst:e})");
+        assert!(shaders.contains(right), "{right} is not in the shaders");
+        let broken = shaders.replacen(right, wrong, 1);
+        let (other, worst) = inverse_errors(&ctx, &broken, kind);
+        assert!(
+            worst > 1e-4 || other > 0,
+            "{kind:?}: a wrong inverse passed ({worst:e})"
+        );
     }
 }
 
@@ -318,4 +362,24 @@ fn wgsl_inverse_of_circular_matches_cpu() {
 #[test]
 fn wgsl_inverse_of_vortex_matches_cpu() {
     wgsl_inverse_matches_cpu(marbling_core::OpKind::Vortex);
+}
+
+#[test]
+fn wgsl_inverse_of_rigid_matches_cpu() {
+    wgsl_inverse_matches_cpu(marbling_core::OpKind::Rigid);
+}
+
+#[test]
+fn wgsl_inverse_of_tines_matches_cpu() {
+    wgsl_inverse_matches_cpu(marbling_core::OpKind::Tines);
+}
+
+#[test]
+fn wgsl_inverse_of_jiggle_matches_cpu() {
+    wgsl_inverse_matches_cpu(marbling_core::OpKind::Jiggle);
+}
+
+#[test]
+fn wgsl_inverse_of_stylus_matches_cpu() {
+    wgsl_inverse_matches_cpu(marbling_core::OpKind::Stylus);
 }

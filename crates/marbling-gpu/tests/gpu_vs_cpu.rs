@@ -35,7 +35,14 @@ fn scaled(mut design: Design, k: f64) -> Design {
             Op::Wavy(w) => w.amplitude *= k,
             Op::Circular(c) => c.alpha *= k,
             Op::Vortex(v) => v.alpha *= k,
-            Op::Drop(_) | Op::Spray(_) => {}
+            Op::Comb(c) => c.alpha *= k,
+            Op::Jiggle(j) => {
+                j.along *= k;
+                j.across *= k;
+            }
+            Op::Turn(t) => t.angle *= k,
+            Op::Shift(t) => t.offset *= k,
+            Op::Drop(_) | Op::Spray(_) | Op::Drops(_) | Op::Sprays(_) | Op::Stylus(_) => {}
         }
     }
     design
@@ -90,6 +97,54 @@ fn rounded_to_f32(mut design: Design) -> Design {
                 rp(&mut v.center);
                 r(&mut v.alpha);
                 r(&mut v.lambda);
+            }
+            Op::Shift(t) => {
+                r(&mut t.offset.x);
+                r(&mut t.offset.y);
+            }
+            Op::Turn(t) => {
+                rp(&mut t.center);
+                r(&mut t.angle);
+            }
+            Op::Comb(c) => {
+                rp(&mut c.origin);
+                r(&mut c.direction.x);
+                r(&mut c.direction.y);
+                c.tines = c.tines.iter().map(|&o| f64::from(o as f32)).collect();
+                r(&mut c.alpha);
+                r(&mut c.lambda);
+            }
+            Op::Drops(d) | Op::Sprays(d) => {
+                d.centers = d
+                    .centers
+                    .iter()
+                    .map(|p| {
+                        marbling_core::Point::new(f64::from(p.x as f32), f64::from(p.y as f32))
+                    })
+                    .collect();
+                d.radii = match &d.radii {
+                    marbling_core::Radii::One(v) => marbling_core::Radii::One(f64::from(*v as f32)),
+                    marbling_core::Radii::Each(l) => {
+                        marbling_core::Radii::Each(l.iter().map(|&v| f64::from(v as f32)).collect())
+                    }
+                };
+            }
+            Op::Jiggle(j) => {
+                r(&mut j.angle);
+                r(&mut j.wavelength);
+                r(&mut j.along);
+                r(&mut j.across);
+                r(&mut j.phase);
+            }
+            Op::Stylus(st) => {
+                st.path = st
+                    .path
+                    .iter()
+                    .map(|p| {
+                        marbling_core::Point::new(f64::from(p.x as f32), f64::from(p.y as f32))
+                    })
+                    .collect();
+                r(&mut st.wake);
             }
         }
     }

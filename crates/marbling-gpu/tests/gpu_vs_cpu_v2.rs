@@ -60,7 +60,7 @@ fn design(i: usize, ops: usize) -> (String, Design) {
             Op::Wavy(w) => w.amplitude *= 0.3,
             Op::Circular(c) => c.alpha *= 0.3,
             Op::Vortex(v) => v.alpha *= 0.3,
-            Op::Drop(_) | Op::Spray(_) => {}
+            _ => {}
         }
     }
     d.set_background_noise(Some(NoiseBackground::new(

@@ -1,15 +1,17 @@
-// Test-only entry point (tests/compute.rs appends it to shaders/common.wgsl): walks
-// every point back through every op with `op_back`, one invocation per (point, op).
+// Test-only entry point (tests/compute.rs appends it to shaders/common.wgsl and
+// shaders/records.wgsl): walks every point back through every op's records with
+// `walk_records`, one invocation per (point, op).
 
-struct OpRecord {
-    a: vec4<f32>,
-    b: vec4<f32>,
+@group(0) @binding(0) var<storage, read> records: array<OpRecord>;
+// Op k's records are records[ranges[k].x .. ranges[k].y].
+@group(0) @binding(1) var<storage, read> ranges: array<vec2<u32>>;
+@group(0) @binding(2) var<storage, read> points: array<vec2<f32>>;
+// out[op · point count + point] = (x, y, covered, 0)
+@group(0) @binding(3) var<storage, read_write> out: array<vec4<f32>>;
+
+fn op_record(i: u32) -> OpRecord {
+    return records[i];
 }
-
-@group(0) @binding(0) var<storage, read> ops: array<OpRecord>;
-@group(0) @binding(1) var<storage, read> points: array<vec2<f32>>;
-// out[op · point count + point] = op_back(op, point)
-@group(0) @binding(2) var<storage, read_write> out: array<vec4<f32>>;
 
 @compute @workgroup_size(64)
 fn cs_op_back(@builtin(global_invocation_id) id: vec3<u32>) {
@@ -17,6 +19,7 @@ fn cs_op_back(@builtin(global_invocation_id) id: vec3<u32>) {
     if id.x >= n {
         return;
     }
-    let op = ops[id.y];
-    out[id.y * n + id.x] = vec4<f32>(op_back(op.a, op.b, points[id.x]), 0.0);
+    let range = ranges[id.y];
+    let e = walk_records(range.x, range.y, points[id.x]);
+    out[id.y * n + id.x] = vec4<f32>(e.p, select(0.0, 1.0, e.covered), 0.0);
 }

@@ -205,7 +205,7 @@ fn preview_approximates_exact(antialias: Antialias, soft_budget: f64, gross_budg
         .chain(others.ops.into_iter().map(Some));
     for pending in pending_ops {
         let mut exact_design = committed.clone();
-        exact_design.ops.extend(pending);
+        exact_design.ops.extend(pending.clone());
         let exact = render(&exact_design, &opts).expect("CPU render");
         let frame = preview_image(&gpu, &committed, pending.as_ref(), antialias);
         // Resampling the cache softens ink edges (many small differences) but must not
@@ -327,7 +327,7 @@ fn an_updated_design_draws_as_a_fresh_upload_and_writes_only_new_ops() {
         color: Rgb8::new(10, 90, 160),
     });
     assert!(!design.ops.contains(&eased));
-    let tail = [eased];
+    let tail = [eased.clone()];
     let shown = marbling_gpu::DesignPrefix {
         design: &design,
         ops: 25,

@@ -205,7 +205,12 @@ fn the_shaders_op_kinds_are_the_op_kind_codes() {
 /// validates too, so a broken test shader is caught without a GPU.
 #[test]
 fn the_op_back_test_shader_validates() {
-    let source = [marbling_gpu::shaders::COMMON, include_str!("op_back.wgsl")].join("\n");
+    let source = [
+        marbling_gpu::shaders::COMMON,
+        marbling_gpu::shaders::RECORDS,
+        include_str!("op_back.wgsl"),
+    ]
+    .join("\n");
     let module = validate("op_back", &source);
     assert_eq!(entry_points(&module), ["cs_op_back"]);
 }

@@ -1,22 +1,40 @@
-//! The seven marbling operations of schema v1 (Lu, Jaffer, Jin, Zhao & Mao 2012),
-//! each with its forward map and its inverse, in f64 design pixels.
+//! The marbling operations (Lu, Jaffer, Jin, Zhao & Mao 2012): the seven of schema v1
+//! and the seven schema v3 adds (shift, turn, comb, drops, sprays, jiggle, stylus), each
+//! with its forward map and its inverse, in f64 design pixels.
 
 mod circular;
+mod comb;
 mod drop;
+mod drops;
+mod jiggle;
 mod rake;
 mod rotation;
 mod rounding;
+mod shift;
 mod spray;
+mod stylus;
 mod tine;
+mod turn;
 mod vortex;
 mod wavy;
 
 pub use circular::Circular;
+pub use comb::{Comb, MAX_COMB_TINES};
 pub use drop::Drop;
+pub use drops::{DropSet, MAX_DROPS, Radii};
+pub use jiggle::Jiggle;
+pub(crate) use jiggle::solve_kepler;
 pub use rake::Rake;
 pub use rounding::{ANGLE_STEP, LENGTH_STEP};
+pub use shift::Shift;
 pub use spray::Spray;
+pub use stylus::{
+    MAX_STYLUS_POINTS, MAX_STYLUS_TIPS, MAX_STYLUS_WORK, Stylus, StylusSegment, WAKE_REACH,
+    sub_steps_of,
+};
 pub use tine::Tine;
+pub use turn::Turn;
+pub(crate) use turn::rotate;
 pub use vortex::Vortex;
 pub use wavy::Wavy;
 
@@ -24,7 +42,7 @@ use crate::Rgb8;
 use kurbo::Point;
 
 /// One operation of a design's history.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub enum Op {
     /// An ink drop that pushes older ink outwards.
     Drop(Drop),
@@ -40,6 +58,21 @@ pub enum Op {
     Circular(Circular),
     /// A swirl, strongest at its centre.
     Vortex(Vortex),
+    /// The whole tank moved (schema v3).
+    Shift(Shift),
+    /// The whole tank rotated about a centre (schema v3).
+    Turn(Turn),
+    /// A finite comb of tines moving together (schema v3).
+    Comb(Comb),
+    /// Many drops in order (schema v3).
+    Drops(DropSet),
+    /// Many spray droplets in order (schema v3).
+    Sprays(DropSet),
+    /// A wave of motion along and across a direction (schema v3; not area preserving
+    /// when `along` ≠ 0).
+    Jiggle(Jiggle),
+    /// A free-hand stroke of one or more tips (schema v3).
+    Stylus(Stylus),
 }
 
 /// Result of walking one point back through one operation.
@@ -51,9 +84,15 @@ pub enum Back {
     Ink(Rgb8),
 }
 
-/// Every op type name of schema v1, in the order used by summaries.
-pub const OP_TYPES: [&str; 7] = [
-    "drop", "spray", "tine", "rake", "wavy", "circular", "vortex",
+/// The op types schema v3 adds.
+pub(crate) const OP_TYPES_V3: [&str; 7] = [
+    "shift", "turn", "comb", "drops", "sprays", "jiggle", "stylus",
+];
+
+/// Every op type name, in the order used by summaries: schema v1's seven, then v3's.
+pub const OP_TYPES: [&str; 14] = [
+    "drop", "spray", "tine", "rake", "wavy", "circular", "vortex", "shift", "turn", "comb",
+    "drops", "sprays", "jiggle", "stylus",
 ];
 
 impl Op {
@@ -67,14 +106,36 @@ impl Op {
             Op::Wavy(_) => "wavy",
             Op::Circular(_) => "circular",
             Op::Vortex(_) => "vortex",
+            Op::Shift(_) => "shift",
+            Op::Turn(_) => "turn",
+            Op::Comb(_) => "comb",
+            Op::Drops(_) => "drops",
+            Op::Sprays(_) => "sprays",
+            Op::Jiggle(_) => "jiggle",
+            Op::Stylus(_) => "stylus",
         }
     }
 
-    /// The ink colour this op lays down, if it lays any.
+    /// Whether the op is one schema v3 adds (a design holding one is written as v3).
+    pub fn is_v3(&self) -> bool {
+        OP_TYPES_V3.contains(&self.type_name())
+    }
+
+    /// How many ops this one counts as toward [`crate::MAX_OPS`]: every drop of a
+    /// drop pattern counts, every other op counts once.
+    pub fn counted_ops(&self) -> usize {
+        match self {
+            Op::Drops(d) | Op::Sprays(d) => d.len(),
+            _ => 1,
+        }
+    }
+
+    /// The ink colour this op lays down first, if it lays any.
     pub fn ink(&self) -> Option<Rgb8> {
         match self {
             Op::Drop(d) => Some(d.color),
             Op::Spray(s) => Some(s.color),
+            Op::Drops(d) | Op::Sprays(d) => d.colors.first().copied(),
             _ => None,
         }
     }
@@ -89,6 +150,13 @@ impl Op {
             Op::Wavy(w) => w.forward(p),
             Op::Circular(c) => c.forward(p),
             Op::Vortex(v) => v.forward(p),
+            Op::Shift(s) => s.forward(p),
+            Op::Turn(t) => t.forward(p),
+            Op::Comb(c) => c.forward(p),
+            Op::Drops(d) => d.expand(false).fold(p, |p, op| op.forward(p)),
+            Op::Sprays(_) => p,
+            Op::Jiggle(j) => j.forward(p),
+            Op::Stylus(s) => s.forward(p),
         }
     }
 
@@ -103,6 +171,25 @@ impl Op {
             Op::Wavy(w) => Back::Moved(w.inverse(p)),
             Op::Circular(c) => Back::Moved(c.inverse(p)),
             Op::Vortex(v) => Back::Moved(v.inverse(p)),
+            Op::Shift(s) => Back::Moved(s.inverse(p)),
+            Op::Turn(t) => Back::Moved(t.inverse(p)),
+            Op::Comb(c) => Back::Moved(c.inverse(p)),
+            Op::Drops(d) => back_through(d.expand(false), p),
+            Op::Sprays(d) => back_through(d.expand(true), p),
+            Op::Jiggle(j) => Back::Moved(j.inverse(p)),
+            Op::Stylus(s) => Back::Moved(s.inverse(p)),
         }
     }
+}
+
+/// Walks `p` back through `ops` (oldest first), newest first.
+fn back_through(ops: impl DoubleEndedIterator<Item = Op>, p: Point) -> Back {
+    let mut p = p;
+    for op in ops.rev() {
+        match op.inverse(p) {
+            Back::Moved(q) => p = q,
+            ink => return ink,
+        }
+    }
+    Back::Moved(p)
 }

@@ -8,7 +8,7 @@
 //! wavelength) are at least one step; a direction that would round to zero keeps its
 //! angle at unit length.
 
-use super::Op;
+use super::{Op, Radii};
 use kurbo::{Point, Vec2};
 
 /// Step of rounded lengths and positions, design pixels.
@@ -52,7 +52,7 @@ fn direction(v: Vec2) -> Vec2 {
 impl Op {
     /// This op with its parameters rounded as the module doc says (idempotent).
     pub fn rounded(&self) -> Op {
-        let mut op = *self;
+        let mut op = self.clone();
         match &mut op {
             Op::Drop(d) => {
                 d.center = point(d.center);
@@ -91,6 +91,40 @@ impl Op {
                 v.center = point(v.center);
                 v.alpha = length(v.alpha);
                 v.lambda = positive(v.lambda);
+            }
+            Op::Shift(s) => s.offset = Vec2::new(length(s.offset.x), length(s.offset.y)),
+            Op::Turn(t) => {
+                t.center = point(t.center);
+                t.angle = angle(t.angle);
+            }
+            Op::Comb(c) => {
+                c.origin = point(c.origin);
+                c.direction = direction(c.direction);
+                c.tines = c.tines.iter().map(|&o| length(o)).collect();
+                c.alpha = length(c.alpha);
+                c.lambda = positive(c.lambda);
+            }
+            Op::Drops(d) | Op::Sprays(d) => {
+                d.centers = d.centers.iter().map(|&p| point(p)).collect();
+                d.radii = match &d.radii {
+                    Radii::One(r) => Radii::One(positive(*r)),
+                    Radii::Each(list) => Radii::Each(list.iter().map(|&r| positive(r)).collect()),
+                };
+            }
+            Op::Jiggle(j) => {
+                j.angle = angle(j.angle);
+                j.wavelength = positive(j.wavelength);
+                j.along = length(j.along);
+                j.across = length(j.across);
+                j.phase = angle(j.phase);
+            }
+            Op::Stylus(s) => {
+                s.path = s.path.iter().map(|&p| point(p)).collect();
+                s.wake = positive(s.wake);
+                s.tips = s
+                    .tips
+                    .as_ref()
+                    .map(|t| t.iter().map(|&o| length(o)).collect());
             }
         }
         op

@@ -1,0 +1,91 @@
+//! Jiggle: a wave of motion along and across one direction.
+//!
+//! u = (cos θ, sin θ), v = (−sin θ, cos θ), k = 2π/λ, φ = k(P·u) + φ₀,
+//! P′ = P + A·sin φ·u + B·cos φ·v. Invertible when |kA| < 1. It is **not** area
+//! preserving when A ≠ 0: its Jacobian is 1 + kA·cos φ. With A = 0 it is a shear, like
+//! the wavy comb.
+
+use kurbo::{Point, Vec2};
+use std::f64::consts::TAU;
+
+/// A jiggle of the tank (module doc).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Jiggle {
+    /// Angle θ of u, radians.
+    pub angle: f64,
+    /// Wavelength λ along u, design pixels, > 0.
+    pub wavelength: f64,
+    /// Amplitude A along u, design pixels; |2πA/λ| < 1.
+    pub along: f64,
+    /// Amplitude B along v, design pixels.
+    pub across: f64,
+    /// Phase φ₀, radians.
+    pub phase: f64,
+}
+
+/// Solves φ + c·sin φ = t for φ (|c| < 1, so the left side is increasing): safeguarded
+/// Newton in the bracket [t − |c|, t + |c|], to f64 rounding.
+pub(crate) fn solve_kepler(t: f64, c: f64) -> f64 {
+    let (mut lo, mut hi) = (t - c.abs(), t + c.abs());
+    let mut phi = t - c * t.sin();
+    for _ in 0..60 {
+        let f = phi + c * phi.sin() - t;
+        if f == 0.0 {
+            break;
+        }
+        if f > 0.0 {
+            hi = phi;
+        } else {
+            lo = phi;
+        }
+        let mut next = phi - f / (1.0 + c * phi.cos());
+        if !(next > lo && next < hi) {
+            next = 0.5 * (lo + hi);
+        }
+        if (next - phi).abs() <= 1e-15 * (1.0 + phi.abs()) {
+            phi = next;
+            break;
+        }
+        phi = next;
+    }
+    phi
+}
+
+impl Jiggle {
+    /// (u, v, k).
+    fn frame(&self) -> (Vec2, Vec2, f64) {
+        let (s, c) = self.angle.sin_cos();
+        (Vec2::new(c, s), Vec2::new(-s, c), TAU / self.wavelength)
+    }
+
+    /// kA, which must be below 1 in magnitude.
+    pub fn k_along(&self) -> f64 {
+        TAU / self.wavelength * self.along
+    }
+
+    /// Moves `p` by the jiggle.
+    pub fn forward(&self, p: Point) -> Point {
+        let (u, v, k) = self.frame();
+        let phi = k * p.to_vec2().dot(u) + self.phase;
+        let (s, c) = phi.sin_cos();
+        p + u * (self.along * s) + v * (self.across * c)
+    }
+
+    /// Undoes [`Jiggle::forward`].
+    pub fn inverse(&self, p: Point) -> Point {
+        let (u, v, k) = self.frame();
+        let t = k * p.to_vec2().dot(u) + self.phase;
+        // Solve with t reduced to [0, 2π): sin and cos do not see the whole turns.
+        let turns = (t / TAU).floor() * TAU;
+        let phi = solve_kepler(t - turns, k * self.along);
+        let (s, c) = phi.sin_cos();
+        p - u * (self.along * s) - v * (self.across * c)
+    }
+
+    /// The Jacobian determinant of the forward map at `p`: 1 + kA·cos φ.
+    pub fn jacobian(&self, p: Point) -> f64 {
+        let (u, _, k) = self.frame();
+        let phi = k * p.to_vec2().dot(u) + self.phase;
+        1.0 + k * self.along * phi.cos()
+    }
+}

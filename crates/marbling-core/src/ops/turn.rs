@@ -1,0 +1,33 @@
+//! Turn: the whole tank rotates about a centre (P′ = C + R(θ)(P − C)).
+
+use kurbo::{Point, Vec2};
+
+/// A rigid rotation by `angle` about `center`, with
+/// R(θ) = [[cos θ, −sin θ], [sin θ, cos θ]] (y down, so a positive angle turns clockwise
+/// on screen, as the circular comb does).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Turn {
+    /// Centre of rotation, design pixels.
+    pub center: Point,
+    /// Angle θ, radians.
+    pub angle: f64,
+}
+
+/// R(θ)·v for θ given by its sine and cosine.
+pub(crate) fn rotate(v: Vec2, sin: f64, cos: f64) -> Vec2 {
+    Vec2::new(v.x * cos - v.y * sin, v.x * sin + v.y * cos)
+}
+
+impl Turn {
+    /// Rotates `p` about the centre.
+    pub fn forward(&self, p: Point) -> Point {
+        let (s, c) = self.angle.sin_cos();
+        self.center + rotate(p - self.center, s, c)
+    }
+
+    /// Undoes [`Turn::forward`].
+    pub fn inverse(&self, p: Point) -> Point {
+        let (s, c) = self.angle.sin_cos();
+        self.center + rotate(p - self.center, -s, c)
+    }
+}
