@@ -7,21 +7,21 @@
 //! fragment path (tests/compute.rs).
 
 use crate::exact::{ExactRenderer, PreparedDesign};
-use crate::shaders::{render_compute_wgsl, render_plain_compute_wgsl};
+use crate::shaders::ExactVariant;
 use crate::target::RenderTarget;
 use std::sync::OnceLock;
 
 /// Workgroup side of `cs_main` (8 × 8 invocations).
 const WORKGROUP: u32 = 8;
 
-/// The compute variant of [`ExactRenderer`]'s pipelines (plain, and with schema v2
-/// surfaces on first use), sharing its bind group 0; group 1 is the target.
+/// The compute variant of [`ExactRenderer`]'s pipelines (plain, the other
+/// [`ExactVariant`]s on first use), sharing its bind group 0; group 1 is the target.
 #[derive(Debug)]
 pub struct ComputeExact {
     target_layout: wgpu::BindGroupLayout,
     pipeline_layout: wgpu::PipelineLayout,
-    pipeline: wgpu::ComputePipeline,
-    surface_pipeline: OnceLock<wgpu::ComputePipeline>,
+    /// One per variant, in [`ExactVariant::ALL`] order.
+    pipelines: [OnceLock<wgpu::ComputePipeline>; 4],
 }
 
 impl ComputeExact {
@@ -59,13 +59,14 @@ impl ComputeExact {
             device,
             &pipeline_layout,
             "marbling render (compute, plain)",
-            &render_plain_compute_wgsl(),
+            &ExactVariant::ALL[0].compute_wgsl(),
         );
+        let pipelines: [OnceLock<wgpu::ComputePipeline>; 4] = Default::default();
+        let _ = pipelines[0].set(pipeline);
         Self {
             target_layout,
             pipeline_layout,
-            pipeline,
-            surface_pipeline: OnceLock::new(),
+            pipelines,
         }
     }
 
@@ -79,18 +80,15 @@ impl ComputeExact {
         design: &PreparedDesign,
         target: &RenderTarget,
     ) {
-        let pipeline = if design.textured() {
-            self.surface_pipeline.get_or_init(|| {
-                build(
-                    device,
-                    &self.pipeline_layout,
-                    "marbling render (compute, surface)",
-                    &render_compute_wgsl(),
-                )
-            })
-        } else {
-            &self.pipeline
-        };
+        let variant = design.variant();
+        let pipeline = self.pipelines[variant.index()].get_or_init(|| {
+            build(
+                device,
+                &self.pipeline_layout,
+                &format!("marbling render (compute, {})", variant.name()),
+                &variant.compute_wgsl(),
+            )
+        });
         let target_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("marbling render target (compute)"),
             layout: &self.target_layout,

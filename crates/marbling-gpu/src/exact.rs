@@ -7,20 +7,21 @@ use crate::GpuError;
 use crate::bindings;
 use crate::encode::{GpuOp, OpLayout, TEXELS_PER_OP, records};
 use crate::params::RenderParams;
-use crate::shaders::{RENDER_PLAIN_WGSL, render_wgsl};
+use crate::shaders::{ExactVariant, RENDER_PLAIN_WGSL};
 use crate::surface::SurfaceParams;
 use marbling_core::{Antialias, Design, Op};
 use std::sync::OnceLock;
 
-/// The exact render pipeline for one target format, in two variants: plain (every v1
-/// design; no noise code) and, built on the first design that needs it, with schema v2
-/// surfaces (noise background, grain overlays).
+/// The exact render pipeline for one target format, in the four [`ExactVariant`]s:
+/// plain (every v1 design; no noise or stylus code) built at once, the others (with
+/// schema v2 surfaces, with finite combs and styli, with both) on the first design that
+/// needs them.
 #[derive(Debug)]
 pub struct ExactRenderer {
     layout: wgpu::BindGroupLayout,
     pipeline_layout: wgpu::PipelineLayout,
-    pipeline: wgpu::RenderPipeline,
-    surface_pipeline: OnceLock<wgpu::RenderPipeline>,
+    /// One per variant, in [`ExactVariant::ALL`] order.
+    pipelines: [OnceLock<wgpu::RenderPipeline>; 4],
     format: wgpu::TextureFormat,
 }
 
@@ -43,6 +44,8 @@ pub struct PreparedDesign {
     surface_params: SurfaceParams,
     /// Whether the design needs the surface variant of the pipeline.
     textured: bool,
+    /// Whether it holds finite combs or styli (the several-record variant).
+    several: bool,
     uniform: wgpu::Buffer,
     bind_group: wgpu::BindGroup,
     params: RenderParams,
@@ -103,25 +106,31 @@ impl ExactRenderer {
             &module,
             format,
         );
+        let pipelines: [OnceLock<wgpu::RenderPipeline>; 4] = Default::default();
+        let _ = pipelines[0].set(pipeline);
         Self {
             layout,
             pipeline_layout,
-            pipeline,
-            surface_pipeline: OnceLock::new(),
+            pipelines,
             format,
         }
     }
 
-    /// The variant with schema v2 surfaces, compiled on first use.
-    fn surface_pipeline(&self, device: &wgpu::Device) -> &wgpu::RenderPipeline {
-        self.surface_pipeline.get_or_init(|| {
+    /// The pipeline of `variant`, compiled on first use.
+    fn variant_pipeline(
+        &self,
+        device: &wgpu::Device,
+        variant: ExactVariant,
+    ) -> &wgpu::RenderPipeline {
+        self.pipelines[variant.index()].get_or_init(|| {
+            let label = format!("marbling render ({})", variant.name());
             let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
-                label: Some("marbling render.wgsl (surface)"),
-                source: wgpu::ShaderSource::Wgsl(render_wgsl().into()),
+                label: Some(&label),
+                source: wgpu::ShaderSource::Wgsl(variant.render_wgsl().into()),
             });
             crate::fullscreen::pipeline(
                 device,
-                "marbling render (surface)",
+                &label,
                 &self.pipeline_layout,
                 &module,
                 self.format,
@@ -182,6 +191,7 @@ impl ExactRenderer {
             surface_params: SurfaceParams::new(design),
             surface,
             textured: false,
+            several: false,
             uniform,
             bind_group,
             params: RenderParams::new(
@@ -261,9 +271,11 @@ impl ExactRenderer {
             prepared.surface_params = surface_params;
         }
         prepared.textured = surface_params.flags != 0;
-        if prepared.textured {
-            self.surface_pipeline(device);
-        }
+        prepared.several = prepared
+            .uploaded
+            .iter()
+            .any(|op| matches!(op, Op::Comb(_) | Op::Stylus(_)));
+        self.variant_pipeline(device, prepared.variant());
         prepared.background = design.background;
         (prepared.width, prepared.height) = (design.width, design.height);
         prepared.write_params(queue);
@@ -321,10 +333,9 @@ impl ExactRenderer {
     }
 
     fn draw_full(&self, pass: &mut wgpu::RenderPass<'_>, design: &PreparedDesign) {
-        let pipeline = match (design.textured, self.surface_pipeline.get()) {
-            (true, Some(p)) => p,
-            // `prepare` built the surface variant for every design that needs it.
-            _ => &self.pipeline,
+        // `update` built the variant of every design it uploaded.
+        let Some(pipeline) = self.pipelines[design.variant().index()].get() else {
+            return;
         };
         pass.set_pipeline(pipeline);
         pass.set_bind_group(0, &design.bind_group, &[]);
@@ -426,9 +437,12 @@ impl PreparedDesign {
         self.written
     }
 
-    /// Whether the design needs the surface (schema v2) variant.
-    pub(crate) fn textured(&self) -> bool {
-        self.textured
+    /// The exact-renderer variant the design needs.
+    pub(crate) fn variant(&self) -> ExactVariant {
+        ExactVariant {
+            surface: self.textured,
+            several: self.several,
+        }
     }
 
     /// Bind group 0 of the exact pipelines.

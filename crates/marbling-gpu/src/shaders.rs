@@ -1,7 +1,9 @@
 //! The WGSL sources, compiled into the crate. WGSL has no includes, so each module is
 //! assembled from files: `common.wgsl` (op inverse, sRGB transfer, full-screen
-//! triangle), then for the exact renderer marbling-noise's `noise` module and
-//! `surface.wgsl` (schema v2 noise backgrounds and grain overlays), then its own file.
+//! triangle), then for the exact renderer `records.wgsl` (the walk over op records),
+//! `several.wgsl` (finite combs and styli) or its stand-in, marbling-noise's `noise`
+//! module and `surface.wgsl` (schema v2 noise backgrounds and grain overlays) or its
+//! stand-in, then its own file. [`ExactVariant`] names the four exact modules.
 
 use crate::preview_kind::PreviewKind;
 
@@ -9,6 +11,10 @@ use crate::preview_kind::PreviewKind;
 pub const COMMON: &str = include_str!("../shaders/common.wgsl");
 /// `shaders/records.wgsl`: the walk over op records and the several-record ops.
 pub const RECORDS: &str = include_str!("../shaders/records.wgsl");
+/// `shaders/several.wgsl`: finite combs and styli (ops of several records).
+pub const SEVERAL: &str = include_str!("../shaders/several.wgsl");
+/// `shaders/several_off.wgsl`: stand-in for `several.wgsl` in variants without them.
+pub const SEVERAL_OFF: &str = include_str!("../shaders/several_off.wgsl");
 /// `shaders/surface.wgsl`: noise background, pigment and paper grain.
 pub const SURFACE: &str = include_str!("../shaders/surface.wgsl");
 /// `shaders/surface_off.wgsl`: stand-ins for `surface.wgsl` in the plain variant.
@@ -16,13 +22,16 @@ pub const SURFACE_OFF: &str = include_str!("../shaders/surface_off.wgsl");
 /// `shaders/render.wgsl`: the exact renderer's entry points.
 pub const RENDER: &str = include_str!("../shaders/render.wgsl");
 
-/// The exact renderer for designs with a plain background and no overlays (every v1
-/// design): `common.wgsl`, `records.wgsl`, `surface_off.wgsl`, `render.wgsl` — no noise
-/// code, so it is as small and fast as before schema v2.
+/// The exact renderer for designs with a plain background, no overlays, no finite comb
+/// and no stylus (every v1 design): `common.wgsl`, `records.wgsl`, `several_off.wgsl`,
+/// `surface_off.wgsl`, `render.wgsl` — no noise or stylus code, so it is as small and
+/// fast as before schemas v2 and v3.
 pub const RENDER_PLAIN_WGSL: &str = concat!(
     include_str!("../shaders/common.wgsl"),
     "\n",
     include_str!("../shaders/records.wgsl"),
+    "\n",
+    include_str!("../shaders/several_off.wgsl"),
     "\n",
     include_str!("../shaders/surface_off.wgsl"),
     "\n",
@@ -33,14 +42,72 @@ pub const RENDER_PLAIN_WGSL: &str = concat!(
 /// render module).
 pub const RENDER_COMPUTE: &str = include_str!("../shaders/render_compute.wgsl");
 
-/// [`RENDER_PLAIN_WGSL`] with the compute entry point.
-pub fn render_plain_compute_wgsl() -> String {
-    [RENDER_PLAIN_WGSL, RENDER_COMPUTE].join("\n")
+/// Which exact-renderer module a design needs.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct ExactVariant {
+    /// With schema v2 surfaces (`surface.wgsl` and the noise module).
+    pub surface: bool,
+    /// With finite combs and styli (`several.wgsl`).
+    pub several: bool,
 }
 
-/// [`render_wgsl`] with the compute entry point.
-pub fn render_compute_wgsl() -> String {
-    [render_wgsl(), RENDER_COMPUTE.to_owned()].join("\n")
+impl ExactVariant {
+    /// Every variant, in [`ExactVariant::index`] order; the first is the plain one.
+    pub const ALL: [ExactVariant; 4] = [
+        ExactVariant {
+            surface: false,
+            several: false,
+        },
+        ExactVariant {
+            surface: true,
+            several: false,
+        },
+        ExactVariant {
+            surface: false,
+            several: true,
+        },
+        ExactVariant {
+            surface: true,
+            several: true,
+        },
+    ];
+
+    /// Position in [`ExactVariant::ALL`].
+    pub fn index(self) -> usize {
+        usize::from(self.surface) + 2 * usize::from(self.several)
+    }
+
+    /// Short name, for labels and test messages.
+    pub fn name(self) -> &'static str {
+        match (self.surface, self.several) {
+            (false, false) => "plain",
+            (true, false) => "surface",
+            (false, true) => "several",
+            (true, true) => "surface+several",
+        }
+    }
+
+    /// The render module (vertex and fragment entry points).
+    pub fn render_wgsl(self) -> String {
+        if !self.surface && !self.several {
+            return RENDER_PLAIN_WGSL.to_owned();
+        }
+        let several = if self.several { SEVERAL } else { SEVERAL_OFF };
+        let surface = if self.surface {
+            let noise = marbling_noise::wgsl::module("noise").unwrap_or_else(|| {
+                unreachable!("marbling-noise always provides its noise module");
+            });
+            [noise.as_str(), SURFACE].join("\n")
+        } else {
+            SURFACE_OFF.to_owned()
+        };
+        [COMMON, RECORDS, several, &surface, RENDER].join("\n")
+    }
+
+    /// The render module with the compute entry point.
+    pub fn compute_wgsl(self) -> String {
+        [self.render_wgsl(), RENDER_COMPUTE.to_owned()].join("\n")
+    }
 }
 
 /// The live preview (cache + one pending op) without its `pending_back`:
@@ -82,22 +149,22 @@ pub const PRESENT_WGSL: &str = concat!(
     include_str!("../shaders/present.wgsl")
 );
 
-/// The exact renderer: `common.wgsl`, `records.wgsl`, marbling-noise's noise module,
-/// `surface.wgsl`, `render.wgsl`.
+/// The exact renderer with everything: schema v2 surfaces, finite combs and styli.
 pub fn render_wgsl() -> String {
-    let noise = marbling_noise::wgsl::module("noise").unwrap_or_else(|| {
-        unreachable!("marbling-noise always provides its noise module");
-    });
-    [COMMON, RECORDS, &noise, SURFACE, RENDER].join("\n")
+    ExactVariant {
+        surface: true,
+        several: true,
+    }
+    .render_wgsl()
 }
 
 /// Every render-pipeline module (vertex + fragment; WebGPU and WebGL2) as (name,
 /// source), for validation: the exact renderers, each live-preview variant, present.
 pub fn all() -> Vec<(String, String)> {
-    let mut out = vec![
-        ("render".to_owned(), render_wgsl()),
-        ("render-plain".to_owned(), RENDER_PLAIN_WGSL.to_owned()),
-    ];
+    let mut out: Vec<(String, String)> = ExactVariant::ALL
+        .iter()
+        .map(|v| (format!("render-{}", v.name()), v.render_wgsl()))
+        .collect();
     for kind in PreviewKind::ALL {
         for (srgb_target, target) in [(false, "unorm"), (true, "srgb")] {
             out.push((
@@ -113,9 +180,9 @@ pub fn all() -> Vec<(String, String)> {
 
 /// The modules with the exact renderer's compute entry point (native and WebGPU only),
 /// as (name, source), for validation.
-pub fn compute_modules() -> [(&'static str, String); 2] {
-    [
-        ("render-compute", render_compute_wgsl()),
-        ("render-plain-compute", render_plain_compute_wgsl()),
-    ]
+pub fn compute_modules() -> Vec<(String, String)> {
+    ExactVariant::ALL
+        .iter()
+        .map(|v| (format!("render-compute-{}", v.name()), v.compute_wgsl()))
+        .collect()
 }

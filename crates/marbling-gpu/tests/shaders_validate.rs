@@ -44,7 +44,7 @@ fn every_shader_parses_and_validates() {
         assert_eq!(entry_points(&module), expected, "{name}");
     }
     for (name, source) in compute_modules() {
-        let module = validate(name, &source);
+        let module = validate(&name, &source);
         assert_eq!(
             entry_points(&module),
             ["vs_main", "fs_main", "cs_main"],
@@ -56,8 +56,8 @@ fn every_shader_parses_and_validates() {
 #[test]
 fn a_broken_shader_is_caught() {
     let source = &all()[0].1;
-    assert!(source.contains("return Hit(b, false, p);"));
-    let broken = source.replace("return Hit(b, false, p);", "return Hit(b.xyz, false, p);");
+    assert!(source.contains("return Hit(e.ink, false, e.p);"));
+    let broken = source.replace("return Hit(e.ink, false, e.p);", "return Hit(e.ink.xyz, false, e.p);");
     let parsed = naga::front::wgsl::parse_str(&broken);
     let valid = parsed.as_ref().ok().map(|m| {
         naga::valid::Validator::new(
@@ -208,6 +208,7 @@ fn the_op_back_test_shader_validates() {
     let source = [
         marbling_gpu::shaders::COMMON,
         marbling_gpu::shaders::RECORDS,
+        marbling_gpu::shaders::SEVERAL,
         include_str!("op_back.wgsl"),
     ]
     .join("\n");
