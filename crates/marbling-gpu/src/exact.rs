@@ -128,13 +128,7 @@ impl ExactRenderer {
                 label: Some(&label),
                 source: wgpu::ShaderSource::Wgsl(variant.render_wgsl().into()),
             });
-            crate::fullscreen::pipeline(
-                device,
-                &label,
-                &self.pipeline_layout,
-                &module,
-                self.format,
-            )
+            crate::fullscreen::pipeline(device, &label, &self.pipeline_layout, &module, self.format)
         })
     }
 

@@ -331,3 +331,28 @@ fn full_strength_designs_within_their_f32_conditioning() {
         "GPU error well beyond f32 rounding: {over:?}"
     );
 }
+
+/// Designs of all fourteen op types (schema v3's shift, turn, comb, drops, sprays,
+/// jiggle and stylus among them), drawn by the variant with several-record ops.
+#[test]
+fn designs_with_every_op_type() {
+    let Some(gpu) = common::renderer() else {
+        return;
+    };
+    let cases: Vec<(String, Design, RenderOptions)> = (0..6u64)
+        .map(|i| {
+            let ops = 20 + 40 * i as usize;
+            let design = scaled(
+                random_design(400 + i, WIDTH, HEIGHT, ops, Mix::AllTypes),
+                STRENGTH,
+            );
+            assert_eq!(design.version(), 3);
+            let opts = RenderOptions {
+                scale: 1.0,
+                antialias: [Antialias::None, Antialias::Rgss][i as usize % 2],
+            };
+            (format!("seed {} AllTypes {ops} ops", 400 + i), design, opts)
+        })
+        .collect();
+    check(&gpu, &cases, 0.005);
+}

@@ -57,7 +57,10 @@ fn every_shader_parses_and_validates() {
 fn a_broken_shader_is_caught() {
     let source = &all()[0].1;
     assert!(source.contains("return Hit(e.ink, false, e.p);"));
-    let broken = source.replace("return Hit(e.ink, false, e.p);", "return Hit(e.ink.xyz, false, e.p);");
+    let broken = source.replace(
+        "return Hit(e.ink, false, e.p);",
+        "return Hit(e.ink.xyz, false, e.p);",
+    );
     let parsed = naga::front::wgsl::parse_str(&broken);
     let valid = parsed.as_ref().ok().map(|m| {
         naga::valid::Validator::new(

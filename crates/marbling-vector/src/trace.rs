@@ -10,7 +10,7 @@ use crate::simplify::simplify_outline;
 use crate::{
     Canvas, MARGIN_PX, Outline, TraceOptions, TraceStats, VectorDesign, VectorError, initial_sides,
 };
-use marbling_core::{CompiledOp, Design, Op, Rgb8};
+use marbling_core::{CompiledOp, Design, Point, Rgb8};
 use rayon::prelude::*;
 
 /// Checks that `design` is exactly a background rectangle plus traced ink regions.
@@ -142,7 +142,8 @@ pub fn trace_with_progress(
     };
     let mut regions: Vec<Region> = Vec::new();
     let mut peak = 0;
-    for (j, op) in design.ops.iter().enumerate() {
+    // Compiled ops: a drop pattern is one disc per drop, each a region of its own.
+    for (j, op) in ops.iter().enumerate() {
         let pinch_j = pinch_at(level, j);
         let live = regions.iter().map(Region::vertices).sum::<usize>();
         let coarsen = live > budget && level < MAX_LEVEL;
@@ -158,13 +159,14 @@ pub fn trace_with_progress(
             r.pinch(pinch_j.as_ref(), coarsen);
         });
         let (center, radius, color) = match *op {
-            Op::Drop(d) => (d.center, d.radius, d.color),
-            Op::Spray(s) => (s.center, s.radius, s.color),
+            CompiledOp::Disc {
+                cx, cy, r2, color, ..
+            } => (Point::new(cx, cy), r2.sqrt(), color),
             _ => {
                 let total = regions.iter().map(Region::vertices).sum::<usize>();
                 peak = peak.max(total);
                 check_total(total, opts)?;
-                progress(j + 1, design.ops.len());
+                progress(j + 1, ops.len());
                 continue;
             }
         };
@@ -191,9 +193,9 @@ pub fn trace_with_progress(
         let total = regions.iter().map(Region::vertices).sum::<usize>();
         peak = peak.max(total);
         check_total(total, opts)?;
-        progress(j + 1, design.ops.len());
+        progress(j + 1, ops.len());
     }
-    let last = design.ops.len().saturating_sub(1);
+    let last = ops.len().saturating_sub(1);
     let pinch_last = pinch_at(level, last);
     let epsilon = opts.spacing() * opts.epsilon * 2f64.powi(level);
     let traced: Vec<(Option<Outline>, TraceStats)> = regions

@@ -84,3 +84,38 @@ fn vector_render_agrees_with_cpu_reference_on_random_designs() {
     assert!(n >= 20);
     assert!(failures.is_empty(), "over budget: {failures:?}");
 }
+
+/// Designs of all fourteen op types (schema v3: shift, turn, comb, drops, sprays,
+/// jiggle, stylus among them): the vector render agrees with the reference within the
+/// same budget.
+#[test]
+fn vector_render_agrees_on_designs_with_every_op_type() {
+    let opts = TraceOptions {
+        tolerance: TOLERANCE,
+        ..TraceOptions::default()
+    };
+    for (seed, ops) in [(2001u64, 20usize), (2002, 40), (2003, 60)] {
+        let design = random_design(seed, 200, 150, ops, Mix::AllTypes);
+        assert!(design.version() == 3, "seed {seed} holds a v3 op");
+        let vector = trace(&design, &opts).expect("traceable");
+        let actual = preview(&vector, opts.scale, Blend::Linear(Antialias::Rgss)).expect("preview");
+        let expected = render(
+            &design,
+            &RenderOptions {
+                scale: opts.scale,
+                antialias: Antialias::Rgss,
+            },
+        )
+        .expect("render");
+        let diff = compare(&expected, &actual, THRESHOLD).expect("same size");
+        println!(
+            "seed {seed}, {ops} ops: {:.3} % of pixels differ",
+            100.0 * diff.fraction()
+        );
+        assert!(
+            diff.fraction() <= BUDGET,
+            "seed {seed}: {:.3} % over the budget",
+            100.0 * diff.fraction()
+        );
+    }
+}
