@@ -55,8 +55,11 @@ pub enum MixArg {
     CombHeavy,
     /// Mostly drops and sprays.
     DropHeavy,
-    /// All seven op types in equal parts.
+    /// The seven op types of schema v1 in equal parts.
     Mixed,
+    /// All fourteen op types (schema v1 and v3: shift, turn, comb, drops, sprays,
+    /// jiggle, stylus) in equal parts.
+    AllTypes,
 }
 
 impl MixArg {
@@ -66,6 +69,7 @@ impl MixArg {
             MixArg::CombHeavy => ("comb-heavy", Mix::CombHeavy),
             MixArg::DropHeavy => ("drop-heavy", Mix::DropHeavy),
             MixArg::Mixed => ("mixed", Mix::Mixed),
+            MixArg::AllTypes => ("all-types", Mix::AllTypes),
         }
     }
 }
