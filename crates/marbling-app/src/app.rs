@@ -385,18 +385,10 @@ impl MarblingApp {
         } else if u {
             self.apply(Action::Undo);
         }
-        // Number keys 1–7 pick the tools in panel order (when no text field has focus).
+        // Number keys 1–9 and 0 pick the first ten tools in panel order (when no text
+        // field has focus).
         if !ctx.egui_wants_keyboard_input() {
-            let keys = [
-                Key::Num1,
-                Key::Num2,
-                Key::Num3,
-                Key::Num4,
-                Key::Num5,
-                Key::Num6,
-                Key::Num7,
-            ];
-            for (key, tool) in keys.into_iter().zip(ToolKind::ALL) {
+            for (key, tool) in crate::tools::TOOL_KEYS.into_iter().zip(ToolKind::ALL) {
                 if ctx.input(|i| i.key_pressed(key) && i.modifiers.is_none()) {
                     self.prefs.tool = tool;
                 }

@@ -5,11 +5,11 @@ use crate::app::{ActiveGesture, MarblingApp};
 use crate::canvas_gpu::{CanvasCallback, CanvasPlacement, FrameRequest, StandIn};
 use crate::overlay;
 use crate::overlay_gpu;
-use crate::tools::{Gesture, ops_for};
+use crate::tools::{Gesture, ToolKind, ops_for};
 use crate::view::ViewState;
 use eframe::egui_wgpu;
 use egui::{Color32, PointerButton, Pos2, Rect, Sense, Vec2};
-use marbling_core::{Op, Point};
+use marbling_core::{Op, Point, Rgb8};
 
 impl MarblingApp {
     /// Draws the canvas and handles its input.
@@ -148,9 +148,11 @@ impl MarblingApp {
             && let Some(p) = pos
         {
             self.editor.playback = None;
+            let mut gesture = Gesture::new(to_design(p));
+            gesture.pixel = 1.0 / view.zoom.max(1e-9);
             self.editor.active = Some(ActiveGesture {
                 tool: self.prefs.tool,
-                gesture: Gesture::new(to_design(p)),
+                gesture,
                 seed: self.editor.next_seed,
             });
             self.editor.next_seed += 1;
@@ -168,13 +170,14 @@ impl MarblingApp {
             if released || !down {
                 let done = self.editor.active.take();
                 if let Some(a) = done {
-                    let ops = ops_for(
-                        a.tool,
-                        &self.prefs.settings,
-                        &a.gesture,
-                        self.prefs.ink,
-                        a.seed,
-                    );
+                    let inks = self.inks();
+                    let ops = ops_for(a.tool, &self.prefs.settings, &a.gesture, &inks, a.seed);
+                    // Cycling colours: the next click starts with the colour after the
+                    // last drop's.
+                    if a.tool == ToolKind::Drop && self.prefs.settings.cycle_colors {
+                        let laid = ops.first().map_or(0, Op::counted_ops);
+                        self.prefs.ink = inks[laid % inks.len()];
+                    }
                     self.apply(crate::action::Action::Commit(ops));
                 }
             }
@@ -188,10 +191,25 @@ impl MarblingApp {
                 a.tool,
                 &self.prefs.settings,
                 &a.gesture,
-                self.prefs.ink,
+                &self.inks(),
                 a.seed,
             ),
             None => Vec::new(),
+        }
+    }
+
+    /// The ink, then (cycling colours) the rest of the palette after it.
+    pub(crate) fn inks(&self) -> Vec<Rgb8> {
+        let ink = self.prefs.ink;
+        if !self.prefs.settings.cycle_colors {
+            return vec![ink];
+        }
+        let palette = crate::PALETTES[self.prefs.palette.min(crate::PALETTES.len() - 1)].inks;
+        match palette.iter().position(|&c| c == ink) {
+            Some(i) => palette[i..].iter().chain(&palette[..i]).copied().collect(),
+            None => std::iter::once(ink)
+                .chain(palette.iter().copied())
+                .collect(),
         }
     }
 

@@ -8,6 +8,7 @@ mod app;
 pub mod autosave;
 mod canvas;
 pub mod canvas_gpu;
+pub mod drop_patterns;
 pub mod export;
 pub mod gallery;
 pub mod gpu_errors;
@@ -31,6 +32,7 @@ pub mod recovery;
 mod refine;
 pub mod shown;
 mod state;
+mod stroke;
 pub mod style;
 #[cfg(test)]
 mod test_window;

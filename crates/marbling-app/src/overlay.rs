@@ -2,6 +2,7 @@
 //! while it happens.
 
 use crate::app::MarblingApp;
+use crate::drop_patterns::DropPattern;
 use crate::tools::ToolKind;
 use crate::view::ViewState;
 use egui::{Color32, Painter, Pos2, Rect, Shape, Stroke};
@@ -66,9 +67,77 @@ pub fn draw(
     let reach = f64::from(rect.width().hypot(rect.height())) / view.zoom;
     match tool {
         ToolKind::Drop => {
-            let r =
-                (s.drop_radius + s.drop_growth * held).min(s.drop_max_radius.max(s.drop_radius));
-            circle(painter, at(a), r as f32 * z);
+            let r = crate::tools::drop_radius(s, held) as f32 * z;
+            if s.drop_pattern == DropPattern::Single {
+                circle(painter, at(a), r);
+            } else {
+                // Ghost drops: exactly where the click lays them (same seed).
+                let seed = app
+                    .editor
+                    .active
+                    .as_ref()
+                    .map_or(app.editor.next_seed, |g| g.seed);
+                for c in crate::tools::drop_centers(s, a, b, seed) {
+                    circle(painter, at(c), r.max(1.5));
+                }
+            }
+        }
+        ToolKind::Stylus => {
+            let reach = (marbling_core::WAKE_REACH * s.stylus_wake) as f32 * z;
+            let tips = crate::tools::stylus_tips(s);
+            let offsets: Vec<f64> = tips.as_deref().map_or(vec![0.0], <[f64]>::to_vec);
+            // The tips sit across the direction of travel (the last stretch of the path).
+            let dir = app
+                .editor
+                .active
+                .as_ref()
+                .and_then(|g| {
+                    let p = &g.gesture.path;
+                    p.iter()
+                        .rev()
+                        .find(|q| (b - **q).hypot() >= 2.0 / view.zoom)
+                        .map(|q| (b - *q).normalize())
+                })
+                .unwrap_or(Vec2::new(1.0, 0.0));
+            let across = Vec2::new(-dir.y, dir.x);
+            for o in offsets {
+                circle(painter, at(b + across * o), reach.max(3.0));
+            }
+            if let Some(g) = &app.editor.active {
+                polyline(painter, g.gesture.path.iter().map(|p| at(*p)).collect());
+            }
+        }
+        ToolKind::Jiggle => {
+            // The wave of motion across the drag: A along it, B across.
+            let steps = 400;
+            let k = std::f64::consts::TAU / s.jiggle_wavelength.max(1.0);
+            let pts =
+                (0..=steps)
+                    .map(|i| {
+                        let t = (f64::from(i) / f64::from(steps) * 2.0 - 1.0) * reach;
+                        let phi = k * t;
+                        at(a + m * (t + s.jiggle_along * phi.sin())
+                            + n * (s.jiggle_across * phi.cos()))
+                    })
+                    .collect();
+            polyline(painter, pts);
+            if dragging {
+                arrow(painter, at(a), at(b));
+            }
+        }
+        ToolKind::Shift => {
+            if dragging {
+                arrow(painter, at(a), at(b));
+            } else {
+                for d in [
+                    Vec2::new(1.0, 0.0),
+                    Vec2::new(-1.0, 0.0),
+                    Vec2::new(0.0, 1.0),
+                    Vec2::new(0.0, -1.0),
+                ] {
+                    arrow(painter, at(a), at(a + d * (18.0 / view.zoom)));
+                }
+            }
         }
         ToolKind::Spray => circle(painter, at(b), s.spray_spread as f32 * z),
         ToolKind::Tine => {
@@ -111,6 +180,16 @@ pub fn draw(
                 })
                 .collect();
             polyline(painter, pts);
+        }
+        ToolKind::Turn => {
+            circle(painter, at(a), 4.0);
+            if dragging {
+                let r = (b - a).hypot() as f32 * z;
+                circle(painter, at(a), r.max(4.0));
+                line(painter, at(a), at(b));
+            } else {
+                circle(painter, at(a), 40.0);
+            }
         }
         ToolKind::Circular | ToolKind::Vortex => {
             let r = if dragging {

@@ -4,6 +4,7 @@
 use crate::PALETTES;
 use crate::action::Action;
 use crate::app::MarblingApp;
+use crate::drop_patterns::DropPattern;
 use crate::export::ExportSize;
 use crate::gallery::EXAMPLES;
 use crate::mode::Mode;
@@ -167,14 +168,16 @@ impl MarblingApp {
         ui.label(RichText::new("Tool").strong());
         ui.horizontal_wrapped(|ui| {
             for (i, t) in ToolKind::ALL.into_iter().enumerate() {
-                ui.selectable_value(&mut self.prefs.tool, t, t.label())
-                    .on_hover_text(format!("key {}", i + 1));
+                let button = ui.selectable_value(&mut self.prefs.tool, t, t.label());
+                if let Some(key) = crate::tools::TOOL_KEYS.get(i) {
+                    button.on_hover_text(format!("key {}", key.symbol_or_name()));
+                }
             }
         });
         let s = &mut self.prefs.settings;
         match self.prefs.tool {
             ToolKind::Drop => {
-                ui.label("Click to drop; hold to grow.");
+                ui.label("Click to drop; hold to grow. A pattern lays many drops at once (the ghosts show where).");
                 ui.add(
                     Slider::new(&mut s.drop_radius, 1.0..=300.0)
                         .text("radius")
@@ -186,6 +189,86 @@ impl MarblingApp {
                         .text("max radius")
                         .logarithmic(true),
                 );
+                egui::ComboBox::from_label("pattern")
+                    .selected_text(s.drop_pattern.label())
+                    .show_ui(ui, |ui| {
+                        for p in DropPattern::ALL {
+                            ui.selectable_value(&mut s.drop_pattern, p, p.label());
+                        }
+                    });
+                match s.drop_pattern {
+                    DropPattern::Single => {}
+                    DropPattern::Line | DropPattern::Coil => {
+                        ui.add(Slider::new(&mut s.pattern_count, 2..=400).text("drops"));
+                        ui.add(
+                            Slider::new(&mut s.pattern_spacing, 2.0..=400.0)
+                                .text("spacing")
+                                .logarithmic(true),
+                        );
+                    }
+                    DropPattern::Ring => {
+                        ui.add(Slider::new(&mut s.pattern_rings, 1..=20).text("rings"));
+                        ui.add(
+                            Slider::new(&mut s.pattern_spacing, 2.0..=400.0)
+                                .text("spacing")
+                                .logarithmic(true),
+                        );
+                    }
+                    DropPattern::Grid => {
+                        ui.add(Slider::new(&mut s.pattern_rows, 1..=40).text("rows"));
+                        ui.add(Slider::new(&mut s.pattern_columns, 1..=40).text("columns"));
+                        ui.add(
+                            Slider::new(&mut s.pattern_spacing, 2.0..=400.0)
+                                .text("spacing")
+                                .logarithmic(true),
+                        );
+                        ui.add(Slider::new(&mut s.pattern_jitter, 0.0..=0.5).text("jitter"));
+                        ui.checkbox(&mut s.pattern_serpentine, "serpentine order");
+                    }
+                    DropPattern::Scatter | DropPattern::Gaussian => {
+                        ui.add(Slider::new(&mut s.pattern_count, 2..=1000).text("drops"));
+                        ui.add(
+                            Slider::new(&mut s.pattern_spread, 10.0..=4000.0)
+                                .text("spread")
+                                .logarithmic(true),
+                        );
+                    }
+                }
+                ui.checkbox(&mut s.cycle_colors, "cycle colours through the palette");
+            }
+            ToolKind::Stylus => {
+                ui.label("Drag free-hand: the stylus pulls the ink along your path. Several tips make a free-hand comb.");
+                ui.add(
+                    Slider::new(&mut s.stylus_wake, 0.5..=100.0)
+                        .text("wake")
+                        .logarithmic(true),
+                );
+                ui.add(Slider::new(&mut s.stylus_tips, 1..=32).text("tips"));
+                if s.stylus_tips > 1 {
+                    ui.add(
+                        Slider::new(&mut s.stylus_spacing, 1.0..=400.0)
+                            .text("tip spacing")
+                            .logarithmic(true),
+                    );
+                }
+            }
+            ToolKind::Jiggle => {
+                ui.label("Drag sets the direction: the tank shakes along it.");
+                ui.add(
+                    Slider::new(&mut s.jiggle_wavelength, 4.0..=2000.0)
+                        .text("wavelength")
+                        .logarithmic(true),
+                );
+                let limit = crate::tools::jiggle_along_limit(s.jiggle_wavelength);
+                s.jiggle_along = s.jiggle_along.clamp(-limit, limit);
+                ui.add(Slider::new(&mut s.jiggle_along, -limit..=limit).text("along"));
+                ui.add(Slider::new(&mut s.jiggle_across, -200.0..=200.0).text("across"));
+            }
+            ToolKind::Shift => {
+                ui.label("Drag: the whole tank moves with the pointer.");
+            }
+            ToolKind::Turn => {
+                ui.label("Press at the centre, drag around it: the whole tank turns.");
             }
             ToolKind::Spray => {
                 ui.label("Drag to spray droplets.");

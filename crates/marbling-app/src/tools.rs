@@ -1,8 +1,14 @@
 //! The marbling tools: how a pointer gesture (press, drag, release, in design pixels)
 //! becomes operations. Pure functions, so every tool is testable without a window.
 
+use crate::drop_patterns::{self, DropPattern, PatternShape};
+use crate::stroke;
 use marbling_core::synth::SplitMix64;
-use marbling_core::{Circular, Drop, Op, Point, Rake, Rgb8, Spray, Tine, Vec2, Vortex, Wavy};
+use marbling_core::{
+    Circular, Comb, Drop, DropSet, Jiggle, Op, Point, Radii, Rake, Rgb8, Shift, Spray, Tine, Turn,
+    Vec2, Vortex, Wavy,
+};
+use std::sync::Arc;
 
 /// The tools of the side panel.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
@@ -22,18 +28,30 @@ pub enum ToolKind {
     Circular,
     /// Press at the centre, drag around it: a vortex.
     Vortex,
+    /// Drag free-hand: a stylus (one tip or several, a free-hand comb) follows the path.
+    Stylus,
+    /// Drag A→B: the tank jiggles along B − A.
+    Jiggle,
+    /// Drag: the whole tank moves with the pointer.
+    Shift,
+    /// Press at the centre, drag around it: the whole tank turns.
+    Turn,
 }
 
 impl ToolKind {
     /// Every tool, in panel order.
-    pub const ALL: [ToolKind; 7] = [
+    pub const ALL: [ToolKind; 11] = [
         ToolKind::Drop,
         ToolKind::Spray,
         ToolKind::Tine,
         ToolKind::Rake,
+        ToolKind::Stylus,
         ToolKind::Wavy,
+        ToolKind::Jiggle,
         ToolKind::Circular,
         ToolKind::Vortex,
+        ToolKind::Shift,
+        ToolKind::Turn,
     ];
 
     /// Name shown in the panel.
@@ -42,13 +60,31 @@ impl ToolKind {
             ToolKind::Drop => "Drop",
             ToolKind::Spray => "Spray",
             ToolKind::Tine => "Tine",
-            ToolKind::Rake => "Rake",
+            ToolKind::Rake => "Comb",
             ToolKind::Wavy => "Wavy comb",
             ToolKind::Circular => "Circular comb",
             ToolKind::Vortex => "Vortex",
+            ToolKind::Stylus => "Stylus",
+            ToolKind::Jiggle => "Jiggle",
+            ToolKind::Shift => "Shift",
+            ToolKind::Turn => "Turn",
         }
     }
 }
+
+/// The keys that pick the tools, in [`ToolKind::ALL`] order (the eleventh has none).
+pub const TOOL_KEYS: [egui::Key; 10] = [
+    egui::Key::Num1,
+    egui::Key::Num2,
+    egui::Key::Num3,
+    egui::Key::Num4,
+    egui::Key::Num5,
+    egui::Key::Num6,
+    egui::Key::Num7,
+    egui::Key::Num8,
+    egui::Key::Num9,
+    egui::Key::Num0,
+];
 
 /// Every tool parameter of the side panel (design pixels unless stated). Stored with
 /// the other preferences (`prefs.rs`); a missing field takes its default.
@@ -87,6 +123,38 @@ pub struct ToolSettings {
     pub circular_lambda: f64,
     /// Vortex sharpness λ.
     pub vortex_lambda: f64,
+    /// How the drops of one click are laid out.
+    pub drop_pattern: DropPattern,
+    /// Drops of a line, coil or scatter pattern.
+    pub pattern_count: u32,
+    /// Distance between the drops (or rings) of a pattern.
+    pub pattern_spacing: f64,
+    /// Rings of a ring pattern.
+    pub pattern_rings: u32,
+    /// Rows of a grid pattern.
+    pub pattern_rows: u32,
+    /// Columns of a grid pattern.
+    pub pattern_columns: u32,
+    /// Jitter of a grid pattern, fraction of the spacing (0..=0.5).
+    pub pattern_jitter: f64,
+    /// Grid rows alternate direction.
+    pub pattern_serpentine: bool,
+    /// Size of a scatter pattern (4σ of a Gaussian one).
+    pub pattern_spread: f64,
+    /// Each drop (of a pattern, or each click) takes the next colour of the palette.
+    pub cycle_colors: bool,
+    /// Stylus wake L (a tip reaches 8L).
+    pub stylus_wake: f64,
+    /// Stylus tips (more than one: a free-hand comb).
+    pub stylus_tips: u32,
+    /// Distance between stylus tips.
+    pub stylus_spacing: f64,
+    /// Jiggle wavelength.
+    pub jiggle_wavelength: f64,
+    /// Jiggle amplitude along the drag (kept below wavelength/2π so it cannot fold).
+    pub jiggle_along: f64,
+    /// Jiggle amplitude across the drag.
+    pub jiggle_across: f64,
 }
 
 impl Default for ToolSettings {
@@ -108,6 +176,22 @@ impl Default for ToolSettings {
             wavy_phase: 0.0,
             circular_lambda: 12.0,
             vortex_lambda: 20.0,
+            drop_pattern: DropPattern::Single,
+            pattern_count: 8,
+            pattern_spacing: 50.0,
+            pattern_rings: 3,
+            pattern_rows: 4,
+            pattern_columns: 6,
+            pattern_jitter: 0.0,
+            pattern_serpentine: true,
+            pattern_spread: 300.0,
+            cycle_colors: false,
+            stylus_wake: 6.0,
+            stylus_tips: 1,
+            stylus_spacing: 40.0,
+            jiggle_wavelength: 120.0,
+            jiggle_along: 5.0,
+            jiggle_across: 12.0,
         }
     }
 }
@@ -121,6 +205,9 @@ pub struct Gesture {
     pub path: Vec<Point>,
     /// Seconds the button has been held.
     pub held_seconds: f64,
+    /// Design pixels per screen pixel when it began (a free-hand path is kept within
+    /// half a screen pixel).
+    pub pixel: f64,
 }
 
 impl Gesture {
@@ -130,6 +217,7 @@ impl Gesture {
             start: p,
             path: vec![p],
             held_seconds: 0.0,
+            pixel: 1.0,
         }
     }
 
@@ -157,31 +245,119 @@ impl Gesture {
 
 /// The ops a gesture makes with a tool, rounded to what can matter ([`Op::rounded`], so
 /// the document and its link hold exactly what was previewed); empty when the gesture
-/// is too small to mean anything (a click with a comb). `seed` makes spray droplets
-/// reproducible.
-pub fn ops_for(kind: ToolKind, s: &ToolSettings, g: &Gesture, color: Rgb8, seed: u64) -> Vec<Op> {
-    unrounded_ops(kind, s, g, color, seed)
+/// is too small to mean anything (a click with a comb). `inks` is the ink, then the
+/// colours drops cycle through (just the ink when they do not); `seed` makes spray
+/// droplets and scattered patterns reproducible.
+pub fn ops_for(kind: ToolKind, s: &ToolSettings, g: &Gesture, inks: &[Rgb8], seed: u64) -> Vec<Op> {
+    unrounded_ops(kind, s, g, inks, seed)
         .iter()
         .map(Op::rounded)
         .collect()
 }
 
-fn unrounded_ops(kind: ToolKind, s: &ToolSettings, g: &Gesture, color: Rgb8, seed: u64) -> Vec<Op> {
+/// The pattern the drop tool lays.
+pub fn pattern_shape(s: &ToolSettings) -> PatternShape {
+    PatternShape {
+        pattern: s.drop_pattern,
+        count: s.pattern_count,
+        spacing: s.pattern_spacing,
+        rings: s.pattern_rings,
+        rows: s.pattern_rows,
+        columns: s.pattern_columns,
+        jitter: s.pattern_jitter,
+        serpentine: s.pattern_serpentine,
+        spread: s.pattern_spread,
+    }
+}
+
+/// Radius of a drop held for `held` seconds.
+pub fn drop_radius(s: &ToolSettings, held: f64) -> f64 {
+    (s.drop_radius + s.drop_growth * held).min(s.drop_max_radius.max(s.drop_radius))
+}
+
+/// The drop tool's centres for a press at `a` dragged to `b` (a drag orients lines and
+/// grids).
+pub fn drop_centers(s: &ToolSettings, a: Point, b: Point, seed: u64) -> Vec<Point> {
+    let drag = b - a;
+    let along = if drag.hypot() >= 1.0 {
+        drag.normalize()
+    } else {
+        Vec2::new(1.0, 0.0)
+    };
+    drop_patterns::centers(&pattern_shape(s), a, along, seed)
+}
+
+/// Offsets of the stylus tips across the path, centred on it.
+pub fn stylus_tips(s: &ToolSettings) -> Option<Arc<[f64]>> {
+    let n = s
+        .stylus_tips
+        .clamp(1, marbling_core::MAX_STYLUS_TIPS as u32);
+    (n > 1).then(|| {
+        let half = f64::from(n - 1) / 2.0;
+        (0..n)
+            .map(|i| (f64::from(i) - half) * s.stylus_spacing)
+            .collect()
+    })
+}
+
+/// The largest jiggle amplitude along the drag that cannot fold the tank (|kA| ≤ 0.9).
+pub fn jiggle_along_limit(wavelength: f64) -> f64 {
+    0.9 * wavelength / std::f64::consts::TAU
+}
+
+fn unrounded_ops(
+    kind: ToolKind,
+    s: &ToolSettings,
+    g: &Gesture,
+    inks: &[Rgb8],
+    seed: u64,
+) -> Vec<Op> {
     let (a, b) = (g.start, g.end());
     let drag = b - a;
     let len = drag.hypot();
+    let color = inks.first().copied().unwrap_or(Rgb8::new(0, 0, 0));
     match kind {
-        ToolKind::Drop => {
-            let radius = (s.drop_radius + s.drop_growth * g.held_seconds)
-                .min(s.drop_max_radius.max(s.drop_radius));
+        ToolKind::Drop if s.drop_pattern == DropPattern::Single => {
             vec![Op::Drop(Drop {
                 center: a,
-                radius,
+                radius: drop_radius(s, g.held_seconds),
                 color,
             })]
         }
+        ToolKind::Drop => {
+            let centers = drop_centers(s, a, b, seed);
+            vec![Op::Drops(DropSet {
+                centers: centers.into(),
+                radii: Radii::One(drop_radius(s, g.held_seconds)),
+                colors: if s.cycle_colors && !inks.is_empty() {
+                    inks.into()
+                } else {
+                    Arc::from([color])
+                },
+            })]
+        }
         ToolKind::Spray => spray(s, g, color, seed),
-        _ if len < 1.0 && !matches!(kind, ToolKind::Circular | ToolKind::Vortex) => Vec::new(),
+        ToolKind::Stylus => {
+            let path = stroke::simplify(&g.path, 0.5 * g.pixel);
+            if path.len() < 2 {
+                return Vec::new();
+            }
+            stroke::stylus_ops(&path, s.stylus_wake.max(0.5), stylus_tips(s))
+                .into_iter()
+                .map(Op::Stylus)
+                .collect()
+        }
+        ToolKind::Shift => {
+            if len < 0.5 {
+                return Vec::new();
+            }
+            vec![Op::Shift(Shift { offset: drag })]
+        }
+        _ if len < 1.0
+            && !matches!(kind, ToolKind::Circular | ToolKind::Vortex | ToolKind::Turn) =>
+        {
+            Vec::new()
+        }
         ToolKind::Tine => vec![Op::Tine(Tine {
             origin: a,
             direction: drag,
@@ -196,20 +372,16 @@ fn unrounded_ops(kind: ToolKind, s: &ToolSettings, g: &Gesture, color: Rgb8, see
             lambda: s.rake_lambda,
         })],
         ToolKind::Rake => {
-            let m = drag / len;
-            let n = Vec2::new(-m.y, m.x);
             let half = f64::from(s.rake_tines - 1) / 2.0;
-            (0..s.rake_tines)
-                .map(|i| {
-                    let origin = a + n * ((f64::from(i) - half) * s.rake_spacing);
-                    Op::Tine(Tine {
-                        origin,
-                        direction: drag,
-                        alpha: len,
-                        lambda: s.rake_lambda,
-                    })
-                })
-                .collect()
+            vec![Op::Comb(Comb {
+                origin: a,
+                direction: drag,
+                tines: (0..s.rake_tines)
+                    .map(|i| (f64::from(i) - half) * s.rake_spacing)
+                    .collect(),
+                alpha: len,
+                lambda: s.rake_lambda,
+            })]
         }
         ToolKind::Wavy => vec![Op::Wavy(Wavy {
             angle: drag.y.atan2(drag.x),
@@ -217,6 +389,17 @@ fn unrounded_ops(kind: ToolKind, s: &ToolSettings, g: &Gesture, color: Rgb8, see
             wavelength: s.wavy_wavelength,
             phase: s.wavy_phase,
         })],
+        ToolKind::Jiggle => {
+            let wavelength = s.jiggle_wavelength.max(1.0);
+            let limit = jiggle_along_limit(wavelength);
+            vec![Op::Jiggle(Jiggle {
+                angle: drag.y.atan2(drag.x),
+                wavelength,
+                along: s.jiggle_along.clamp(-limit, limit),
+                across: s.jiggle_across,
+                phase: 0.0,
+            })]
+        }
         ToolKind::Circular => {
             let radius = (g.path.iter().map(|p| (*p - a).hypot()).fold(0.0, f64::max)).max(1.0);
             let alpha = g.swept_angle(a) * radius;
@@ -241,6 +424,13 @@ fn unrounded_ops(kind: ToolKind, s: &ToolSettings, g: &Gesture, color: Rgb8, see
                 alpha,
                 lambda: s.vortex_lambda,
             })]
+        }
+        ToolKind::Turn => {
+            let angle = g.swept_angle(a);
+            if angle.abs() < 1e-3 {
+                return Vec::new();
+            }
+            vec![Op::Turn(Turn { center: a, angle })]
         }
     }
 }
@@ -298,7 +488,7 @@ mod tests {
         let s = ToolSettings::default();
         let mut g = Gesture::new(Point::new(5.0, 6.0));
         assert_eq!(
-            ops_for(ToolKind::Drop, &s, &g, INK, 0),
+            ops_for(ToolKind::Drop, &s, &g, &[INK], 0),
             vec![Op::Drop(Drop {
                 center: g.start,
                 radius: 30.0,
@@ -306,12 +496,12 @@ mod tests {
             })]
         );
         g.held_seconds = 2.0;
-        let Op::Drop(d) = ops_for(ToolKind::Drop, &s, &g, INK, 0)[0] else {
+        let Op::Drop(d) = ops_for(ToolKind::Drop, &s, &g, &[INK], 0)[0] else {
             panic!()
         };
         assert_eq!(d.radius, 110.0);
         g.held_seconds = 1000.0;
-        let Op::Drop(d) = ops_for(ToolKind::Drop, &s, &g, INK, 0)[0] else {
+        let Op::Drop(d) = ops_for(ToolKind::Drop, &s, &g, &[INK], 0)[0] else {
             panic!()
         };
         assert_eq!(d.radius, 300.0);
@@ -324,7 +514,7 @@ mod tests {
             ToolKind::Tine,
             &s,
             &drag((10.0, 20.0), (13.0, 24.0)),
-            INK,
+            &[INK],
             0,
         );
         assert_eq!(
@@ -336,13 +526,19 @@ mod tests {
                 lambda: 8.0
             })]
         );
-        assert!(ops_for(ToolKind::Tine, &s, &drag((1.0, 1.0), (1.2, 1.0)), INK, 0).is_empty());
+        assert!(ops_for(ToolKind::Tine, &s, &drag((1.0, 1.0), (1.2, 1.0)), &[INK], 0).is_empty());
     }
 
     #[test]
     fn a_rake_is_a_whole_sheet_rake_or_that_many_tines() {
         let mut s = ToolSettings::default();
-        let ops = ops_for(ToolKind::Rake, &s, &drag((0.0, 0.0), (0.0, 50.0)), INK, 0);
+        let ops = ops_for(
+            ToolKind::Rake,
+            &s,
+            &drag((0.0, 0.0), (0.0, 50.0)),
+            &[INK],
+            0,
+        );
         assert!(matches!(
             ops[..],
             [Op::Rake(Rake {
@@ -352,31 +548,35 @@ mod tests {
             })]
         ));
         s.rake_tines = 3;
+        // A comb of that many tines is one op (one record of tine offsets on the GPU).
         let ops = ops_for(
             ToolKind::Rake,
             &s,
             &drag((100.0, 0.0), (100.0, 50.0)),
-            INK,
+            &[INK],
             0,
         );
-        let xs: Vec<f64> = ops
-            .iter()
-            .map(|o| {
-                if let Op::Tine(t) = o {
-                    t.origin.x
-                } else {
-                    f64::NAN
-                }
-            })
-            .collect();
-        assert_eq!(xs, [140.0, 100.0, 60.0]);
+        let [Op::Comb(c)] = &ops[..] else {
+            panic!("{ops:?}")
+        };
+        assert_eq!((c.origin, c.alpha), (Point::new(100.0, 0.0), 50.0));
+        assert_eq!(&c.tines[..], [-40.0, 0.0, 40.0]);
+        // Offsets are along n = (−m.y, m.x) = (−1, 0): the first tine is at x = 140.
+        let mut p = Point::new(140.0, 10.0);
+        p = Op::Comb(c.clone()).forward(p);
+        assert!((p.y - 60.0).abs() < 1e-9, "{p:?}");
     }
 
     #[test]
     fn wavy_takes_its_angle_from_the_drag() {
         let s = ToolSettings::default();
-        let Op::Wavy(w) = ops_for(ToolKind::Wavy, &s, &drag((0.0, 0.0), (0.0, 10.0)), INK, 0)[0]
-        else {
+        let Op::Wavy(w) = ops_for(
+            ToolKind::Wavy,
+            &s,
+            &drag((0.0, 0.0), (0.0, 10.0)),
+            &[INK],
+            0,
+        )[0] else {
             panic!()
         };
         // Angles are rounded to 1e-4 rad (`Op::rounded`).
@@ -392,7 +592,7 @@ mod tests {
             let t = f64::from(i) / 10.0 * std::f64::consts::FRAC_PI_2;
             g.path.push(Point::new(100.0 * t.cos(), 100.0 * t.sin()));
         }
-        let Op::Circular(c) = ops_for(ToolKind::Circular, &s, &g, INK, 0)[0] else {
+        let Op::Circular(c) = ops_for(ToolKind::Circular, &s, &g, &[INK], 0)[0] else {
             panic!()
         };
         assert!((c.radius - 100.0).abs() < 1e-9);
@@ -402,21 +602,21 @@ mod tests {
             "{}",
             c.alpha
         );
-        let Op::Vortex(v) = ops_for(ToolKind::Vortex, &s, &g, INK, 0)[0] else {
+        let Op::Vortex(v) = ops_for(ToolKind::Vortex, &s, &g, &[INK], 0)[0] else {
             panic!()
         };
         assert!(v.alpha > 0.0);
         // A click without travel makes nothing.
-        assert!(ops_for(ToolKind::Vortex, &s, &Gesture::new(Point::ZERO), INK, 0).is_empty());
+        assert!(ops_for(ToolKind::Vortex, &s, &Gesture::new(Point::ZERO), &[INK], 0).is_empty());
     }
 
     #[test]
     fn spray_scatters_reproducible_droplets_near_the_path() {
         let s = ToolSettings::default();
         let g = drag((0.0, 0.0), (100.0, 0.0));
-        let ops = ops_for(ToolKind::Spray, &s, &g, INK, 42);
+        let ops = ops_for(ToolKind::Spray, &s, &g, &[INK], 42);
         assert_eq!(ops.len(), 30);
-        assert_eq!(ops, ops_for(ToolKind::Spray, &s, &g, INK, 42));
+        assert_eq!(ops, ops_for(ToolKind::Spray, &s, &g, &[INK], 42));
         for op in &ops {
             let Op::Spray(d) = op else { panic!() };
             assert!(
@@ -424,5 +624,94 @@ mod tests {
             );
             assert!((s.spray_min_radius..=s.spray_max_radius).contains(&d.radius));
         }
+    }
+
+    #[test]
+    fn a_stylus_follows_the_free_hand_path_kept_within_half_a_pixel() {
+        let mut s = ToolSettings::default();
+        let mut g = Gesture::new(Point::new(0.0, 0.0));
+        for i in 1..=100 {
+            let t = f64::from(i) / 100.0;
+            g.path.push(Point::new(200.0 * t, 30.0 * (5.0 * t).sin()));
+        }
+        g.pixel = 0.5;
+        let ops = ops_for(ToolKind::Stylus, &s, &g, &[INK], 0);
+        let [Op::Stylus(st)] = &ops[..] else {
+            panic!("{ops:?}")
+        };
+        assert!(st.path.len() > 5 && st.path.len() < 60, "{}", st.path.len());
+        assert_eq!(st.wake, 6.0);
+        assert!(st.tips.is_none());
+        s.stylus_tips = 3;
+        let ops = ops_for(ToolKind::Stylus, &s, &g, &[INK], 0);
+        let Op::Stylus(st) = &ops[0] else { panic!() };
+        assert_eq!(st.tips.as_deref(), Some(&[-40.0, 0.0, 40.0][..]));
+        assert!(ops_for(ToolKind::Stylus, &s, &Gesture::new(Point::ZERO), &[INK], 0).is_empty());
+    }
+
+    #[test]
+    fn a_drop_pattern_is_one_op_cycling_the_palette() {
+        let mut s = ToolSettings {
+            drop_pattern: DropPattern::Ring,
+            pattern_rings: 1,
+            cycle_colors: true,
+            ..ToolSettings::default()
+        };
+        let inks = [INK, Rgb8::new(9, 9, 9)];
+        let g = Gesture::new(Point::new(50.0, 50.0));
+        let ops = ops_for(ToolKind::Drop, &s, &g, &inks, 7);
+        let [Op::Drops(d)] = &ops[..] else {
+            panic!("{ops:?}")
+        };
+        assert_eq!(d.len(), 8);
+        assert_eq!(&d.colors[..], inks);
+        // The ghosts drawn before the click, to rounding (0.005 design px).
+        let ghosts = drop_centers(&s, g.start, g.start, 7);
+        assert_eq!(ghosts.len(), d.len());
+        for (c, ghost) in d.centers.iter().zip(&ghosts) {
+            assert!((*c - *ghost).hypot() <= 0.01, "{c:?} vs {ghost:?}");
+        }
+        s.cycle_colors = false;
+        let Op::Drops(d) = &ops_for(ToolKind::Drop, &s, &g, &inks, 7)[0] else {
+            panic!()
+        };
+        assert_eq!(&d.colors[..], [INK]);
+    }
+
+    #[test]
+    fn jiggle_shift_and_turn_take_their_geometry_from_the_drag() {
+        let s = ToolSettings {
+            jiggle_along: 1000.0,
+            ..ToolSettings::default()
+        };
+        let Op::Jiggle(j) = ops_for(
+            ToolKind::Jiggle,
+            &s,
+            &drag((0.0, 0.0), (0.0, 30.0)),
+            &[INK],
+            0,
+        )[0] else {
+            panic!()
+        };
+        assert!((j.angle - std::f64::consts::FRAC_PI_2).abs() <= 0.5e-4);
+        // Clamped so that it cannot fold the tank: |kA| < 1.
+        assert!(j.k_along().abs() < 1.0);
+        let Op::Shift(t) = ops_for(
+            ToolKind::Shift,
+            &s,
+            &drag((5.0, 5.0), (8.0, 1.0)),
+            &[INK],
+            0,
+        )[0] else {
+            panic!()
+        };
+        assert_eq!(t.offset, Vec2::new(3.0, -4.0));
+        let mut g = Gesture::new(Point::new(0.0, 0.0));
+        g.path.push(Point::new(100.0, 0.0));
+        g.path.push(Point::new(0.0, 100.0));
+        let Op::Turn(t) = ops_for(ToolKind::Turn, &s, &g, &[INK], 0)[0] else {
+            panic!()
+        };
+        assert!((t.angle - std::f64::consts::FRAC_PI_2).abs() <= 0.5e-4);
     }
 }
