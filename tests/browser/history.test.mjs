@@ -106,7 +106,8 @@ describe('history on webgl2', () => {
     const rake = await dragWithShots(page, s, p(150, 20), p(150, 120), 6);
     log('raked');
     assert.ok(differing(rake.half, rake.full, 8) > 0.001, 'the rake preview froze during the drag');
-    await waitOps(page, sprayed + 9);
+    // A comb of 9 tines is one op.
+    await waitOps(page, sprayed + 1);
     await page.screenshot({ path: path.join(SHOTS, 'history-stroke-rake-webgl2.png'), timeout: READY_MS });
 
     await page.keyboard.press('Control+z');

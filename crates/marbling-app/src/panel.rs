@@ -168,10 +168,11 @@ impl MarblingApp {
         ui.label(RichText::new("Tool").strong());
         ui.horizontal_wrapped(|ui| {
             for (i, t) in ToolKind::ALL.into_iter().enumerate() {
-                let button = ui.selectable_value(&mut self.prefs.tool, t, t.label());
+                let mut button = ui.selectable_value(&mut self.prefs.tool, t, t.label());
                 if let Some(key) = crate::tools::TOOL_KEYS.get(i) {
-                    button.on_hover_text(format!("key {}", key.symbol_or_name()));
+                    button = button.on_hover_text(format!("key {}", key.symbol_or_name()));
                 }
+                self.control(format!("tool-{}", t.name()), &button);
             }
         });
         let s = &mut self.prefs.settings;

@@ -54,6 +54,23 @@ impl ToolKind {
         ToolKind::Turn,
     ];
 
+    /// Its name in stored preferences and in `data-controls` (`tool-…`).
+    pub fn name(self) -> &'static str {
+        match self {
+            ToolKind::Drop => "drop",
+            ToolKind::Spray => "spray",
+            ToolKind::Tine => "tine",
+            ToolKind::Rake => "rake",
+            ToolKind::Wavy => "wavy",
+            ToolKind::Circular => "circular",
+            ToolKind::Vortex => "vortex",
+            ToolKind::Stylus => "stylus",
+            ToolKind::Jiggle => "jiggle",
+            ToolKind::Shift => "shift",
+            ToolKind::Turn => "turn",
+        }
+    }
+
     /// Name shown in the panel.
     pub fn label(self) -> &'static str {
         match self {
@@ -713,5 +730,15 @@ mod tests {
             panic!()
         };
         assert!((t.angle - std::f64::consts::FRAC_PI_2).abs() <= 0.5e-4);
+    }
+
+    #[test]
+    fn tool_names_are_their_stored_names() {
+        for t in ToolKind::ALL {
+            assert_eq!(
+                serde_json::to_string(&t).expect("serialises"),
+                format!("\"{}\"", t.name())
+            );
+        }
     }
 }

@@ -1,0 +1,154 @@
+// The tools schema v3 added, as a user meets them in Chromium on WebGL2: a drop pattern
+// shows its ghost drops before the click and lays one op cycling the palette, a
+// jiggle, a shift, a turn, a comb of five tines as one op and a free-hand stylus with
+// three tips — each changes the canvas, each is one undo step, the saved document
+// holds the v3 ops, and the app's exact picture of it is `marbling render`'s. One
+// browser, one page, a small sheet.
+import { after, before, describe, test } from 'node:test';
+import assert from 'node:assert/strict';
+import { execFileSync } from 'node:child_process';
+import fs from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
+import {
+  MARBLING, READY_MS, SHOTS, clickControl, crop, decode, differing, download, launch, sheet, shootSheet, waitOps,
+} from './harness.mjs';
+
+const SMALL = {
+  version: 1, width: 300, height: 200, background: '#f4ecd8',
+  ops: [
+    { type: 'drop', center: [150, 100], radius: 60, color: '#2a9d8f' },
+  ],
+};
+
+/** The `#d=` fragment of `design` (made by the CLI, like a shared link). */
+function fragment(design) {
+  const file = path.join(os.tmpdir(), `marbling-tools-${process.pid}.json`);
+  fs.writeFileSync(file, JSON.stringify(design));
+  const link = execFileSync(MARBLING, ['link', file, '--base', 'http://x/']).toString().trim();
+  return link.slice(link.indexOf('#'));
+}
+
+const PREFS = JSON.stringify({
+  tool: 'drop',
+  palette: 0,
+  ink: '#1d3557',
+  antialias: 'rgss',
+  settings: {
+    drop_radius: 9, drop_growth: 0, drop_pattern: 'grid', pattern_rows: 3, pattern_columns: 4,
+    pattern_spacing: 40, cycle_colors: true, stylus_wake: 4, stylus_tips: 3, stylus_spacing: 25,
+    rake_tines: 5, rake_spacing: 30, jiggle_wavelength: 90, jiggle_along: 6, jiggle_across: 10,
+  },
+});
+
+describe('v3 tools on webgl2', () => {
+  let browser;
+  let site;
+  before(async () => {
+    ({ browser, site } = await launch('webgl2'));
+  });
+  after(async () => {
+    await browser?.close();
+    site?.server.close();
+  });
+
+  test('drop pattern, stylus, comb, jiggle, shift and turn: one op each, the CLI picture', async () => {
+    const context = await browser.newContext({ viewport: { width: 760, height: 480 }, deviceScaleFactor: 1, acceptDownloads: true });
+    await context.addInitScript((p) => localStorage.setItem('marbling.prefs.v1', p), PREFS);
+    const page = await context.newPage();
+    const errors = [];
+    page.on('pageerror', (e) => errors.push(String(e)));
+    await page.goto(site.url + fragment(SMALL));
+    let n = SMALL.ops.length;
+    await waitOps(page, n);
+    const s = await sheet(page);
+    const p = (x, y) => ({ x: s.x + x * s.scale, y: s.y + y * s.scale });
+    let last = await shootSheet(page, SMALL.width, SMALL.height);
+
+    // Ghost drops: hovering with a pattern draws its 12 drops before any click.
+    const c = p(150, 100);
+    await page.mouse.move(c.x, c.y);
+    await page.waitForTimeout(400);
+    const clip = { x: Math.round(s.x), y: Math.round(s.y), width: Math.floor(SMALL.width * s.scale), height: Math.floor(SMALL.height * s.scale) };
+    const hovering = decode(await page.screenshot({ clip, timeout: READY_MS }));
+    assert.ok(differing(last.img, hovering, 24) > 0.002, 'no ghost drops before the click');
+    await page.mouse.click(c.x, c.y);
+
+    // Each step: draw, wait for its one op, check the canvas changed.
+    const t0 = Date.now();
+    const step = async (name, draw) => {
+      await draw();
+      console.log(`tools: ${name} drawn after ${((Date.now() - t0) / 1000).toFixed(1)} s`);
+      n += 1;
+      await waitOps(page, n);
+      const now = await shootSheet(page, SMALL.width, SMALL.height);
+      const changed = differing(last.img, now.img, 8);
+      console.log(`tools: ${name} changed ${(100 * changed).toFixed(2)} % of the sheet after ${((Date.now() - t0) / 1000).toFixed(1)} s`);
+      assert.ok(changed > 0.003, `${name} did not change the canvas`);
+      last = now;
+    };
+    const drag = async (points) => {
+      await page.mouse.move(points[0].x, points[0].y);
+      await page.mouse.down();
+      for (const q of points.slice(1)) await page.mouse.move(q.x, q.y);
+      await page.mouse.up();
+    };
+    await step('drop grid', async () => {});
+    await step('jiggle', async () => {
+      await clickControl(page, 'tool-jiggle');
+      await drag([p(100, 100), p(130, 110), p(160, 120)]);
+    });
+    await step('shift', async () => {
+      await clickControl(page, 'tool-shift');
+      await drag([p(150, 100), p(165, 105), p(180, 110)]);
+    });
+    await step('turn', async () => {
+      await clickControl(page, 'tool-turn');
+      const pts = [];
+      for (let i = 0; i <= 8; i++) pts.push(p(150 + 60 * Math.cos(i / 16), 100 + 60 * Math.sin(i / 16)));
+      await drag(pts);
+    });
+    await step('comb', async () => {
+      await clickControl(page, 'tool-rake');
+      await drag([p(150, 30), p(150, 60), p(150, 90), p(150, 110)]);
+    });
+    await step('stylus', async () => {
+      await clickControl(page, 'tool-stylus');
+      const pts = [];
+      for (let i = 0; i <= 10; i++) pts.push(p(40 + 22 * i, 100 + 45 * Math.sin(i / 1.6)));
+      await drag(pts);
+    });
+    await page.screenshot({ path: path.join(SHOTS, 'tools-v3-webgl2.png'), timeout: READY_MS });
+
+    // The saved document: version 3, the six ops in order, the pattern cycling colours.
+    const saved = JSON.parse((await download(page, 'save-json')).bytes.toString('utf8'));
+    assert.equal(saved.version, 3);
+    // Several-record ops (comb, stylus) last: every exact frame after them walks them.
+    assert.deepEqual(saved.ops.slice(1).map((o) => o.type), ['drops', 'jiggle', 'shift', 'turn', 'comb', 'stylus']);
+    const drops = saved.ops[1];
+    assert.equal(drops.centers.length, 12);
+    assert.ok(drops.colors.length >= 4, `the pattern did not cycle the palette: ${drops.colors}`);
+    assert.deepEqual(saved.ops[5].tines, [-60, -30, 0, 30, 60]);
+    assert.deepEqual(saved.ops[6].tips, [-25, 0, 25]);
+
+    // The app's exact picture is the CLI's.
+    const file = path.join(os.tmpdir(), `marbling-tools-saved-${process.pid}.json`);
+    fs.writeFileSync(file, JSON.stringify(saved));
+    const out = path.join(os.tmpdir(), `marbling-tools-${process.pid}.png`);
+    execFileSync(MARBLING, ['render', file, '-o', out, '--scale', String(last.scale), '--aa', 'rgss']);
+    const cpu = decode(fs.readFileSync(out));
+    const w = Math.min(cpu.width, last.img.width);
+    const h = Math.min(cpu.height, last.img.height);
+    const frac = differing(crop(cpu, w, h), crop(last.img, w, h), 24);
+    console.log(`tools: app vs CLI: ${(100 * frac).toFixed(3)} % of ${w}×${h} px differ by > 24/255`);
+    assert.ok(frac <= 0.01, `${(100 * frac).toFixed(2)} % of pixels differ from the CLI render`);
+
+    // Each tool was one undo step.
+    for (let k = 1; k <= 6; k++) {
+      await page.keyboard.press('Control+z');
+      await waitOps(page, n - k);
+    }
+    assert.deepEqual(errors, []);
+    await context.close();
+  });
+});
