@@ -60,6 +60,9 @@ pub enum MixArg {
     /// All fourteen op types (schema v1 and v3: shift, turn, comb, drops, sprays,
     /// jiggle, stylus) in equal parts.
     AllTypes,
+    /// A few drop patterns, then free-hand styli (on the CPU also timed walking with and
+    /// without the stylus's culling).
+    Stylus,
 }
 
 impl MixArg {
@@ -70,6 +73,7 @@ impl MixArg {
             MixArg::DropHeavy => ("drop-heavy", Mix::DropHeavy),
             MixArg::Mixed => ("mixed", Mix::Mixed),
             MixArg::AllTypes => ("all-types", Mix::AllTypes),
+            MixArg::Stylus => ("stylus", Mix::Stylus),
         }
     }
 }
@@ -115,7 +119,55 @@ pub fn run(args: &BenchArgs) -> Result<()> {
             let work =
                 f64::from(width) * f64::from(height) * args.aa.samples().len() as f64 * n as f64;
             println!("{name:<12} {n:>7} {best:>10.3} {:>18.3e}", work / best);
+            if m == MixArg::Stylus {
+                for cull in [true, false] {
+                    let start = Instant::now();
+                    walk_every_sample(&design, args.aa, cull);
+                    let secs = start.elapsed().as_secs_f64();
+                    let label = if cull { "walk culled" } else { "walk unculled" };
+                    println!("{label:<12} {n:>7} {secs:>10.3} {:>18.3e}", work / secs);
+                }
+            }
         }
     }
     Ok(())
+}
+
+/// Walks every sample of `design` at scale 1 back through its ops (all threads), the
+/// styli with their culling or without it ([`marbling_core::StylusSegment::
+/// inverse_unculled`]): the stylus's share of a render, with and without culling.
+fn walk_every_sample(design: &marbling_core::Design, aa: marbling_core::Antialias, cull: bool) {
+    use marbling_core::{CompiledOp, Point};
+    use rayon::prelude::*;
+    let steps = CompiledOp::compile(&design.ops);
+    let samples = aa.samples();
+    let moved: usize = (0..design.height)
+        .into_par_iter()
+        .map(|y| {
+            let mut moved = 0;
+            for x in 0..design.width {
+                for s in samples {
+                    let mut p = Point::new(f64::from(x) + s.dx, f64::from(y) + s.dy);
+                    for step in steps.iter().rev() {
+                        p = match step {
+                            CompiledOp::Stylus { segments } => segments.iter().rev().fold(p, |p, seg| {
+                                if cull {
+                                    seg.inverse(p)
+                                } else {
+                                    seg.inverse_unculled(p)
+                                }
+                            }),
+                            other => match other.inverse(p) {
+                                Some(q) => q,
+                                None => break,
+                            },
+                        };
+                    }
+                    moved += usize::from(p.x != f64::from(x) + s.dx);
+                }
+            }
+            moved
+        })
+        .sum();
+    std::hint::black_box(moved);
 }

@@ -49,6 +49,8 @@ pub enum Mix {
     Mixed,
     /// All fourteen op types (schema v1 and v3) in roughly equal parts.
     AllTypes,
+    /// A few drop patterns first, then free-hand styli (one tip or several).
+    Stylus,
 }
 
 const PALETTE: [Rgb8; 6] = [
@@ -73,6 +75,8 @@ pub fn random_design(seed: u64, width: u32, height: u32, n_ops: usize, mix: Mix)
             Mix::CombHeavy => [0, 2, 2, 2, 3, 3, 3, 4, 4, 5][rng.below(10) as usize],
             Mix::Mixed => rng.below(7) as usize,
             Mix::AllTypes => rng.below(14) as usize,
+            Mix::Stylus if i < n_ops / 10 + 1 => 10,
+            Mix::Stylus => 13,
         };
         let center = Point::new(rng.range(0.0, w), rng.range(0.0, h));
         let color = PALETTE[rng.below(PALETTE.len() as u64) as usize];

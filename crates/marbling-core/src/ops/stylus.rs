@@ -186,6 +186,11 @@ pub(crate) fn sub_step(qx: f64, qy: f64, h: f64, tips: &[f64], wake: f64) -> (f6
     {
         return (qx, qy);
     }
+    solve_sub_step(qx, qy, h, tips, wake)
+}
+
+/// [`sub_step`]'s Newton solve, for any point (out of reach it returns the point).
+fn solve_sub_step(qx: f64, qy: f64, h: f64, tips: &[f64], wake: f64) -> (f64, f64) {
     let (u, _) = tip_field(qx, qy, tips, wake);
     let (mut mx, mut my) = (qx + h * u[0], qy + h * u[1]);
     let tol = 1e-13 * (wake + qx.abs() + qy.abs());
@@ -234,6 +239,28 @@ impl StylusSegment {
         self.walk(p, false)
     }
 
+    /// [`StylusSegment::inverse`] without culling: every sub-step solved, whatever the
+    /// distance (the same result; the reference the culled walk is tested and
+    /// benchmarked against).
+    pub fn inverse_unculled(&self, p: Point) -> Point {
+        let nt = self.across();
+        let q = p - self.start;
+        let (mut x, mut y) = (q.dot(self.n), q.dot(nt));
+        let mut moved = false;
+        for j in (0..self.steps).rev() {
+            let xj = (f64::from(j) + 0.5) * self.delta;
+            let (nx, ny) = solve_sub_step(x - xj, y, -0.5 * self.delta, &self.tips, self.wake);
+            if nx != x - xj || ny != y {
+                (x, y) = (xj + nx, ny);
+                moved = true;
+            }
+        }
+        if !moved {
+            return p;
+        }
+        self.start + self.n * x + nt * y
+    }
+
     fn walk(&self, p: Point, forward: bool) -> Point {
         if !self.touches(p) {
             return p;
@@ -272,5 +299,36 @@ impl StylusSegment {
             return p;
         }
         self.start + self.n * x + nt * y
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::synth::SplitMix64;
+
+    /// The culling (the segment's rectangle, the sub-steps' window) changes nothing.
+    #[test]
+    fn the_culled_walk_equals_the_unculled_one() {
+        let s = Stylus {
+            path: Arc::from([
+                Point::new(10.0, 10.0),
+                Point::new(120.0, 60.0),
+                Point::new(60.0, 150.0),
+            ]),
+            wake: 3.0,
+            tips: Some(Arc::from([-20.0, 0.0, 15.0])),
+        };
+        let mut rng = SplitMix64(5);
+        let mut moved = 0;
+        for seg in s.segments() {
+            for _ in 0..400 {
+                let p = Point::new(rng.range(-40.0, 200.0), rng.range(-40.0, 200.0));
+                let (a, b) = (seg.inverse(p), seg.inverse_unculled(p));
+                assert!((a - b).hypot() <= 1e-9, "{p:?}: {a:?} vs {b:?}");
+                moved += usize::from(a != p);
+            }
+        }
+        assert!(moved > 50, "too few points near the path to mean anything: {moved}");
     }
 }
