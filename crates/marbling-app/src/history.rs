@@ -232,11 +232,12 @@ impl History {
         if ops.is_empty() {
             return Ok(());
         }
-        let base_ops = self.shown().op_count();
-        if base_ops + ops.len() > MAX_OPS {
+        let base_ops = self.shown().counted_ops();
+        let adding = ops.iter().map(Op::counted_ops).sum::<usize>();
+        if base_ops + adding > MAX_OPS {
             return Err(EditError::TooManyOps {
                 have: base_ops,
-                adding: ops.len(),
+                adding,
             });
         }
         let label = gesture_label(&ops);
@@ -604,6 +605,32 @@ mod tests {
         h.push_ops((0..10).map(|i| spray(f64::from(i))).collect())
             .expect("a value");
         assert_eq!(h.design().ops.len(), MAX_OPS);
+        assert!(h.design().validate().is_ok());
+    }
+
+    #[test]
+    fn every_drop_of_a_pattern_counts_toward_the_cap() {
+        use marbling_core::{DropSet, Point, Radii};
+        let mut d = blank();
+        d.ops = (0..MAX_OPS - 10).map(|i| spray(i as f64)).collect();
+        let mut h = History::new(d);
+        let pattern = |n: usize| {
+            Op::Drops(DropSet {
+                centers: (0..n).map(|i| Point::new(i as f64, 5.0)).collect(),
+                radii: Radii::One(2.0),
+                colors: std::sync::Arc::from([Rgb8::new(1, 2, 3)]),
+            })
+        };
+        let err = h.push_ops(vec![pattern(11)]).expect_err("over the cap");
+        assert_eq!(
+            err,
+            EditError::TooManyOps {
+                have: MAX_OPS - 10,
+                adding: 11
+            }
+        );
+        h.push_ops(vec![pattern(10)]).expect("at the cap");
+        assert_eq!(h.design().counted_ops(), MAX_OPS);
         assert!(h.design().validate().is_ok());
     }
 }

@@ -50,6 +50,12 @@ impl Shown {
         self.prefix().op_count()
     }
 
+    /// How many ops those count as toward [`marbling_core::MAX_OPS`] (every drop of a
+    /// pattern counts).
+    pub fn counted_ops(&self) -> usize {
+        self.prefix().ops().map(Op::counted_ops).sum()
+    }
+
     /// Sheet width and height, design pixels.
     pub fn size(&self) -> (u32, u32) {
         (self.design.width, self.design.height)

@@ -150,13 +150,15 @@ fn walk_every_sample(design: &marbling_core::Design, aa: marbling_core::Antialia
                     let mut p = Point::new(f64::from(x) + s.dx, f64::from(y) + s.dy);
                     for step in steps.iter().rev() {
                         p = match step {
-                            CompiledOp::Stylus { segments } => segments.iter().rev().fold(p, |p, seg| {
-                                if cull {
-                                    seg.inverse(p)
-                                } else {
-                                    seg.inverse_unculled(p)
-                                }
-                            }),
+                            CompiledOp::Stylus { segments } => {
+                                segments.iter().rev().fold(p, |p, seg| {
+                                    if cull {
+                                        seg.inverse(p)
+                                    } else {
+                                        seg.inverse_unculled(p)
+                                    }
+                                })
+                            }
                             other => match other.inverse(p) {
                                 Some(q) => q,
                                 None => break,

@@ -10,7 +10,9 @@
 //   KIND_CIRCULAR, KIND_VORTEX: a = (kind, cx, cy, r),      b = (αλ, λ, 0, 0)
 //   KIND_RIGID (shift, turn):   a = (kind, cx, cy, sin θ),  b = (cos θ, ox, oy, 0)
 //   KIND_JIGGLE:           a = (kind, ux, uy, 2π/λ),        b = (A, B, φ₀ mod 2π, 0)
-// KIND_TINES and KIND_STYLUS span several records; records.wgsl walks them.
+// KIND_TINES and KIND_STYLUS span several records; ops_v3.wgsl walks them and, in the
+// exact walk, KIND_RIGID and KIND_JIGGLE (the live preview calls rigid_back and
+// jiggle_back directly).
 // Packed sRGB is r·65536 + g·256 + b, exact in an f32 (24 bits).
 
 const KIND_DROP: u32 = 0u;
@@ -41,14 +43,9 @@ fn op_back(a: vec4<f32>, b: vec4<f32>, p: vec2<f32>) -> vec3<f32> {
         case KIND_CIRCULAR, KIND_VORTEX: {
             return swirl_back(a, b, p);
         }
-        case KIND_RIGID: {
-            return rigid_back(a, b, p);
-        }
-        case KIND_JIGGLE: {
-            return jiggle_back(a, b, p);
-        }
         default: {
-            // Several-record kinds are walked by records.wgsl, never here.
+            // Schema v3's kinds are walked by ops_v3.wgsl (`v3_back`), never here: two
+            // more cases slow every v1 walk on a CPU-emulated GPU.
             return vec3<f32>(p, 0.0);
         }
     }

@@ -1,9 +1,9 @@
 // The walk over a design's op records, newest → oldest (prepended after common.wgsl
-// to the exact renderer and the per-op test). Ops of one record are walked with
-// common.wgsl's `op_back`; finite combs and styli, which span several records, with
-// `several_back` of several.wgsl, or of several_off.wgsl (`SEVERAL_ENABLED` false) in
-// the variant for designs that have none, which so compiles none of their code (a
-// software GPU runs every branch). The including module defines
+// to the exact renderer and the per-op test). Schema v1's ops are walked with
+// common.wgsl's `op_back`; schema v3's (shift, turn, jiggle, and the finite comb and
+// stylus, which span several records) with `v3_back` of ops_v3.wgsl, or of
+// ops_v3_off.wgsl (`V3_ENABLED` false) in the variant for designs that have none,
+// which so compiles none of their code. The including module defines
 // `fn op_record(i: u32) -> OpRecord`: record i of the stream (render.wgsl reads the op
 // texture).
 
@@ -33,8 +33,8 @@ fn walk_records(first: u32, end: u32, p0: vec2<f32>) -> WalkEnd {
         let kind = u32(r.a.x);
         // Records this op spans (header and data).
         var span = 1u;
-        if SEVERAL_ENABLED && (kind == KIND_TINES || kind == KIND_STYLUS) {
-            let s = several_back(at, r, p);
+        if V3_ENABLED && kind >= KIND_RIGID {
+            let s = v3_back(at, r, p);
             p = s.xy;
             span = u32(s.z);
         } else {

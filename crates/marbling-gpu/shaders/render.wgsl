@@ -65,9 +65,10 @@ fn walk(p0: vec2<f32>) -> Hit {
 }
 
 // Record i of the op texture (records.wgsl walks them).
+// (Records per row are a power of two: a mask and a shift, no division.)
 fn op_record(i: u32) -> OpRecord {
-    let col = i32((i % params.ops_per_row) * 2u);
-    let row = i32(i / params.ops_per_row);
+    let col = i32((i & (params.ops_per_row - 1u)) * 2u);
+    let row = i32(i >> countTrailingZeros(params.ops_per_row));
     return OpRecord(textureLoad(ops, vec2<i32>(col, row), 0), textureLoad(ops, vec2<i32>(col + 1, row), 0));
 }
 

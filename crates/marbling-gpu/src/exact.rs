@@ -44,8 +44,8 @@ pub struct PreparedDesign {
     surface_params: SurfaceParams,
     /// Whether the design needs the surface variant of the pipeline.
     textured: bool,
-    /// Whether it holds finite combs or styli (the several-record variant).
-    several: bool,
+    /// Whether it holds schema v3 ops (the variant that walks them).
+    v3: bool,
     uniform: wgpu::Buffer,
     bind_group: wgpu::BindGroup,
     params: RenderParams,
@@ -185,7 +185,7 @@ impl ExactRenderer {
             surface_params: SurfaceParams::new(design),
             surface,
             textured: false,
-            several: false,
+            v3: false,
             uniform,
             bind_group,
             params: RenderParams::new(
@@ -265,10 +265,7 @@ impl ExactRenderer {
             prepared.surface_params = surface_params;
         }
         prepared.textured = surface_params.flags != 0;
-        prepared.several = prepared
-            .uploaded
-            .iter()
-            .any(|op| matches!(op, Op::Comb(_) | Op::Stylus(_)));
+        prepared.v3 = prepared.uploaded.iter().any(Op::is_v3);
         self.variant_pipeline(device, prepared.variant());
         prepared.background = design.background;
         (prepared.width, prepared.height) = (design.width, design.height);
@@ -435,7 +432,7 @@ impl PreparedDesign {
     pub(crate) fn variant(&self) -> ExactVariant {
         ExactVariant {
             surface: self.textured,
-            several: self.several,
+            v3: self.v3,
         }
     }
 

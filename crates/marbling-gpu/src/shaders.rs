@@ -1,7 +1,7 @@
 //! The WGSL sources, compiled into the crate. WGSL has no includes, so each module is
 //! assembled from files: `common.wgsl` (op inverse, sRGB transfer, full-screen
 //! triangle), then for the exact renderer `records.wgsl` (the walk over op records),
-//! `several.wgsl` (finite combs and styli) or its stand-in, marbling-noise's `noise`
+//! `ops_v3.wgsl` (the ops schema v3 added) or its stand-in, marbling-noise's `noise`
 //! module and `surface.wgsl` (schema v2 noise backgrounds and grain overlays) or its
 //! stand-in, then its own file. [`ExactVariant`] names the four exact modules.
 
@@ -9,12 +9,13 @@ use crate::preview_kind::PreviewKind;
 
 /// `shaders/common.wgsl`.
 pub const COMMON: &str = include_str!("../shaders/common.wgsl");
-/// `shaders/records.wgsl`: the walk over op records and the several-record ops.
+/// `shaders/records.wgsl`: the walk over op records.
 pub const RECORDS: &str = include_str!("../shaders/records.wgsl");
-/// `shaders/several.wgsl`: finite combs and styli (ops of several records).
-pub const SEVERAL: &str = include_str!("../shaders/several.wgsl");
-/// `shaders/several_off.wgsl`: stand-in for `several.wgsl` in variants without them.
-pub const SEVERAL_OFF: &str = include_str!("../shaders/several_off.wgsl");
+/// `shaders/ops_v3.wgsl`: the exact walk of schema v3's ops (shift, turn, jiggle,
+/// finite comb, stylus).
+pub const OPS_V3: &str = include_str!("../shaders/ops_v3.wgsl");
+/// `shaders/ops_v3_off.wgsl`: stand-in for `ops_v3.wgsl` in variants without v3 ops.
+pub const OPS_V3_OFF: &str = include_str!("../shaders/ops_v3_off.wgsl");
 /// `shaders/surface.wgsl`: noise background, pigment and paper grain.
 pub const SURFACE: &str = include_str!("../shaders/surface.wgsl");
 /// `shaders/surface_off.wgsl`: stand-ins for `surface.wgsl` in the plain variant.
@@ -22,8 +23,8 @@ pub const SURFACE_OFF: &str = include_str!("../shaders/surface_off.wgsl");
 /// `shaders/render.wgsl`: the exact renderer's entry points.
 pub const RENDER: &str = include_str!("../shaders/render.wgsl");
 
-/// The exact renderer for designs with a plain background, no overlays, no finite comb
-/// and no stylus (every v1 design): `common.wgsl`, `records.wgsl`, `several_off.wgsl`,
+/// The exact renderer for designs with a plain background, no overlays and no schema v3
+/// op (every v1 design): `common.wgsl`, `records.wgsl`, `ops_v3_off.wgsl`,
 /// `surface_off.wgsl`, `render.wgsl` — no noise or stylus code, so it is as small and
 /// fast as before schemas v2 and v3.
 pub const RENDER_PLAIN_WGSL: &str = concat!(
@@ -31,7 +32,7 @@ pub const RENDER_PLAIN_WGSL: &str = concat!(
     "\n",
     include_str!("../shaders/records.wgsl"),
     "\n",
-    include_str!("../shaders/several_off.wgsl"),
+    include_str!("../shaders/ops_v3_off.wgsl"),
     "\n",
     include_str!("../shaders/surface_off.wgsl"),
     "\n",
@@ -47,8 +48,8 @@ pub const RENDER_COMPUTE: &str = include_str!("../shaders/render_compute.wgsl");
 pub struct ExactVariant {
     /// With schema v2 surfaces (`surface.wgsl` and the noise module).
     pub surface: bool,
-    /// With finite combs and styli (`several.wgsl`).
-    pub several: bool,
+    /// With schema v3's ops (`ops_v3.wgsl`).
+    pub v3: bool,
 }
 
 impl ExactVariant {
@@ -56,43 +57,43 @@ impl ExactVariant {
     pub const ALL: [ExactVariant; 4] = [
         ExactVariant {
             surface: false,
-            several: false,
+            v3: false,
         },
         ExactVariant {
             surface: true,
-            several: false,
+            v3: false,
         },
         ExactVariant {
             surface: false,
-            several: true,
+            v3: true,
         },
         ExactVariant {
             surface: true,
-            several: true,
+            v3: true,
         },
     ];
 
     /// Position in [`ExactVariant::ALL`].
     pub fn index(self) -> usize {
-        usize::from(self.surface) + 2 * usize::from(self.several)
+        usize::from(self.surface) + 2 * usize::from(self.v3)
     }
 
     /// Short name, for labels and test messages.
     pub fn name(self) -> &'static str {
-        match (self.surface, self.several) {
+        match (self.surface, self.v3) {
             (false, false) => "plain",
             (true, false) => "surface",
-            (false, true) => "several",
-            (true, true) => "surface+several",
+            (false, true) => "v3",
+            (true, true) => "surface+v3",
         }
     }
 
     /// The render module (vertex and fragment entry points).
     pub fn render_wgsl(self) -> String {
-        if !self.surface && !self.several {
+        if !self.surface && !self.v3 {
             return RENDER_PLAIN_WGSL.to_owned();
         }
-        let several = if self.several { SEVERAL } else { SEVERAL_OFF };
+        let v3 = if self.v3 { OPS_V3 } else { OPS_V3_OFF };
         let surface = if self.surface {
             let noise = marbling_noise::wgsl::module("noise").unwrap_or_else(|| {
                 unreachable!("marbling-noise always provides its noise module");
@@ -101,7 +102,7 @@ impl ExactVariant {
         } else {
             SURFACE_OFF.to_owned()
         };
-        [COMMON, RECORDS, several, &surface, RENDER].join("\n")
+        [COMMON, RECORDS, v3, &surface, RENDER].join("\n")
     }
 
     /// The render module with the compute entry point.
@@ -149,11 +150,11 @@ pub const PRESENT_WGSL: &str = concat!(
     include_str!("../shaders/present.wgsl")
 );
 
-/// The exact renderer with everything: schema v2 surfaces, finite combs and styli.
+/// The exact renderer with everything: schema v2 surfaces and schema v3 ops.
 pub fn render_wgsl() -> String {
     ExactVariant {
         surface: true,
-        several: true,
+        v3: true,
     }
     .render_wgsl()
 }

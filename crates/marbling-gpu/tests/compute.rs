@@ -279,7 +279,7 @@ fn wgsl_inverse_matches_cpu(kind: marbling_core::OpKind) {
     let shaders = [
         marbling_gpu::shaders::COMMON,
         marbling_gpu::shaders::RECORDS,
-        marbling_gpu::shaders::SEVERAL,
+        marbling_gpu::shaders::OPS_V3,
     ]
     .join("\n");
     let (other_answer, worst) = inverse_errors(&ctx, &shaders, kind);
@@ -301,7 +301,7 @@ fn a_wrong_wgsl_inverse_is_caught() {
     let shaders = [
         marbling_gpu::shaders::COMMON,
         marbling_gpu::shaders::RECORDS,
-        marbling_gpu::shaders::SEVERAL,
+        marbling_gpu::shaders::OPS_V3,
     ]
     .join("\n");
     for (kind, right, wrong) in [

@@ -333,7 +333,7 @@ fn full_strength_designs_within_their_f32_conditioning() {
 }
 
 /// Designs of all fourteen op types (schema v3's shift, turn, comb, drops, sprays,
-/// jiggle and stylus among them), drawn by the variant with several-record ops.
+/// jiggle and stylus among them), drawn by the variant with v3 ops.
 #[test]
 fn designs_with_every_op_type() {
     let Some(gpu) = common::renderer() else {

@@ -211,7 +211,7 @@ fn the_op_back_test_shader_validates() {
     let source = [
         marbling_gpu::shaders::COMMON,
         marbling_gpu::shaders::RECORDS,
-        marbling_gpu::shaders::SEVERAL,
+        marbling_gpu::shaders::OPS_V3,
         include_str!("op_back.wgsl"),
     ]
     .join("\n");

@@ -329,6 +329,9 @@ mod tests {
                 moved += usize::from(a != p);
             }
         }
-        assert!(moved > 50, "too few points near the path to mean anything: {moved}");
+        assert!(
+            moved > 50,
+            "too few points near the path to mean anything: {moved}"
+        );
     }
 }

@@ -1,7 +1,12 @@
-// Ops that span several records (see records.wgsl): finite combs and styli.
+// The ops schema v3 added, in the exact walk (see records.wgsl): shift and turn
+// (KIND_RIGID) and the jiggle, one record each (their inverses are in common.wgsl, where
+// the live preview takes them too), and the finite comb and the stylus, which span
+// several records. Designs without v3 ops are drawn by a variant with ops_v3_off.wgsl
+// instead, which compiles none of this: on lavapipe two more cases in the plain walk's
+// `op_back` switch made 1,000-op v1 designs 3.5× slower (docs/BENCHMARKS.md).
 //
-// Encodings (the host's `compiled_records` in src/encode.rs); the header is the newest
-// record, its data records come before it:
+// Several-record encodings (the host's `compiled_records` in src/encode.rs); the header
+// is the newest record, its data records come before it:
 //   KIND_TINES: ⌈T/8⌉ records of tine offsets (8 per record, padded with the first),
 //     then the header a = (kind, ax, ay, mx), b = (my, αλ, λ, T).
 //   KIND_STYLUS: for T > 1 tips, ⌈T/8⌉ records of tip offsets; then per segment two
@@ -9,7 +14,7 @@
 //     b (records to step back over: 2, plus the tips' for the first segment, ℓ, 0, 0)
 //     and the header H1 = a (kind, start x, start y, n.x), b (n.y, δ, N, L).
 
-const SEVERAL_ENABLED: bool = true;
+const V3_ENABLED: bool = true;
 
 // A stylus tip reaches R = 8L.
 const STYLUS_REACH: f32 = 8.0;
@@ -17,10 +22,17 @@ const STYLUS_REACH: f32 = 8.0;
 // tests/compute.rs).
 const STYLUS_NEWTON: u32 = 4u;
 
-// Walks `p` back through the several-record op whose header is record `at`:
-// (x, y, records it spans).
-fn several_back(at: u32, r: OpRecord, p: vec2<f32>) -> vec3<f32> {
-    if u32(r.a.x) == KIND_TINES {
+// Walks `p` back through the v3 op whose (header) record is `at`: (x, y, records it
+// spans).
+fn v3_back(at: u32, r: OpRecord, p: vec2<f32>) -> vec3<f32> {
+    let kind = u32(r.a.x);
+    if kind == KIND_RIGID {
+        return vec3<f32>(rigid_back(r.a, r.b, p).xy, 1.0);
+    }
+    if kind == KIND_JIGGLE {
+        return vec3<f32>(jiggle_back(r.a, r.b, p).xy, 1.0);
+    }
+    if kind == KIND_TINES {
         return vec3<f32>(tines_back(at, r, p), f32(1u + data_records(u32(r.b.w))));
     }
     let h2 = op_record(at - 1u);
