@@ -129,4 +129,35 @@ mod tests {
         assert_eq!(scaled(&full.ops[3], 1.0), full.ops[3]);
         assert_eq!((ease(0.0), ease(0.5), ease(1.0)), (0.0, 0.5, 1.0));
     }
+
+    #[test]
+    fn a_stroke_plays_along_its_path() {
+        use marbling_core::Stylus;
+        let op = Op::Stylus(Stylus {
+            path: Arc::from([
+                Point::new(0.0, 0.0),
+                Point::new(100.0, 0.0),
+                Point::new(100.0, 100.0),
+            ]),
+            wake: 4.0,
+            tips: None,
+        });
+        let Op::Stylus(half) = scaled(&op, 0.75) else {
+            panic!()
+        };
+        // Three quarters of 200 px: the first segment and half the second.
+        assert_eq!(
+            &half.path[..],
+            [
+                Point::new(0.0, 0.0),
+                Point::new(100.0, 0.0),
+                Point::new(100.0, 50.0)
+            ]
+        );
+        let Op::Stylus(none) = scaled(&op, 0.0) else {
+            panic!()
+        };
+        assert_eq!(none.sub_steps(), 0);
+        assert_eq!(scaled(&op, 1.0), op);
+    }
 }

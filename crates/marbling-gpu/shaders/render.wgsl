@@ -14,8 +14,8 @@ struct RenderParams {
     inv_scale: f32,
     // Number of records in the op texture.
     op_count: u32,
-    // Records per row of the op texture (2 texels each).
-    ops_per_row: u32,
+    // log2 of the records per row of the op texture (a power of two; 2 texels each).
+    ops_row_shift: u32,
     // Samples of the first pass, at samples[0 .. first_count].
     first_count: u32,
     // Samples of the refinement pass (0: none), at samples[first_count ..].
@@ -27,7 +27,7 @@ struct RenderParams {
 }
 
 @group(0) @binding(0) var<uniform> params: RenderParams;
-// Rgba32Float, 2 texels per record, record k at (2·(k mod ops_per_row), k div ops_per_row).
+// Rgba32Float, 2 texels per record, record k at (2·(k mod R), k div R), R = 2^ops_row_shift.
 @group(0) @binding(1) var ops: texture_2d<f32>;
 // Schema v2 noise background and grain overlays (surface.flags == 0: none).
 @group(0) @binding(2) var<uniform> surface: SurfaceParams;
@@ -65,10 +65,11 @@ fn walk(p0: vec2<f32>) -> Hit {
 }
 
 // Record i of the op texture (records.wgsl walks them).
-// (Records per row are a power of two: a mask and a shift, no division.)
+// (Records per row are a power of two: a mask and a shift, no division; the shift comes
+// from the host because WebGL2's GLSL ES 3.00 has no findLSB for countTrailingZeros.)
 fn op_record(i: u32) -> OpRecord {
-    let col = i32((i & (params.ops_per_row - 1u)) * 2u);
-    let row = i32(i >> countTrailingZeros(params.ops_per_row));
+    let col = i32((i & ((1u << params.ops_row_shift) - 1u)) * 2u);
+    let row = i32(i >> params.ops_row_shift);
     return OpRecord(textureLoad(ops, vec2<i32>(col, row), 0), textureLoad(ops, vec2<i32>(col + 1, row), 0));
 }
 

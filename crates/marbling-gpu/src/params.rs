@@ -25,8 +25,8 @@ pub struct RenderParams {
     pub inv_scale: f32,
     /// Number of ops in the op texture.
     pub op_count: u32,
-    /// Ops per row of the op texture.
-    pub ops_per_row: u32,
+    /// log2 of the records per row of the op texture (a power of two).
+    pub ops_row_shift: u32,
     /// Samples in the first pass.
     pub first_count: u32,
     /// Samples in the refinement pass (0: none).
@@ -68,7 +68,7 @@ fn sample_texel(s: &Sample) -> [f32; 4] {
 }
 
 impl RenderParams {
-    /// Parameters for drawing ops (count and layout given) on `background` with
+    /// Parameters for drawing ops (count and records per row, a power of two, given) on `background` with
     /// `antialias`, output pixel (0, 0) of the target at output pixel `offset`, `scale`
     /// output pixels per design pixel.
     pub fn new(
@@ -91,7 +91,7 @@ impl RenderParams {
             offset: [offset[0] as f32, offset[1] as f32],
             inv_scale: (1.0 / scale) as f32,
             op_count,
-            ops_per_row,
+            ops_row_shift: ops_per_row.trailing_zeros(),
             first_count: first.len() as u32,
             refine_count: refine.len() as u32,
             encode_srgb: u32::from(encode_srgb),

@@ -54,7 +54,7 @@ fn render_params_match_wgsl() {
             ("offset", offset_of!(RenderParams, offset)),
             ("inv_scale", offset_of!(RenderParams, inv_scale)),
             ("op_count", offset_of!(RenderParams, op_count)),
-            ("ops_per_row", offset_of!(RenderParams, ops_per_row)),
+            ("ops_row_shift", offset_of!(RenderParams, ops_row_shift)),
             ("first_count", offset_of!(RenderParams, first_count)),
             ("refine_count", offset_of!(RenderParams, refine_count)),
             ("encode_srgb", offset_of!(RenderParams, encode_srgb)),

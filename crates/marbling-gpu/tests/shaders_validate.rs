@@ -112,8 +112,38 @@ fn every_entry_point_translates_to_webgl2_glsl() {
             .and_then(|mut w| w.write())
             .unwrap_or_else(|e| panic!("{name}.wgsl {entry} → GLSL ES 300: {e}"));
             assert!(out.starts_with("#version 300 es"), "{name} {entry}");
+            let missing = missing_from_glsl_es_300(&out);
+            assert!(
+                missing.is_empty(),
+                "{name} {entry}: naga wrote {missing:?}, which GLSL ES 3.00 (WebGL2) lacks"
+            );
         }
     }
+}
+
+/// Built-in functions naga may write that GLSL ES 3.00 does not have (they came in ES
+/// 3.10): WebGL2 refuses the shader ("'findLSB' : no matching overloaded function").
+fn missing_from_glsl_es_300(glsl: &str) -> Vec<&'static str> {
+    [
+        "findLSB(",
+        "findMSB(",
+        "bitCount(",
+        "bitfieldExtract(",
+        "bitfieldInsert(",
+        "bitfieldReverse(",
+    ]
+    .into_iter()
+    .filter(|f| glsl.contains(f))
+    .collect()
+}
+
+#[test]
+fn functions_webgl2_lacks_are_seen() {
+    assert_eq!(
+        missing_from_glsl_es_300("uint k = uint(findLSB(x)); int n = bitCount(y);"),
+        ["findLSB(", "bitCount("]
+    );
+    assert!(missing_from_glsl_es_300("uint k = x >> 3u;").is_empty());
 }
 
 /// Decimal float literals in the code of `source` (digits with a `.` and/or an exponent;
