@@ -178,7 +178,7 @@ impl MarblingApp {
         let s = &mut self.prefs.settings;
         match self.prefs.tool {
             ToolKind::Drop => {
-                ui.label("Click to drop; hold to grow. A pattern lays many drops at once (the ghosts show where).");
+                ui.label("Click to drop; hold to grow.");
                 ui.add(
                     Slider::new(&mut s.drop_radius, 1.0..=300.0)
                         .text("radius")
@@ -190,13 +190,19 @@ impl MarblingApp {
                         .text("max radius")
                         .logarithmic(true),
                 );
-                egui::ComboBox::from_label("pattern")
-                    .selected_text(s.drop_pattern.label())
-                    .show_ui(ui, |ui| {
-                        for p in DropPattern::ALL {
-                            ui.selectable_value(&mut s.drop_pattern, p, p.label());
-                        }
-                    });
+                ui.horizontal(|ui| {
+                    egui::ComboBox::from_id_salt("drop-pattern")
+                        .selected_text(s.drop_pattern.label())
+                        .show_ui(ui, |ui| {
+                            for p in DropPattern::ALL {
+                                ui.selectable_value(&mut s.drop_pattern, p, p.label());
+                            }
+                        })
+                        .response
+                        .on_hover_text("a pattern lays many drops at once; ghosts show where");
+                    ui.checkbox(&mut s.cycle_colors, "cycle colours")
+                        .on_hover_text("each drop takes the next colour of the palette");
+                });
                 match s.drop_pattern {
                     DropPattern::Single => {}
                     DropPattern::Line | DropPattern::Coil => {
@@ -235,7 +241,6 @@ impl MarblingApp {
                         );
                     }
                 }
-                ui.checkbox(&mut s.cycle_colors, "cycle colours through the palette");
             }
             ToolKind::Stylus => {
                 ui.label("Drag free-hand: the stylus pulls the ink along your path. Several tips make a free-hand comb.");
@@ -438,7 +443,7 @@ impl MarblingApp {
         let mut clicked = None;
         let mut rows_drawn = Vec::new();
         egui::ScrollArea::vertical()
-            .max_height(180.0)
+            .max_height(124.0)
             .id_salt("history")
             .stick_to_bottom(true)
             .show_rows(ui, 18.0, n + 1, |ui, rows| {

@@ -424,8 +424,9 @@ pub(crate) fn tines_shift(x: f64, y: f64, s: &CompiledOp, sign: f64) -> (f64, f6
     (x + f * mx, y + f * my)
 }
 
-/// The jiggle's forward map. Identity for other ops.
-fn jiggle_forward(p: Point, s: &CompiledOp) -> Point {
+/// A jiggle's move at `p` for the phase `phase_of(t)`, t = k(p·u) + φ₀: P ± (A·sin φ·u +
+/// B·cos φ·v), v = (−u.y, u.x). Identity for other ops.
+fn jiggle_move(p: Point, s: &CompiledOp, sign: f64, phase_of: impl Fn(f64, f64) -> f64) -> Point {
     let CompiledOp::Jiggle {
         ux,
         uy,
@@ -437,35 +438,24 @@ fn jiggle_forward(p: Point, s: &CompiledOp) -> Point {
     else {
         return p;
     };
-    let phi = k * (p.x * ux + p.y * uy) + phase;
-    let (sn, cs) = phi.sin_cos();
+    let (sn, cs) = phase_of(k * (p.x * ux + p.y * uy) + phase, k * along).sin_cos();
     Point::new(
-        p.x + along * sn * ux - across * cs * uy,
-        p.y + along * sn * uy + across * cs * ux,
+        p.x + sign * (along * sn * ux - across * cs * uy),
+        p.y + sign * (along * sn * uy + across * cs * ux),
     )
 }
 
-/// The jiggle's inverse: solves φ + kA·sin φ = k(P′·u) + φ₀ (reduced to [0, 2π)).
-/// Identity for other ops.
+/// The jiggle's forward map: φ = t.
+fn jiggle_forward(p: Point, s: &CompiledOp) -> Point {
+    jiggle_move(p, s, 1.0, |t, _| t)
+}
+
+/// The jiggle's inverse: φ solves φ + kA·sin φ = t (t reduced to [0, 2π), which sine and
+/// cosine do not see). Identity for other ops.
 pub(crate) fn jiggle_back(p: Point, s: &CompiledOp) -> Point {
-    let CompiledOp::Jiggle {
-        ux,
-        uy,
-        k,
-        along,
-        across,
-        phase,
-    } = *s
-    else {
-        return p;
-    };
-    let t = k * (p.x * ux + p.y * uy) + phase;
-    let t = t - (t / TAU).floor() * TAU;
-    let (sn, cs) = solve_kepler(t, k * along).sin_cos();
-    Point::new(
-        p.x - along * sn * ux + across * cs * uy,
-        p.y - along * sn * uy - across * cs * ux,
-    )
+    jiggle_move(p, s, -1.0, |t, ka| {
+        solve_kepler(t - (t / TAU).floor() * TAU, ka)
+    })
 }
 
 /// Inverse of a drop outside its disc: P = C + (P' − C)·√(1 − r²/ρ²), given

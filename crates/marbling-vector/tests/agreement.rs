@@ -20,6 +20,29 @@ const BUDGET: f64 = 0.01;
 /// Tracing tolerance, output pixels.
 const TOLERANCE: f64 = 1.0;
 
+/// The traced design, and its preview (RGSS, linear blending) against the CPU
+/// reference render at the same scale.
+fn traced_against_reference(
+    design: &marbling_core::Design,
+    opts: &TraceOptions,
+) -> (
+    marbling_vector::VectorDesign,
+    marbling_core::compare::ImageDiff,
+) {
+    let vector = trace(design, opts).expect("traceable");
+    let actual = preview(&vector, opts.scale, Blend::Linear(Antialias::Rgss)).expect("preview");
+    let expected = render(
+        design,
+        &RenderOptions {
+            scale: opts.scale,
+            antialias: Antialias::Rgss,
+        },
+    )
+    .expect("render");
+    let diff = compare(&expected, &actual, THRESHOLD).expect("same size");
+    (vector, diff)
+}
+
 #[test]
 fn vector_render_agrees_with_cpu_reference_on_random_designs() {
     let mixes = [Mix::Mixed, Mix::DropHeavy, Mix::CombHeavy];
@@ -33,7 +56,7 @@ fn vector_render_agrees_with_cpu_reference_on_random_designs() {
     let mut n = 0;
     println!("T = {TOLERANCE} px, 200×150, budget {BUDGET} of pixels off by more than {THRESHOLD}");
     println!(
-        "seed mix           ops regions  rings vertices  refined    peak capped dropped px² mismatch  trace s"
+        "seed mix           ops regions  rings vertices  refined    peak capped dropped px² mismatch  check s"
     );
     for (i, &ops) in sizes.iter().cycle().take(21).enumerate() {
         let mix = mixes[i % mixes.len()];
@@ -49,18 +72,8 @@ fn vector_render_agrees_with_cpu_reference_on_random_designs() {
         let seed = 1000 + i as u64;
         let design = random_design(seed, 200, 150, ops, mix);
         let start = Instant::now();
-        let vector = trace(&design, &opts).expect("traceable");
+        let (vector, diff) = traced_against_reference(&design, &opts);
         let secs = start.elapsed().as_secs_f64();
-        let actual = preview(&vector, opts.scale, Blend::Linear(Antialias::Rgss)).expect("preview");
-        let expected = render(
-            &design,
-            &RenderOptions {
-                scale: opts.scale,
-                antialias: Antialias::Rgss,
-            },
-        )
-        .expect("render");
-        let diff = compare(&expected, &actual, THRESHOLD).expect("same size");
         let s = vector.stats;
         println!(
             "{seed} {mix:<12?} {ops:>4} {:>7} {:>6} {:>8} {:>8} {:>7} {:>6} {:>11.1} {:>6.3} % {:>8.3}",
@@ -97,17 +110,7 @@ fn vector_render_agrees_on_designs_with_every_op_type() {
     for (seed, ops) in [(2001u64, 20usize), (2002, 40), (2003, 60)] {
         let design = random_design(seed, 200, 150, ops, Mix::AllTypes);
         assert!(design.version() == 3, "seed {seed} holds a v3 op");
-        let vector = trace(&design, &opts).expect("traceable");
-        let actual = preview(&vector, opts.scale, Blend::Linear(Antialias::Rgss)).expect("preview");
-        let expected = render(
-            &design,
-            &RenderOptions {
-                scale: opts.scale,
-                antialias: Antialias::Rgss,
-            },
-        )
-        .expect("render");
-        let diff = compare(&expected, &actual, THRESHOLD).expect("same size");
+        let (_, diff) = traced_against_reference(&design, &opts);
         println!(
             "seed {seed}, {ops} ops: {:.3} % of pixels differ",
             100.0 * diff.fraction()
