@@ -3,7 +3,9 @@
 // (data-ready, data-backend, data-ops, data-error, data-view, data-frame-ms,
 // data-controls, data-exporting, data-recovered).
 import assert from 'node:assert/strict';
+import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
+import os from 'node:os';
 import http from 'node:http';
 import path from 'node:path';
 import { chromium } from 'playwright-core';
@@ -144,4 +146,13 @@ export async function download(page, name) {
 export function example(name) {
   const file = path.join(ROOT, 'examples/designs', `${name}.json`);
   return { file, design: JSON.parse(fs.readFileSync(file, 'utf8')) };
+}
+
+/** The `#d=` fragment of `design` (made by the CLI, like a shared link); `name` keeps
+ * the temporary files of one test run apart. */
+export function linkFragment(design, name) {
+  const file = path.join(os.tmpdir(), `marbling-link-${process.pid}-${name}.json`);
+  fs.writeFileSync(file, JSON.stringify(design));
+  const link = execFileSync(MARBLING, ['link', file, '--base', 'http://x/']).toString().trim();
+  return link.slice(link.indexOf('#'));
 }

@@ -11,7 +11,7 @@ import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import {
-  MARBLING, READY_MS, SHOTS, attr, clickControl, controls, decode, differing, download, launch, openPage, sheet, shootSheet,
+  linkFragment, MARBLING, READY_MS, SHOTS, attr, clickControl, controls, decode, differing, download, launch, openPage, sheet, shootSheet,
   waitOps,
 } from './harness.mjs';
 
@@ -24,14 +24,6 @@ const SMALL = {
   ],
 };
 const N = SMALL.ops.length;
-
-/** The `#d=` fragment of `design` (made by the CLI, like a shared link). */
-function fragment(design, name) {
-  const file = path.join(os.tmpdir(), `marbling-history-${process.pid}-${name}.json`);
-  fs.writeFileSync(file, JSON.stringify(design));
-  const link = execFileSync(MARBLING, ['link', file, '--base', 'http://x/']).toString().trim();
-  return link.slice(link.indexOf('#'));
-}
 
 /** Preferences stored before the page loads (the app restores them). */
 function prefs(tool, settings) {
@@ -84,7 +76,7 @@ describe('history on webgl2', () => {
     const page = await context.newPage();
     const errors = [];
     page.on('pageerror', (e) => errors.push(String(e)));
-    await page.goto(site.url + fragment(SMALL, 'stroke'));
+    await page.goto(site.url + linkFragment(SMALL, 'stroke'));
     await waitOps(page, N);
     const s = await sheet(page);
     const p = (x, y) => ({ x: s.x + x * s.scale, y: s.y + y * s.scale });
@@ -125,7 +117,7 @@ describe('history on webgl2', () => {
 
   test('a linked design keeps its edits across a reload; New, paper and an earlier-step edit are all recoverable', async () => {
     // Tall enough that the whole side panel (history, recent designs) is on screen.
-    const { page, context, errors } = await openPage(browser, site, fragment(SMALL, 'link'), { width: 1300, height: 1300 });
+    const { page, context, errors } = await openPage(browser, site, linkFragment(SMALL, 'link'), { width: 1300, height: 1300 });
     await waitOps(page, N);
     const s = await sheet(page);
     await page.mouse.click(s.x + 60 * s.scale, s.y + 40 * s.scale);

@@ -11,7 +11,7 @@ import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import {
-  MARBLING, READY_MS, SHOTS, clickControl, crop, decode, differing, download, launch, sheet, shootSheet, waitOps,
+  linkFragment, MARBLING, READY_MS, SHOTS, clickControl, crop, decode, differing, download, launch, sheet, shootSheet, waitOps,
 } from './harness.mjs';
 
 const SMALL = {
@@ -20,14 +20,6 @@ const SMALL = {
     { type: 'drop', center: [150, 100], radius: 60, color: '#2a9d8f' },
   ],
 };
-
-/** The `#d=` fragment of `design` (made by the CLI, like a shared link). */
-function fragment(design) {
-  const file = path.join(os.tmpdir(), `marbling-tools-${process.pid}.json`);
-  fs.writeFileSync(file, JSON.stringify(design));
-  const link = execFileSync(MARBLING, ['link', file, '--base', 'http://x/']).toString().trim();
-  return link.slice(link.indexOf('#'));
-}
 
 const PREFS = JSON.stringify({
   tool: 'drop',
@@ -58,7 +50,7 @@ describe('v3 tools on webgl2', () => {
     const page = await context.newPage();
     const errors = [];
     page.on('pageerror', (e) => errors.push(String(e)));
-    await page.goto(site.url + fragment(SMALL));
+    await page.goto(site.url + linkFragment(SMALL, 'tools'));
     let n = SMALL.ops.length;
     await waitOps(page, n);
     const s = await sheet(page);
