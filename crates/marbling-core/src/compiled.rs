@@ -163,11 +163,6 @@ impl CompiledOp {
         }
     }
 
-    /// How many compiled ops `op` gives.
-    pub fn count(op: &Op) -> usize {
-        op.counted_ops()
-    }
-
     fn single(op: &Op) -> Self {
         match op {
             Op::Drop(d) => Self::Disc {

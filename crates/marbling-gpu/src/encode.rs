@@ -202,13 +202,6 @@ pub fn records(op: &Op, out: &mut Vec<GpuOp>) {
     }
 }
 
-/// The records of `op`, oldest first.
-pub fn op_records(op: &Op) -> Vec<GpuOp> {
-    let mut out = Vec::new();
-    records(op, &mut out);
-    out
-}
-
 /// The one record of an op the live preview can walk (one record; `None` for a drop
 /// pattern, a finite comb or a stylus).
 pub fn encode_op(op: &Op) -> Option<GpuOp> {
