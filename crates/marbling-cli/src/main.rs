@@ -7,6 +7,7 @@ mod bench_svg;
 mod input;
 mod link;
 mod noise;
+mod pattern;
 mod random;
 mod render;
 mod size;
@@ -40,6 +41,8 @@ enum Command {
     Svg(svg::SvgArgs),
     /// Write a random design (the benchmarks' synthetic designs) as JSON.
     Random(random::RandomArgs),
+    /// Write a traditional pattern's recipe (stone, chevron, nonpareil, …) as JSON.
+    Pattern(pattern::PatternArgs),
     /// Measure vector export time, vertex count and SVG size on synthetic designs.
     BenchSvg(bench_svg::BenchSvgArgs),
 }
@@ -55,6 +58,7 @@ fn main() -> ExitCode {
         Command::Svg(args) => svg::run(&args),
         Command::BenchSvg(args) => bench_svg::run(&args),
         Command::Random(args) => random::run(&args),
+        Command::Pattern(args) => pattern::run(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

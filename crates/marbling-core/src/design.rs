@@ -37,6 +37,9 @@ pub struct Design {
     /// Runs of two or more ops made by one gesture, sorted and disjoint (see
     /// [`crate::GestureSpan`]); every other op is a gesture of its own.
     pub gestures: Vec<GestureSpan>,
+    /// The pattern recipe the design was made from: name, history, step captions (any
+    /// schema version; it does not change the picture).
+    pub recipe: Option<crate::Recipe>,
 }
 
 impl Design {
@@ -50,6 +53,7 @@ impl Design {
             overlays: Vec::new(),
             ops: Vec::new(),
             gestures: Vec::new(),
+            recipe: None,
         }
     }
 

@@ -19,6 +19,7 @@ use crate::ops::OP_TYPES_V3;
 use crate::surface::{GrainKind, NoiseBackground, NoiseLayer, Overlay, Palette};
 use crate::validate::Checker;
 use crate::{
+    Recipe,
     Circular, Comb, Design, Drop, DropSet, GestureSpan, Jiggle, Op, Radii, Rake, Rgb8, Shift,
     Spray, Stylus, Tine, Turn, ValidationErrors, Vortex, Wavy,
 };
@@ -52,6 +53,7 @@ const TOP_FIELDS: &[&str] = &[
     "overlays",
     "ops",
     "gestures",
+    "recipe",
 ];
 const TOP_FIELDS_V1: &[&str] = &[
     "version",
@@ -60,6 +62,7 @@ const TOP_FIELDS_V1: &[&str] = &[
     "background",
     "ops",
     "gestures",
+    "recipe",
 ];
 
 /// Field names of each op type, `type` first, in the order they are written.
@@ -567,6 +570,20 @@ impl Reader {
         if let (Some(ops), Some(gestures)) = (&ops, &gestures) {
             self.c.gestures(gestures, ops.len());
         }
+        let recipe = self.recipe(obj.get("recipe"));
+        if let (Some(ops), Some(gestures), Some(Some(r))) = (&ops, &gestures, &recipe) {
+            let merged: usize = gestures.iter().map(|g| g.count.saturating_sub(1)).sum();
+            let steps = ops.len().saturating_sub(merged);
+            if r.captions.len() > steps {
+                self.c.push(
+                    "recipe.captions",
+                    format!(
+                        "at most one caption per step: {} captions for {steps} steps",
+                        r.captions.len()
+                    ),
+                );
+            }
+        }
         let (background, background_noise) = background?;
         Some(Design {
             width: width?,
@@ -576,7 +593,53 @@ impl Reader {
             overlays: overlays?,
             ops: ops?,
             gestures: gestures?,
+            recipe: recipe?,
         })
+    }
+
+    /// `"recipe": {"name", "history", "captions"}` (absent: none).
+    fn recipe(&mut self, v: Option<&Value>) -> Option<Option<Recipe>> {
+        let Some(v) = v else { return Some(None) };
+        let obj = self.object("recipe", v, &["name", "history", "captions"])?;
+        let text = |me: &mut Self, key: &str, v: Option<&Value>| -> Option<String> {
+            match v {
+                None => Some(String::new()),
+                Some(Value::String(s)) => Some(s.clone()),
+                Some(other) => {
+                    me.c.push(
+                        format!("recipe.{key}"),
+                        format!("must be a string, got {}", type_of(other)),
+                    );
+                    None
+                }
+            }
+        };
+        let name = text(self, "name", obj.get("name"));
+        let history = text(self, "history", obj.get("history"));
+        let captions = match obj.get("captions") {
+            None => Some(Vec::new()),
+            Some(Value::Array(items)) => items
+                .iter()
+                .enumerate()
+                .map(|(i, c)| text(self, &format!("captions[{i}]"), Some(c)))
+                .collect::<Vec<_>>()
+                .into_iter()
+                .collect(),
+            Some(other) => {
+                self.c.push(
+                    "recipe.captions",
+                    format!("must be an array of strings, got {}", type_of(other)),
+                );
+                None
+            }
+        };
+        let recipe = Recipe {
+            name: name?,
+            history: history?,
+            captions: captions?,
+        };
+        self.c.recipe(&recipe);
+        Some(Some(recipe))
     }
 
     /// `"gestures": [[first, count], …]` (absent: none); the spans' order and bounds
@@ -872,7 +935,21 @@ impl Design {
         if !self.gestures.is_empty() {
             m.insert("gestures".into(), self.gestures_value());
         }
+        if let Some(r) = self.recipe_value() {
+            m.insert("recipe".into(), r);
+        }
         Value::Object(m)
+    }
+
+    /// The recipe with at most one caption per step (undo may have taken steps away).
+    fn recipe_value(&self) -> Option<Value> {
+        let r = self.recipe.as_ref()?;
+        let steps = self.gesture_sizes().len();
+        Some(json!({
+            "name": r.name,
+            "history": r.history,
+            "captions": r.captions[..r.captions.len().min(steps)],
+        }))
     }
 
     fn gestures_value(&self) -> Value {
@@ -916,6 +993,15 @@ impl Design {
         out += if self.ops.is_empty() { "]" } else { "\n  ]" };
         if !self.gestures.is_empty() {
             out += &format!(",\n  \"gestures\": {}", self.gestures_value());
+        }
+        if let Some(r) = self.recipe_value() {
+            out += &format!(",\n  \"recipe\": {{\n    \"name\": {},\n    \"history\": {},\n    \"captions\": [", r["name"], r["history"]);
+            let captions = r["captions"].as_array().map_or(&[][..], |c| &c[..]);
+            for (i, c) in captions.iter().enumerate() {
+                out += if i == 0 { "\n      " } else { ",\n      " };
+                out += &c.to_string();
+            }
+            out += if captions.is_empty() { "]\n  }" } else { "\n    ]\n  }" };
         }
         out += "\n}\n";
         out

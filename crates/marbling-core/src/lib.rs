@@ -6,6 +6,7 @@
 //! Conventions: design pixels, origin top-left, x right, y down, angles in radians,
 //! colours sRGB `"#rrggbb"`; all geometry in f64.
 
+pub mod caption;
 pub mod color;
 pub mod compare;
 mod compiled;
@@ -14,7 +15,9 @@ mod gestures;
 mod image;
 mod json;
 mod op_kind;
+pub mod patterns;
 mod ops;
+mod recipe;
 mod render;
 pub mod sampling;
 mod share;
@@ -31,6 +34,7 @@ pub use image::{PngError, RgbaImage};
 pub use json::DesignError;
 pub use kurbo::{Point, Vec2};
 pub use op_kind::OpKind;
+pub use recipe::{MAX_CAPTION, MAX_RECIPE_HISTORY, MAX_RECIPE_NAME, Recipe};
 pub use ops::{
     ANGLE_STEP, Back, Circular, Comb, Drop, DropSet, Jiggle, LENGTH_STEP, MAX_COMB_TINES,
     MAX_DROPS, MAX_STYLUS_POINTS, MAX_STYLUS_TIPS, MAX_STYLUS_WORK, OP_TYPES, Op, Radii, Rake,

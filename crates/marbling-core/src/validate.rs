@@ -155,6 +155,26 @@ impl Checker {
     }
 
     /// Gesture spans: at least 2 ops each, inside the `ops` list, sorted and disjoint.
+    /// A recipe's text lengths (the caption count is checked against the steps by the
+    /// reader; the writer drops captions of steps that no longer exist).
+    pub(crate) fn recipe(&mut self, r: &crate::Recipe) {
+        use crate::{MAX_CAPTION, MAX_RECIPE_HISTORY, MAX_RECIPE_NAME};
+        let mut text = |path: String, s: &str, lo: usize, hi: usize| {
+            let n = s.chars().count();
+            if !(lo..=hi).contains(&n) {
+                self.push(
+                    path,
+                    format!("must be {lo} to {hi} characters long, got {n}"),
+                );
+            }
+        };
+        text("recipe.name".into(), &r.name, 1, MAX_RECIPE_NAME);
+        text("recipe.history".into(), &r.history, 0, MAX_RECIPE_HISTORY);
+        for (i, c) in r.captions.iter().enumerate() {
+            text(format!("recipe.captions[{i}]"), c, 1, MAX_CAPTION);
+        }
+    }
+
     pub(crate) fn gestures(&mut self, spans: &[crate::GestureSpan], ops: usize) {
         let mut end = 0;
         for (i, g) in spans.iter().enumerate() {
@@ -324,6 +344,9 @@ impl Design {
             c.op(i, op);
         }
         c.gestures(&self.gestures, self.ops.len());
+        if let Some(r) = &self.recipe {
+            c.recipe(r);
+        }
         if let Some(n) = &self.background_noise {
             let k = n.palette.stops.len();
             if !(2..=crate::MAX_PALETTE_STOPS).contains(&k) {
