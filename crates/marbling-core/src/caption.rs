@@ -75,9 +75,9 @@ pub fn describe_op(op: &Op) -> String {
             };
             let (lo, hi) = match &s.radii {
                 Radii::One(r) => (*r, *r),
-                Radii::Each(list) => list
-                    .iter()
-                    .fold((f64::INFINITY, 0.0f64), |(lo, hi), r| (lo.min(*r), hi.max(*r))),
+                Radii::Each(list) => list.iter().fold((f64::INFINITY, 0.0f64), |(lo, hi), r| {
+                    (lo.min(*r), hi.max(*r))
+                }),
             };
             let colors = if s.colors.len() == 1 {
                 format!("of {}", s.colors[0])
@@ -229,6 +229,9 @@ mod tests {
             "2 drops, the first a drop of #1d3557, radius 12 px, at (10.3, 3)"
         );
         assert_eq!(heading(Vec2::new(1.0, 1.0)), "at 45°");
-        assert_eq!((num(2.0), num(-0.25), num(1e-9)), ("2".into(), "-0.3".into(), "0".into()));
+        assert_eq!(
+            (num(2.0), num(-0.25), num(1e-9)),
+            ("2".into(), "-0.3".into(), "0".into())
+        );
     }
 }

@@ -19,9 +19,8 @@ use crate::ops::OP_TYPES_V3;
 use crate::surface::{GrainKind, NoiseBackground, NoiseLayer, Overlay, Palette};
 use crate::validate::Checker;
 use crate::{
-    Recipe,
-    Circular, Comb, Design, Drop, DropSet, GestureSpan, Jiggle, Op, Radii, Rake, Rgb8, Shift,
-    Spray, Stylus, Tine, Turn, ValidationErrors, Vortex, Wavy,
+    Circular, Comb, Design, Drop, DropSet, GestureSpan, Jiggle, Op, Radii, Rake, Recipe, Rgb8,
+    Shift, Spray, Stylus, Tine, Turn, ValidationErrors, Vortex, Wavy,
 };
 use kurbo::{Point, Vec2};
 use serde_json::{Map, Value, json};
@@ -995,13 +994,20 @@ impl Design {
             out += &format!(",\n  \"gestures\": {}", self.gestures_value());
         }
         if let Some(r) = self.recipe_value() {
-            out += &format!(",\n  \"recipe\": {{\n    \"name\": {},\n    \"history\": {},\n    \"captions\": [", r["name"], r["history"]);
+            out += &format!(
+                ",\n  \"recipe\": {{\n    \"name\": {},\n    \"history\": {},\n    \"captions\": [",
+                r["name"], r["history"]
+            );
             let captions = r["captions"].as_array().map_or(&[][..], |c| &c[..]);
             for (i, c) in captions.iter().enumerate() {
                 out += if i == 0 { "\n      " } else { ",\n      " };
                 out += &c.to_string();
             }
-            out += if captions.is_empty() { "]\n  }" } else { "\n    ]\n  }" };
+            out += if captions.is_empty() {
+                "]\n  }"
+            } else {
+                "\n    ]\n  }"
+            };
         }
         out += "\n}\n";
         out

@@ -15,8 +15,8 @@ mod gestures;
 mod image;
 mod json;
 mod op_kind;
-pub mod patterns;
 mod ops;
+pub mod patterns;
 mod recipe;
 mod render;
 pub mod sampling;
@@ -34,12 +34,12 @@ pub use image::{PngError, RgbaImage};
 pub use json::DesignError;
 pub use kurbo::{Point, Vec2};
 pub use op_kind::OpKind;
-pub use recipe::{MAX_CAPTION, MAX_RECIPE_HISTORY, MAX_RECIPE_NAME, Recipe};
 pub use ops::{
     ANGLE_STEP, Back, Circular, Comb, Drop, DropSet, Jiggle, LENGTH_STEP, MAX_COMB_TINES,
     MAX_DROPS, MAX_STYLUS_POINTS, MAX_STYLUS_TIPS, MAX_STYLUS_WORK, OP_TYPES, Op, Radii, Rake,
     Shift, Spray, Stylus, StylusSegment, Tine, Turn, Vortex, WAKE_REACH, Wavy, sub_steps_of,
 };
+pub use recipe::{MAX_CAPTION, MAX_RECIPE_HISTORY, MAX_RECIPE_NAME, Recipe};
 pub use render::{
     MAX_OUTPUT_PIXELS, MAX_OUTPUT_SIDE, RenderError, RenderOptions, output_size, render,
     render_with_progress,

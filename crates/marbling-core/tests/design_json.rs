@@ -272,7 +272,7 @@ fn unknown_fields_are_rejected() {
     );
     assert_error(
         &variant("\"version\": 1,", "\"version\": 1, \"title\": \"x\","),
-        "title: unknown field; expected one of version, width, height, background, ops, gestures",
+        "title: unknown field; expected one of version, width, height, background, ops, gestures, recipe",
     );
 }
 
@@ -399,4 +399,59 @@ fn rounded_ops_make_short_links() {
         marbling_core::decode_share(&marbling_core::share_fragment(&rounded)).expect("a value"),
         rounded
     );
+}
+
+#[test]
+fn a_recipe_round_trips_and_its_errors_name_the_field() {
+    let text = r##"{"version": 1, "width": 100, "height": 80, "background": "#ffffff",
+        "ops": [
+          {"type":"drop","center":[50,40],"radius":10,"color":"#112233"},
+          {"type":"drop","center":[20,40],"radius":10,"color":"#112233"},
+          {"type":"tine","origin":[0,40],"direction":[1,0],"alpha":20,"lambda":4}],
+        "gestures": [[0, 2]],
+        "recipe": {"name": "Test", "history": "Made here.", "captions": ["two drops"]}}"##;
+    let d = Design::from_json(text).expect("valid");
+    let r = d.recipe.clone().expect("recipe");
+    assert_eq!((r.name.as_str(), r.captions.len()), ("Test", 1));
+    assert_eq!(d.version(), 1, "a recipe needs no new schema version");
+    assert_eq!(Design::from_json(&d.to_json_pretty()).expect("pretty"), d);
+    assert_eq!(Design::from_json(&d.to_json_compact()).expect("compact"), d);
+    // The second step has no caption of its own: it is described from its numbers.
+    assert_eq!(
+        d.step_captions(),
+        vec![
+            "two drops".to_string(),
+            "a tine drawn left to right through (0, 40): shift 20 px, decay 4 px".into()
+        ]
+    );
+    // Undo past the captioned step: the writer keeps only captions of existing steps.
+    let mut short = d.clone();
+    short.truncate_ops(0);
+    let back = Design::from_json(&short.to_json_pretty()).expect("still valid");
+    assert_eq!(back.recipe.expect("kept").captions, Vec::<String>::new());
+
+    for (bad, message) in [
+        (
+            text.replace(
+                r#""captions": ["two drops"]"#,
+                r#""captions": ["a", "b", "c"]"#,
+            ),
+            "recipe.captions: at most one caption per step: 3 captions for 2 steps",
+        ),
+        (
+            text.replace(r#""name": "Test""#, r#""name": """#),
+            "recipe.name: must be 1 to 80 characters long, got 0",
+        ),
+        (
+            text.replace(r#""captions": ["two drops"]"#, r#""captions": [7]"#),
+            "recipe.captions[0]: must be a string, got a number",
+        ),
+        (
+            text.replace(r#""history""#, r#""story""#),
+            "recipe.story: unknown field; expected one of name, history, captions",
+        ),
+    ] {
+        let err = Design::from_json(&bad).expect_err("refused").to_string();
+        assert!(err.contains(message), "{err}\nexpected: {message}");
+    }
 }

@@ -7,7 +7,13 @@ use crate::{Point, Rgb8, Vec2};
 use std::f64::consts::{FRAC_PI_2, PI};
 
 const DUTCH: &[Rgb8] = &[rgb(0x1f3f8f), rgb(0xb22222), rgb(0xe1b12c), rgb(0x2e7d32)];
-const SOFT: &[Rgb8] = &[rgb(0x355070), rgb(0x6d597a), rgb(0xb56576), rgb(0xe56b6f), rgb(0xeaac8b)];
+const SOFT: &[Rgb8] = &[
+    rgb(0x355070),
+    rgb(0x6d597a),
+    rgb(0xb56576),
+    rgb(0xe56b6f),
+    rgb(0xeaac8b),
+];
 const OCEAN: &[Rgb8] = &[rgb(0x14213d), rgb(0xfca311), rgb(0x2a9d8f), rgb(0xe76f51)];
 
 const RIGHT: Vec2 = Vec2::new(1.0, 0.0);
@@ -23,7 +29,7 @@ pub(super) const PATTERNS: [Pattern; 13] = [
                   the ground of every combed pattern.",
         background: rgb(0xf7f3e8),
         colors: OCEAN,
-        spacing: 10.0,
+        spacing: 16.0,
         make: gel_git,
     },
     Pattern {
@@ -33,7 +39,7 @@ pub(super) const PATTERNS: [Pattern; 13] = [
                   stripes into arrowheads; common on 19th-century ledgers.",
         background: rgb(0xf7efe2),
         colors: SOFT,
-        spacing: 10.0,
+        spacing: 16.0,
         make: chevron,
     },
     Pattern {
@@ -43,7 +49,7 @@ pub(super) const PATTERNS: [Pattern; 13] = [
                   common combed paper of the 18th and 19th centuries.",
         background: rgb(0xf4ecd8),
         colors: DUTCH,
-        spacing: 10.0,
+        spacing: 16.0,
         make: nonpareil,
     },
     Pattern {
@@ -53,7 +59,7 @@ pub(super) const PATTERNS: [Pattern; 13] = [
                   lines, turning each little arch into a loop.",
         background: rgb(0xf4ecd8),
         colors: SOFT,
-        spacing: 12.0,
+        spacing: 16.0,
         make: reversed_nonpareil,
     },
     Pattern {
@@ -63,7 +69,7 @@ pub(super) const PATTERNS: [Pattern; 13] = [
                   rows of arches ripple.",
         background: rgb(0xf4ecd8),
         colors: OCEAN,
-        spacing: 10.0,
+        spacing: 16.0,
         make: wave_nonpareil,
     },
     Pattern {
@@ -73,7 +79,7 @@ pub(super) const PATTERNS: [Pattern; 13] = [
                   lines, so the arches fold into feathers.",
         background: rgb(0xf7f3e8),
         colors: SOFT,
-        spacing: 9.0,
+        spacing: 16.0,
         make: feather,
     },
     Pattern {
@@ -83,7 +89,7 @@ pub(super) const PATTERNS: [Pattern; 13] = [
                   row into bouquets.",
         background: rgb(0xf7efe2),
         colors: SOFT,
-        spacing: 10.0,
+        spacing: 16.0,
         make: bouquet,
     },
     Pattern {
@@ -93,7 +99,7 @@ pub(super) const PATTERNS: [Pattern; 13] = [
                   peacock eyes, a 19th-century revival favourite.",
         background: rgb(0xf4efe1),
         colors: &[rgb(0x0b3954), rgb(0x087e8b), rgb(0xbfd7ea), rgb(0xc81d25)],
-        spacing: 8.0,
+        spacing: 16.0,
         make: peacock,
     },
     Pattern {
@@ -103,7 +109,7 @@ pub(super) const PATTERNS: [Pattern; 13] = [
                   into the shape of a spread wing.",
         background: rgb(0xf5eee0),
         colors: &[rgb(0x2b2d42), rgb(0x8d99ae), rgb(0xd90429), rgb(0xedf2f4)],
-        spacing: 8.0,
+        spacing: 16.0,
         make: bird_wing,
     },
     Pattern {
@@ -133,7 +139,7 @@ pub(super) const PATTERNS: [Pattern; 13] = [
                   leaving rows of scallop shells.",
         background: rgb(0xf3ead6),
         colors: DUTCH,
-        spacing: 12.0,
+        spacing: 16.0,
         make: dutch_scallops,
     },
     Pattern {
@@ -143,36 +149,46 @@ pub(super) const PATTERNS: [Pattern; 13] = [
                   directions into the curling figures of a Kashmir shawl.",
         background: rgb(0xf6eddc),
         colors: &[rgb(0x5a1807), rgb(0xd4a017), rgb(0x1b4965), rgb(0x9b2226)],
-        spacing: 12.0,
+        spacing: 16.0,
         make: sal,
     },
 ];
 
-/// Every ink thrown in turn in small drops: the ground of the combed patterns.
 fn ground(m: &mut Maker) {
-    let n = m.ink_count().clamp(2, 5);
-    for i in 0..n {
-        m.throw(&format!("Throw colour {}", i + 1), i, 520 / n, 14.0, 26.0);
-    }
+    m.rows_ground();
 }
 
 fn gel_git(m: &mut Maker) {
     ground(m);
     let u = m.u;
-    m.gel_git(36.0 * u, 150.0 * u);
+    m.gel_git(48.0 * u, 100.0 * u);
 }
 
 fn chevron(m: &mut Maker) {
     gel_git(m);
     let u = m.u;
-    m.rake("Chevron, first pass", RIGHT, 80.0 * u, 0.0, 60.0 * u, 16.0 * u);
-    m.rake("Chevron, back between", LEFT, 80.0 * u, 40.0 * u, 60.0 * u, 16.0 * u);
+    m.rake(
+        "Chevron, first pass",
+        RIGHT,
+        80.0 * u,
+        0.0,
+        60.0 * u,
+        16.0 * u,
+    );
+    m.rake(
+        "Chevron, back between",
+        LEFT,
+        80.0 * u,
+        40.0 * u,
+        60.0 * u,
+        16.0 * u,
+    );
 }
 
 fn nonpareil(m: &mut Maker) {
     ground(m);
     let u = m.u;
-    m.gel_git(30.0 * u, 140.0 * u);
+    m.gel_git(48.0 * u, 100.0 * u);
     m.fine_comb("Nonpareil comb", RIGHT, 0.0);
 }
 
@@ -192,21 +208,34 @@ fn feather(m: &mut Maker) {
     nonpareil(m);
     let u = m.u;
     m.rake("Feather rake down", DOWN, 96.0 * u, 0.0, 40.0 * u, 10.0 * u);
-    m.rake("Feather rake up", UP, 96.0 * u, 48.0 * u, 40.0 * u, 10.0 * u);
+    m.rake(
+        "Feather rake up",
+        UP,
+        96.0 * u,
+        48.0 * u,
+        40.0 * u,
+        10.0 * u,
+    );
 }
 
 fn bouquet(m: &mut Maker) {
     ground(m);
     let u = m.u;
-    m.gel_git(32.0 * u, 45.0 * u);
+    m.gel_git(48.0 * u, 100.0 * u);
     m.fine_comb("Nonpareil comb", RIGHT, 0.0);
-    m.wavy("The bouquet comb's small waves", 0.0, 14.0 * u, 64.0 * u, 0.0);
+    m.wavy(
+        "The bouquet comb's small waves",
+        0.0,
+        14.0 * u,
+        64.0 * u,
+        0.0,
+    );
 }
 
 fn peacock(m: &mut Maker) {
     ground(m);
     let u = m.u;
-    m.gel_git(32.0 * u, 45.0 * u);
+    m.gel_git(48.0 * u, 100.0 * u);
     m.wavy("The wavy comb", 0.0, 12.0 * u, 40.0 * u, 0.0);
     m.fine_comb("The fine comb through the waves", DOWN, 0.0);
 }
@@ -214,45 +243,60 @@ fn peacock(m: &mut Maker) {
 fn bird_wing(m: &mut Maker) {
     nonpareil(m);
     let u = m.u;
-    // Curved strokes: arcs sweeping down and to the right, one every 80 px.
-    let mut paths = Vec::new();
-    let mut x0 = -40.0 * u;
-    while x0 < m.w {
-        let path: Vec<Point> = (0..=16)
-            .map(|k| {
-                let t = k as f64 / 16.0;
-                let a = PI * (1.0 - t) * 0.5;
-                Point::new(x0 + 120.0 * u * (1.0 - a.sin()), m.h * t)
-            })
-            .collect();
-        paths.push(path);
-        x0 += 80.0 * u;
-    }
-    m.styli("Wing strokes drawn down in curves", paths, 6.0 * u, None);
+    // Curved strokes across the tank, each bowed like the edge of a wing.
+    let rows = (m.h / (56.0 * u)).ceil() as usize;
+    let paths = (0..=rows)
+        .map(|r| {
+            let y0 = r as f64 * 56.0 * u;
+            (0..=24)
+                .map(|k| {
+                    let t = k as f64 / 24.0;
+                    Point::new(
+                        -20.0 * u + (m.w + 40.0 * u) * t,
+                        y0 + 70.0 * u * (PI * t).sin(),
+                    )
+                })
+                .collect()
+        })
+        .collect();
+    m.styli("Wing strokes drawn across in curves", paths, 9.0 * u, None);
 }
 
 fn serpentine(m: &mut Maker) {
     ground(m);
     let u = m.u;
-    let s = m.fine;
-    m.rake("Stripe rake across", RIGHT, s, 0.0, 160.0 * u, 30.0 * u);
-    m.wavy("The serpentine wave", FRAC_PI_2, 26.0 * u, 160.0 * u, 0.0);
-    m.wavy("A second, shorter wave", FRAC_PI_2, 10.0 * u, 70.0 * u, 1.0);
+    m.gel_git(48.0 * u, 100.0 * u);
+    m.wavy("The serpentine wave", 0.0, 30.0 * u, 160.0 * u, 0.0);
+    m.wavy("A second, shorter wave", 0.0, 10.0 * u, 70.0 * u, 1.0);
 }
 
 fn old_dutch(m: &mut Maker) {
     ground(m);
     let u = m.u;
     let s = m.fine;
-    m.gel_git(40.0 * u, 50.0 * u);
-    m.rake("The Dutch comb drawn across", RIGHT, s, 0.0, 1.5 * s, 0.3 * s);
-    m.rake("The comb drawn back", LEFT, 2.0 * s, s / 2.0, 1.2 * s, 0.3 * s);
+    m.gel_git(48.0 * u, 100.0 * u);
+    m.rake(
+        "The Dutch comb drawn across",
+        RIGHT,
+        s,
+        0.0,
+        1.5 * s,
+        0.3 * s,
+    );
+    m.rake(
+        "The comb drawn back",
+        LEFT,
+        2.0 * s,
+        s / 2.0,
+        1.2 * s,
+        0.3 * s,
+    );
 }
 
 fn dutch_scallops(m: &mut Maker) {
     ground(m);
     let u = m.u;
-    m.gel_git(36.0 * u, 48.0 * u);
+    m.gel_git(48.0 * u, 100.0 * u);
     // A comb of tines moved along a chain of half circles.
     let r = 40.0 * u;
     let rows = (m.h / (4.0 * r)).ceil() as usize;
@@ -270,14 +314,19 @@ fn dutch_scallops(m: &mut Maker) {
         }
         paths.push(path);
     }
-    let tips: Vec<f64> = (0..7).map(|k| (k as f64 - 3.0) * 12.0 * u).collect();
-    m.styli("Scallop comb drawn in half circles", paths, 4.0 * u, Some(tips));
+    let tips: Vec<f64> = (0..9).map(|k| (k as f64 - 4.0) * 10.0 * u).collect();
+    m.styli(
+        "Scallop comb drawn in half circles",
+        paths,
+        6.0 * u,
+        Some(tips),
+    );
 }
 
 fn sal(m: &mut Maker) {
     ground(m);
     let u = m.u;
-    m.gel_git(34.0 * u, 44.0 * u);
+    m.gel_git(48.0 * u, 100.0 * u);
     m.wavy("Wavy comb across", 0.0, 16.0 * u, 80.0 * u, 0.0);
     m.wavy("Wavy comb down", FRAC_PI_2, 16.0 * u, 120.0 * u, 0.5);
     m.fine_comb("Fine comb to finish", RIGHT, 0.0);

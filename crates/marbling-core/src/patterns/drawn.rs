@@ -19,7 +19,7 @@ pub(super) const PATTERNS: [Pattern; 4] = [
     Pattern {
         id: "nightingale-nest",
         name: "Bülbülyuvası (nightingale's nest)",
-        history: "Turkish ebru: on a battal ground the stylus winds spirals from the centre \
+        history: "Turkish ebru: on a gel-git ground the stylus winds spirals from the centre \
                   out, each one a nightingale's nest.",
         background: rgb(0xf6efe0),
         colors: &[rgb(0x264653), rgb(0xe9c46a), rgb(0xe76f51), rgb(0x2a9d8f)],
@@ -51,7 +51,7 @@ pub(super) const PATTERNS: [Pattern; 4] = [
 fn french_curl(m: &mut Maker) {
     let n = m.ink_count().clamp(2, 4);
     for i in 0..n {
-        m.throw(&format!("Throw colour {}", i + 1), i, 160 / n, 12.0, 24.0);
+        m.throw(&format!("Throw colour {}", i + 1), i, 320 / n, 14.0, 28.0);
     }
     let u = m.u;
     m.gel_git(30.0 * u, 40.0 * u);
@@ -72,16 +72,20 @@ fn spiral(c: Point, r: f64, turns: f64, per_turn: usize) -> Vec<Point> {
 }
 
 fn nightingale_nest(m: &mut Maker) {
-    for i in 0..4 {
-        m.throw(&format!("Throw colour {} (battal)", i + 1), i, 55 - 8 * i, 10.0, 22.0);
-    }
+    m.rows_ground();
     let u = m.u;
+    m.gel_git(32.0 * u, 70.0 * u);
     let paths = m
         .grid(5, 3, true)
         .into_iter()
-        .map(|c| spiral(c, 46.0 * u, 3.0, 24))
+        .map(|c| spiral(c, 54.0 * u, 4.0, 24))
         .collect();
-    m.styli("Wind a nest from each centre outwards", paths, 4.0 * u, None);
+    m.styli(
+        "Wind a nest from each centre outwards",
+        paths,
+        5.0 * u,
+        None,
+    );
 }
 
 fn tulip(m: &mut Maker) {
@@ -112,9 +116,19 @@ fn tulip(m: &mut Maker) {
     m.styli("Pull the petals down from above", petals, 6.0 * u, None);
     let base = centers
         .iter()
-        .map(|c| vec![Point::new(c.x, c.y + 85.0 * u), Point::new(c.x, c.y + 20.0 * u)])
+        .map(|c| {
+            vec![
+                Point::new(c.x, c.y + 85.0 * u),
+                Point::new(c.x, c.y + 20.0 * u),
+            ]
+        })
         .collect();
-    m.styli("Point the base with a stroke up from below", base, 6.0 * u, None);
+    m.styli(
+        "Point the base with a stroke up from below",
+        base,
+        6.0 * u,
+        None,
+    );
     // The stem: a row of small green drops pulled into a line.
     let mut stem = Vec::new();
     for c in &centers {
@@ -125,7 +139,12 @@ fn tulip(m: &mut Maker) {
     m.drops("Drop the stem", 3, stem, Radii::One(9.0 * u));
     let strokes = centers
         .iter()
-        .map(|c| vec![Point::new(c.x, c.y + 62.0 * u), Point::new(c.x, m.h + 20.0 * u)])
+        .map(|c| {
+            vec![
+                Point::new(c.x, c.y + 62.0 * u),
+                Point::new(c.x, m.h + 20.0 * u),
+            ]
+        })
         .collect();
     m.styli("Draw the stem down", strokes, 4.0 * u, None);
 }
@@ -138,12 +157,28 @@ fn hearts(m: &mut Maker) {
             .map(|k| Point::new(m.w * (k as f64 + 0.5) / 5.0, m.h * y))
             .collect();
         let (outer, inner) = if row == 0 { (0, 1) } else { (3, 1) };
-        m.drops("Drop a row of drops", outer, centers.clone(), Radii::One(40.0 * u));
-        m.drops("Drop a second colour into each", inner, centers.clone(), Radii::One(22.0 * u));
+        m.drops(
+            "Drop a row of drops",
+            outer,
+            centers.clone(),
+            Radii::One(40.0 * u),
+        );
+        m.drops(
+            "Drop a second colour into each",
+            inner,
+            centers.clone(),
+            Radii::One(22.0 * u),
+        );
         let (from, to) = if row == 0 {
-            (Point::new(-20.0, centers[0].y), Point::new(m.w + 20.0, centers[0].y))
+            (
+                Point::new(-20.0, centers[0].y),
+                Point::new(m.w + 20.0, centers[0].y),
+            )
         } else {
-            (Point::new(m.w + 20.0, centers[0].y), Point::new(-20.0, centers[0].y))
+            (
+                Point::new(m.w + 20.0, centers[0].y),
+                Point::new(-20.0, centers[0].y),
+            )
         };
         m.styli(
             "One straight line through every centre",

@@ -47,10 +47,9 @@ impl Maker {
                 num(fine)
             ));
         }
-        let seed = p
-            .id
-            .bytes()
-            .fold(params.seed, |s, b| s.rotate_left(5) ^ b as u64);
+        let seed =
+            p.id.bytes()
+                .fold(params.seed, |s, b| s.rotate_left(5) ^ b as u64);
         Ok(Self {
             w,
             h,
@@ -146,10 +145,62 @@ impl Maker {
         );
     }
 
+    /// The ground of the combed patterns: the inks laid in rows of drops from the top of
+    /// the tank to the bottom, one ink a row in turn, so the rake finds even bands.
+    pub fn rows_ground(&mut self) {
+        let n = self.ink_count().clamp(2, 5);
+        let step = 28.0 * self.u;
+        let rows = (self.h / step).ceil() as usize + 1;
+        let per_row = (self.w / (1.4 * step)).ceil() as usize + 1;
+        let mut centers = Vec::with_capacity(rows * per_row);
+        for r in 0..rows {
+            let shift = if r % 2 == 1 { 0.7 * step } else { 0.0 };
+            for c in 0..per_row {
+                centers.push(Point::new(c as f64 * 1.4 * step + shift, r as f64 * step));
+            }
+        }
+        // Colours cycle drop by drop: one ink repeated for a whole row, then the next.
+        let colors = (0..n)
+            .flat_map(|i| std::iter::repeat_n(self.ink(i), per_row))
+            .collect();
+        self.drops_in_rows(
+            &format!("Lay the inks in rows, top to bottom: {rows} rows of {per_row} drops"),
+            colors,
+            centers,
+            Radii::One(step),
+        );
+    }
+
+    /// Drops at `centers` in `colors` (cycled drop by drop), one step with `caption`.
+    pub fn drops_in_rows(
+        &mut self,
+        caption: &str,
+        colors: Vec<Rgb8>,
+        centers: Vec<Point>,
+        radii: Radii,
+    ) {
+        self.step(
+            caption,
+            vec![Op::Drops(DropSet {
+                centers: centers.into(),
+                radii,
+                colors: colors.into(),
+            })],
+        );
+    }
+
     /// A rake across the whole tank moving along `dir` (its length does not matter):
     /// tines `spacing` apart, the first through `offset` along the tine normal; shift
     /// `alpha`, decay `lambda` — all in design pixels.
-    pub fn rake(&mut self, what: &str, dir: Vec2, spacing: f64, offset: f64, alpha: f64, lambda: f64) {
+    pub fn rake(
+        &mut self,
+        what: &str,
+        dir: Vec2,
+        spacing: f64,
+        offset: f64,
+        alpha: f64,
+        lambda: f64,
+    ) {
         let d = dir.normalize();
         let normal = Vec2::new(-d.y, d.x);
         let caption = format!(
@@ -174,7 +225,7 @@ impl Maker {
     /// Gel-git ("come and go"): a rake drawn down the tank, then back up between the
     /// first pass's lines.
     pub fn gel_git(&mut self, spacing: f64, alpha: f64) {
-        let lambda = spacing / 4.0;
+        let lambda = spacing / 5.0;
         self.rake(
             "Gel-git, first pass",
             Vec2::new(0.0, 1.0),
@@ -327,7 +378,11 @@ impl Maker {
         let (dx, dy) = (self.w / cols as f64, self.h / rows as f64);
         let mut out = Vec::with_capacity(cols * rows);
         for r in 0..rows {
-            let shift = if staggered && r % 2 == 1 { dx / 2.0 } else { 0.0 };
+            let shift = if staggered && r % 2 == 1 {
+                dx / 2.0
+            } else {
+                0.0
+            };
             for c in 0..cols {
                 out.push(Point::new(
                     ((c as f64 + 0.5) * dx + shift).rem_euclid(self.w),

@@ -2,7 +2,7 @@
 //! hair-vein, Turkish spot, French shell, Stormont, Spanish wave, West End.
 
 use super::{Maker, Pattern, rgb};
-use crate::{Point, Radii};
+use crate::{Op, Point, Radii, Tine};
 
 pub(super) const PATTERNS: [Pattern; 7] = [
     Pattern {
@@ -18,11 +18,11 @@ pub(super) const PATTERNS: [Pattern; 7] = [
     Pattern {
         id: "hair-vein",
         name: "Italian hair-vein",
-        history: "An 18th-century Italian stone marble whose black vein colour is drawn into \
-                  fine parallel hairs by a fine rake worked back and forth.",
+        history: "An 18th-century Italian stone marble whose veins are drawn out with a pin \
+                  into bundles of hair-fine lines.",
         background: rgb(0xefe6d2),
         colors: &[rgb(0x222222), rgb(0x9b2d20), rgb(0x2f4f7f), rgb(0xd8b13a)],
-        spacing: 7.0,
+        spacing: 14.0,
         make: hair_vein,
     },
     Pattern {
@@ -71,7 +71,13 @@ pub(super) const PATTERNS: [Pattern; 7] = [
         history: "Made like the Spanish marble but laid without shading: veins, a dark \
                   colour dotted all over with white, and a lighter top colour.",
         background: rgb(0xf4efe4),
-        colors: &[rgb(0x1b1b1b), rgb(0x8a3324), rgb(0x24406b), rgb(0xf5f5f0), rgb(0x7b9cc7)],
+        colors: &[
+            rgb(0x1b1b1b),
+            rgb(0x8a3324),
+            rgb(0x24406b),
+            rgb(0xf5f5f0),
+            rgb(0x7b9cc7),
+        ],
         spacing: 10.0,
         make: west_end,
     },
@@ -97,16 +103,29 @@ fn stone(m: &mut Maker) {
 }
 
 fn hair_vein(m: &mut Maker) {
-    stone_ground(m, 60);
-    let s = m.fine;
-    for (k, dir) in [(0.0, 1.0), (0.5, -1.0), (0.25, 1.0), (0.75, -1.0)] {
-        let what = if dir > 0.0 {
-            "Hair-vein rake down"
-        } else {
-            "Hair-vein rake back up"
-        };
-        m.rake(what, crate::Vec2::new(0.0, dir), s, k * s, 1.4 * s, 0.3 * s);
-    }
+    stone_ground(m, 90);
+    // Hairs: a single pin drawn through the veins many times, nearly parallel, each
+    // stroke dragging a hair-thin trail of every colour it crosses.
+    let (u, s) = (m.u, m.fine);
+    let n = (m.w / s).ceil() as usize;
+    let ops = (0..n)
+        .map(|k| {
+            let a = std::f64::consts::FRAC_PI_2 + m.random(-0.25, 0.25);
+            Op::Tine(Tine {
+                origin: Point::new((k as f64 + m.random(0.0, 1.0)) * s, m.h / 2.0),
+                direction: crate::Vec2::new(a.cos(), a.sin()) * if k % 2 == 0 { 1.0 } else { -1.0 },
+                alpha: 60.0 * u,
+                lambda: 0.8 * u,
+            })
+        })
+        .collect();
+    m.step(
+        format!(
+            "Draw hairs: a single pin pulled {n} times up and down, about {} px apart",
+            crate::caption::num(s)
+        ),
+        ops,
+    );
 }
 
 /// Large separate spots of `ink` on a jittered grid.
@@ -124,15 +143,28 @@ fn spots(m: &mut Maker, what: &str, ink: usize, cols: usize, rows: usize, r: f64
 fn turkish_spot(m: &mut Maker) {
     for i in 0..3 {
         let what = ["Throw the vein colour", "Throw colour 2", "Throw colour 3"][i];
-        m.throw(what, i, 60 - 15 * i, 10.0 + 4.0 * i as f64, 22.0 + 6.0 * i as f64);
+        m.throw(
+            what,
+            i,
+            100 - 20 * i,
+            14.0 + 5.0 * i as f64,
+            28.0 + 8.0 * i as f64,
+        );
     }
-    spots(m, "Throw the spot colour in large separate drops", 3, 8, 5, 24.0);
+    spots(
+        m,
+        "Throw the spot colour in large separate drops",
+        3,
+        8,
+        5,
+        24.0,
+    );
 }
 
 fn french_shell(m: &mut Maker) {
-    m.throw("Throw the brown vein colour", 0, 60, 10.0, 20.0);
-    m.throw("Throw the orange vein colour", 1, 50, 12.0, 24.0);
-    m.throw("Throw the blue body colour", 2, 40, 18.0, 30.0);
+    m.throw("Throw the brown vein colour", 0, 90, 12.0, 22.0);
+    m.throw("Throw the orange vein colour", 1, 80, 16.0, 28.0);
+    m.throw("Throw the blue body colour", 2, 70, 22.0, 38.0);
     // An oiled drop: the colour, then its lighter ring pushed out around a new centre.
     let cell = m.w / 9.0;
     let mut centers = m.grid(9, 5, true);
@@ -157,7 +189,13 @@ fn french_shell(m: &mut Maker) {
 fn stormont(m: &mut Maker) {
     m.throw("Throw the black vein colour", 0, 60, 10.0, 18.0);
     m.throw("Throw the red", 1, 45, 14.0, 24.0);
-    m.throw("Throw the blue top colour, full, with turpentine", 2, 50, 20.0, 34.0);
+    m.throw(
+        "Throw the blue top colour, full, with turpentine",
+        2,
+        90,
+        24.0,
+        40.0,
+    );
     m.throw(
         "The turpentine opens the top colour into a lace of tiny holes",
         3,
@@ -180,16 +218,34 @@ fn spanish_wave(m: &mut Maker) {
 }
 
 fn turkish_spot_ground(m: &mut Maker) {
-    m.throw("Throw the vein colour", 0, 60, 10.0, 18.0);
-    m.throw("Throw colour 2", 1, 45, 14.0, 24.0);
-    m.throw("Throw colour 3", 2, 35, 18.0, 28.0);
+    m.throw("Throw the vein colour", 0, 100, 14.0, 24.0);
+    m.throw("Throw colour 2", 1, 80, 18.0, 30.0);
+    m.throw("Throw colour 3", 2, 60, 22.0, 36.0);
     spots(m, "Throw the spot colour in separate drops", 3, 8, 5, 20.0);
 }
 
 fn west_end(m: &mut Maker) {
     m.throw("Throw the first vein colour", 0, 50, 8.0, 16.0);
     m.throw("Throw the second vein colour", 1, 40, 10.0, 18.0);
-    m.throw("Sprinkle the dark colour on full to drive the veins up", 2, 60, 18.0, 30.0);
-    m.throw("Beat the white on finely and evenly all over", 3, 700, 1.5, 3.0);
-    m.throw("Sprinkle the light top colour lightly and evenly", 4, 70, 5.0, 10.0);
+    m.throw(
+        "Sprinkle the dark colour on full to drive the veins up",
+        2,
+        110,
+        22.0,
+        38.0,
+    );
+    m.throw(
+        "Beat the white on finely and evenly all over",
+        3,
+        700,
+        1.5,
+        3.0,
+    );
+    m.throw(
+        "Sprinkle the light top colour lightly and evenly",
+        4,
+        70,
+        5.0,
+        10.0,
+    );
 }
