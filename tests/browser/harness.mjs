@@ -104,13 +104,17 @@ export async function launch(backend, extra = []) {
 }
 
 /** A fresh page (empty storage) at `hash`, ready, with console errors collected. */
+/**
+ * Opens the app on a fresh page and waits for its first exact frame. A first visit lands
+ * on the gallery; `?landing=0` opens the first pattern instead, which the tests edit.
+ */
 export async function openPage(browser, site, hash = '', viewport = { width: 1300, height: 820 }) {
   const context = await browser.newContext({ viewport, deviceScaleFactor: 1, acceptDownloads: true });
   const page = await context.newPage();
   const errors = [];
   page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
   page.on('pageerror', (e) => errors.push(String(e)));
-  await page.goto(site.url + hash);
+  await page.goto(`${site.url}?landing=0${hash}`);
   await waitReady(page);
   return { page, context, errors };
 }

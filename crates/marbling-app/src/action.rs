@@ -37,8 +37,17 @@ pub enum Action {
     OpenRecent(usize),
     /// A plain paper colour (it replaces a noise background).
     SetPaperColor(Rgb8),
-    /// Starts Play from the first op (true) or stops it, showing the whole design.
+    /// Opens the step player playing from the first step (true) or closes it, showing
+    /// the whole design.
     Play(bool),
+    /// Moves the open player to `position` steps (see `Playback::at`), playing on or
+    /// paused.
+    Seek {
+        /// Steps done, with the fraction of the next.
+        position: f64,
+        /// Whether it goes on playing.
+        playing: bool,
+    },
     /// Switches between marbling and the noise playground.
     SetMode(Mode),
     /// A noise background and grain overlays; `what` names the change.
@@ -53,12 +62,22 @@ pub enum Action {
 impl MarblingApp {
     /// Carries out `action`: the only place where the design and its history change.
     pub(crate) fn apply(&mut self, action: Action) {
-        let pristine = std::mem::take(&mut self.editor.pristine);
+        // Only a change of the document ends the start-up design's pristine state.
+        let pristine = match action {
+            Action::SetMode(_) | Action::Play(_) | Action::Seek { .. } | Action::View(_) => {
+                self.editor.pristine
+            }
+            _ => std::mem::take(&mut self.editor.pristine),
+        };
         let shown_size = self.editor.shown.size();
         // An edit of the same document: the design before it, with the op it added,
         // stands in while the new design's exact frame is drawn.
         let stand_in = match &action {
-            Action::Load { .. } | Action::NewSheet | Action::OpenRecent(_) => None,
+            Action::Load { .. } | Action::NewSheet | Action::OpenRecent(_) => {
+                // A new document is edited at once: the gallery gives way.
+                self.editor.landing = false;
+                None
+            }
             Action::Commit(ops) => Some(crate::canvas_gpu::StandIn {
                 key: self.editor.key,
                 op: match ops.as_slice() {
@@ -84,8 +103,9 @@ impl MarblingApp {
                 from,
                 from_link,
             } => {
-                if pristine && from_link {
-                    // Nothing to keep: the link's design starts the history.
+                if pristine {
+                    // Nothing to keep (the start-up design nobody touched, maybe never
+                    // seen behind the gallery): this design starts the history.
                     self.editor.view = None;
                     self.editor.history = crate::History::new(design);
                 } else {
@@ -127,6 +147,14 @@ impl MarblingApp {
                 self.editor.playback = on.then(crate::playback::Playback::start);
                 self.refresh();
                 self.fit_if_resized(shown_size);
+                return;
+            }
+            Action::Seek { position, playing } => {
+                let steps = self.editor.history.design().gesture_sizes().len();
+                let mut p = crate::playback::Playback::at(position, steps);
+                p.playing = playing && p.step < steps;
+                self.editor.playback = Some(p);
+                self.refresh();
                 return;
             }
             Action::SetMode(mode) => {
@@ -279,7 +307,19 @@ mod tests {
         assert!(std::sync::Arc::ptr_eq(&a.editor.shown.design, &design));
         a.apply(Action::Play(true));
         assert!(a.editor.playback.is_some());
-        assert_eq!(a.editor.shown.op_count(), 1, "the first op is eased in");
+        assert_eq!(
+            a.editor.shown.op_count(),
+            0,
+            "nothing shown before the first step"
+        );
+        a.apply(Action::Seek {
+            position: 1.5,
+            playing: false,
+        });
+        // Half way into the second step (two sprays): the first spray of it done,
+        // the second starting.
+        assert_eq!(a.editor.shown.ops, 3);
+        assert_eq!(a.editor.shown.tail.len(), 1);
         assert!(std::sync::Arc::ptr_eq(&a.editor.shown.design, &design));
         a.apply(Action::Play(false));
         assert!(a.editor.playback.is_none());

@@ -63,10 +63,24 @@ impl MarblingApp {
         crate::style::apply(&cc.egui_ctx);
         let lost = LostFlag::default();
         let gpu_errors = GpuErrors::default();
+        let mut gallery_texture = None;
         let (gpu, backend) = match &cc.wgpu_render_state {
             Some(rs) => {
                 let gpu = CanvasGpu::new(&rs.device, rs.target_format);
-                rs.renderer.write().callback_resources.insert(gpu);
+                let gallery = crate::gallery_gpu::GalleryGpu::new(
+                    &rs.device,
+                    &rs.queue,
+                    crate::canvas_gpu::SURROUND,
+                );
+                let mut renderer = rs.renderer.write();
+                gallery_texture = Some(renderer.register_native_texture(
+                    &rs.device,
+                    gallery.view(),
+                    wgpu::FilterMode::Linear,
+                ));
+                renderer.callback_resources.insert(gallery);
+                renderer.callback_resources.insert(gpu);
+                drop(renderer);
                 lost.watch(&rs.device, &cc.egui_ctx);
                 gpu_errors.watch(&rs.device, &cc.egui_ctx);
                 platform::expose_device_loss(&rs.device);
@@ -74,9 +88,11 @@ impl MarblingApp {
             }
             None => (false, "none".to_owned()),
         };
-        let fallback =
-            Design::from_json(crate::gallery::EXAMPLES[0].json).unwrap_or_else(|_| blank(NEW_SIZE));
+        let fallback = crate::gallery::ENTRIES[0]
+            .design()
+            .unwrap_or_else(|_| blank(NEW_SIZE));
         let mut app = Self::with_design(fallback, backend, gpu);
+        app.panels.gallery_texture = gallery_texture;
         app.editor.pristine = true;
         app.renderer.lost = lost;
         app.renderer.gpu_errors = gpu_errors;
@@ -121,6 +137,10 @@ impl MarblingApp {
         }
         app.refresh();
         app.check_fragment();
+        // A first visit (no link, no autosave) lands on the gallery; `?landing=0`
+        // (automation) opens the first pattern instead.
+        app.editor.landing =
+            app.editor.pristine && platform::query("landing").as_deref() != Some("0");
         app
     }
 
@@ -195,7 +215,10 @@ impl MarblingApp {
             return;
         }
         self.editor.shown = match &self.editor.playback {
-            Some(p) => p.frame(self.editor.history.design_shared()),
+            Some(p) => {
+                let full = self.editor.history.design_shared();
+                p.frame(full, &full.step_bounds())
+            }
             None => self.editor.history.shown(),
         };
     }
@@ -406,16 +429,13 @@ impl MarblingApp {
     }
 
     fn advance_playback(&mut self, ctx: &egui::Context) {
-        let Some(mut p) = self.editor.playback else {
+        let Some(mut p) = self.editor.playback.filter(|p| p.playing) else {
             return;
         };
         let dt = f64::from(ctx.input(|i| i.stable_dt)).min(0.1);
-        let running = p.advance(
-            dt,
-            self.editor.play_speed,
-            self.editor.history.design().ops.len(),
-        );
-        self.editor.playback = running.then_some(p);
+        let steps = self.editor.history.design().gesture_sizes().len();
+        let running = p.advance(dt, self.editor.play_speed, steps);
+        self.editor.playback = Some(p);
         self.refresh();
         if running {
             ctx.request_repaint();
@@ -508,8 +528,9 @@ impl MarblingApp {
             });
             (
                 self.renderer.gpu
+                    && !self.editor.landing
                     && self.editor.active.is_none()
-                    && self.editor.playback.is_none()
+                    && self.editor.playback.is_none_or(|p| !p.playing)
                     && drawn == Some((self.editor.key, true)),
                 finished,
             )
@@ -622,6 +643,21 @@ impl MarblingApp {
             ("data-controls", Some(controls)),
             ("data-exporting", exporting),
             ("data-mode", Some(self.editor.mode.name().to_owned())),
+            ("data-landing", self.editor.landing.then(|| "1".to_owned())),
+            (
+                "data-player",
+                self.editor.playback.map(|p| {
+                    let steps = self.editor.history.design().gesture_sizes().len();
+                    format!("{}/{steps}", p.position())
+                }),
+            ),
+            (
+                "data-thumbnails",
+                self.panels.gallery.as_ref().map(|g| {
+                    let (drawn, total) = g.progress();
+                    format!("{drawn}/{total}")
+                }),
+            ),
             (
                 "data-recovered",
                 (recovery::recoveries() > 0).then(|| recovery::recoveries().to_string()),
@@ -695,9 +731,24 @@ impl eframe::App for MarblingApp {
             &[panel_start..panel_end, panel_end..shape_count()],
             clear_color,
         );
+        if self.editor.playback.is_some()
+            && self.editor.mode == Mode::Marbling
+            && !self.editor.landing
+        {
+            egui::Panel::bottom("marbling_player")
+                .frame(egui::Frame::side_top_panel(ui.style()))
+                .show_separator_line(false)
+                .show(ui, |ui| self.player_bar(ui));
+        }
         egui::CentralPanel::default()
             .frame(egui::Frame::central_panel(ui.style()).fill(egui::Color32::TRANSPARENT))
-            .show(ui, |ui| self.canvas(ui, frame));
+            .show(ui, |ui| {
+                if self.editor.landing && self.editor.mode == Mode::Marbling {
+                    self.landing(ui);
+                } else {
+                    self.canvas(ui, frame);
+                }
+            });
         if let Some(e) = self
             .renderer
             .status

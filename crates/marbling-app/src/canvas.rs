@@ -71,7 +71,23 @@ impl MarblingApp {
             placement.sheet_px[1],
             view.zoom * ppp,
         ]);
-        if self.editor.mode == crate::mode::Mode::Marbling {
+        if let Some(p) = self.editor.playback {
+            // The player draws the step's tool moving, and the explain view.
+            if let Some(g) = self.explain_geometry() {
+                crate::player_overlay::draw_explain(
+                    &painter.with_clip_rect(sheet),
+                    rect,
+                    &view,
+                    &g.grid,
+                    &g.arrows,
+                    &g.probe,
+                );
+            }
+            let design = self.editor.history.design();
+            if let Some((op, e)) = p.easing_op(design, &design.step_bounds()) {
+                crate::player_overlay::draw_tool(&painter, rect, &view, op, e, (w, h));
+            }
+        } else if self.editor.mode == crate::mode::Mode::Marbling {
             overlay::draw(&painter, rect, &view, self, design_pointer);
         }
         let overlay_end = crate::layer_shapes::count(ui.ctx(), painter.layer_id());
@@ -141,6 +157,20 @@ impl MarblingApp {
             |p: Pos2| view.to_design([f64::from(p.x - rect.min.x), f64::from(p.y - rect.min.y)]);
         if touches || space {
             self.editor.active = None;
+            return;
+        }
+        if self.editor.playback.is_some() && self.editor.explain.on {
+            // While explaining, a click on the sheet moves the area probe.
+            if pressed
+                && response.hovered()
+                && let Some(p) = pos
+            {
+                let (_, r) = self
+                    .editor
+                    .explain
+                    .probe_circle(self.editor.history.design());
+                self.editor.explain.probe = Some((to_design(p), r));
+            }
             return;
         }
         if pressed

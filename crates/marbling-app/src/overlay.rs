@@ -11,23 +11,23 @@ use marbling_core::{Point, Vec2};
 const LIGHT: Color32 = Color32::from_rgba_premultiplied(255, 255, 255, 220);
 const DARK: Color32 = Color32::from_rgba_premultiplied(0, 0, 0, 160);
 
-fn screen(rect: Rect, view: &ViewState, p: Point) -> Pos2 {
+pub(crate) fn screen(rect: Rect, view: &ViewState, p: Point) -> Pos2 {
     let s = view.to_screen(p);
     rect.min + egui::vec2(s[0] as f32, s[1] as f32)
 }
 
 /// A line visible on light and dark inks alike.
-fn line(painter: &Painter, a: Pos2, b: Pos2) {
+pub(crate) fn line(painter: &Painter, a: Pos2, b: Pos2) {
     painter.line_segment([a, b], Stroke::new(3.0, DARK));
     painter.line_segment([a, b], Stroke::new(1.2, LIGHT));
 }
 
-fn circle(painter: &Painter, c: Pos2, r: f32) {
+pub(crate) fn circle(painter: &Painter, c: Pos2, r: f32) {
     painter.circle_stroke(c, r, Stroke::new(3.0, DARK));
     painter.circle_stroke(c, r, Stroke::new(1.2, LIGHT));
 }
 
-fn polyline(painter: &Painter, pts: Vec<Pos2>) {
+pub(crate) fn polyline(painter: &Painter, pts: Vec<Pos2>) {
     painter.add(Shape::line(pts.clone(), Stroke::new(3.0, DARK)));
     painter.add(Shape::line(pts, Stroke::new(1.2, LIGHT)));
 }

@@ -6,7 +6,6 @@ use crate::action::Action;
 use crate::app::MarblingApp;
 use crate::drop_patterns::DropPattern;
 use crate::export::ExportSize;
-use crate::gallery::EXAMPLES;
 use crate::mode::Mode;
 use crate::platform;
 use crate::tools::ToolKind;
@@ -47,12 +46,18 @@ impl MarblingApp {
         self.history_section(ui);
         ui.separator();
         self.recent_section(ui);
-        ui.separator();
-        self.gallery_section(ui);
     }
 
     fn file_section(&mut self, ui: &mut egui::Ui) {
         ui.horizontal_wrapped(|ui| {
+            let gallery = ui
+                .button("Gallery")
+                .on_hover_text("The traditional patterns, and a blank sheet");
+            self.control("gallery", &gallery);
+            if gallery.clicked() {
+                self.editor.landing = true;
+                self.apply(Action::SetMode(Mode::Marbling));
+            }
             let new = ui
                 .button("New")
                 .on_hover_text("A blank sheet of the size below");
@@ -424,20 +429,17 @@ impl MarblingApp {
                 self.apply(Action::Redo);
             }
             let playing = self.editor.playback.is_some();
-            let play = ui.add_enabled(
-                !self.editor.history.design().ops.is_empty(),
-                egui::Button::new(if playing { "Stop" } else { "Play" }),
-            );
+            let play = ui
+                .add_enabled(
+                    !self.editor.history.design().ops.is_empty(),
+                    egui::Button::new(if playing { "Close player" } else { "Play" }),
+                )
+                .on_hover_text("Play the making step by step, with captions and the maths");
             self.control("play", &play);
             if play.clicked() {
                 self.apply(Action::Play(!playing));
             }
         });
-        ui.add(
-            Slider::new(&mut self.editor.play_speed, 0.5..=200.0)
-                .text("ops/s")
-                .logarithmic(true),
-        );
         let n = self.editor.history.steps().len();
         let shown = self.editor.history.shown_steps();
         let mut clicked = None;
@@ -601,72 +603,6 @@ impl MarblingApp {
                 }
             });
         self.control("recent", &header.header_response);
-    }
-
-    fn gallery_section(&mut self, ui: &mut egui::Ui) {
-        ui.label(RichText::new("Gallery").strong());
-        if self.panels.thumbnails.is_none() {
-            match crate::thumbnails::atlas(&EXAMPLES) {
-                Ok(atlas) => {
-                    let texture = ui.ctx().load_texture(
-                        "gallery thumbnails",
-                        atlas.image,
-                        egui::TextureOptions::LINEAR,
-                    );
-                    self.panels.thumbnails = Some((texture, atlas.uv));
-                }
-                Err(e) => {
-                    ui.label(e);
-                    return;
-                }
-            }
-        }
-        let Some((texture, uvs)) = &self.panels.thumbnails else {
-            return;
-        };
-        const THUMB: egui::Vec2 = egui::vec2(80.0, 50.0);
-        let mut open = None;
-        let mut drawn = Vec::new();
-        let items: Vec<_> = EXAMPLES.iter().zip(uvs).collect();
-        for row in items.chunks(3) {
-            // All the row's thumbnails first, then its names: one draw call each (a
-            // texture change starts a new draw, see src/thumbnails.rs).
-            ui.horizontal(|ui| {
-                for (e, uv) in row {
-                    let image = egui::Image::new((texture.id(), THUMB))
-                        .uv(**uv)
-                        .fit_to_exact_size(THUMB)
-                        .sense(egui::Sense::click());
-                    let r = ui.add(image).on_hover_text(format!("Open {}", e.name));
-                    if r.hovered() {
-                        ui.painter().rect_stroke(
-                            r.rect.expand(1.0),
-                            2,
-                            ui.visuals().widgets.hovered.fg_stroke,
-                            egui::StrokeKind::Outside,
-                        );
-                    }
-                    drawn.push((format!("gallery-{}", e.name), r.clone()));
-                    if r.clicked() {
-                        open = Some(*e);
-                    }
-                }
-            });
-            ui.horizontal(|ui| {
-                for (e, _) in row {
-                    ui.allocate_ui(egui::vec2(THUMB.x, 16.0), |ui| {
-                        ui.set_width(THUMB.x);
-                        ui.label(e.name);
-                    });
-                }
-            });
-        }
-        for (name, response) in drawn {
-            self.control(name, &response);
-        }
-        if let Some(e) = open {
-            self.open_json(e.name, e.json.as_bytes());
-        }
     }
 
     pub(crate) fn status_bar(&mut self, ui: &mut egui::Ui) {

@@ -64,6 +64,15 @@ mod imp {
         }
     }
 
+    /// The value of `name` in the page's query string (`?landing=0` → `Some("0")`).
+    pub fn query(name: &str) -> Option<String> {
+        let search = window()?.location().search().ok()?;
+        search
+            .trim_start_matches('?')
+            .split('&')
+            .find_map(|kv| kv.strip_prefix(name)?.strip_prefix('=').map(str::to_owned))
+    }
+
     /// Removes a `#d=…` link from the address bar without reloading or adding a history
     /// entry (after an edit, so a reload shows the edited design, not the link's).
     pub fn clear_fragment() {
@@ -243,6 +252,11 @@ mod imp {
 
     /// Desktop windows have no address bar.
     pub fn set_fragment(_fragment: &str) {}
+
+    /// No query string outside the browser.
+    pub fn query(_name: &str) -> Option<String> {
+        None
+    }
 
     /// Desktop windows have no address bar.
     pub fn clear_fragment() {}

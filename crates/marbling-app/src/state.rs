@@ -43,11 +43,15 @@ pub struct Editor {
     pub next_seed: u64,
     /// Play in progress.
     pub playback: Option<Playback>,
-    /// Playback speed, ops per second.
+    /// Player speed, steps per second.
     pub play_speed: f64,
+    /// The player's explain view: formulas, deformation grid, arrows and area probe.
+    pub explain: crate::player::Explain,
     /// True while the design is the start-up example nobody has touched (a link then
     /// replaces it instead of stacking on it).
     pub pristine: bool,
+    /// The gallery is shown in place of the canvas (src/landing.rs).
+    pub landing: bool,
     /// The address bar's fragment last loaded.
     pub last_fragment: Option<String>,
     /// Marbling or the noise playground.
@@ -73,8 +77,10 @@ impl Editor {
             active: None,
             next_seed: 1,
             playback: None,
-            play_speed: 8.0,
+            play_speed: 0.8,
+            explain: crate::player::Explain::default(),
             pristine: false,
+            landing: false,
             last_fragment: None,
             mode: Mode::Marbling,
             noise: NoiseSettings::default(),
@@ -176,9 +182,10 @@ pub struct Panels {
     pub message: Option<Message>,
     /// Where an asynchronous file pick delivers.
     pub pick: PickSlot,
-    /// The gallery's thumbnail atlas and each example's rectangle in it (see
-    /// src/thumbnails.rs), made on first show.
-    pub thumbnails: Option<(egui::TextureHandle, Vec<egui::Rect>)>,
+    /// The gallery's designs and thumbnails (src/landing.rs), read on first show.
+    pub gallery: Option<crate::landing::GalleryView>,
+    /// The GPU thumbnail atlas (src/gallery_gpu.rs) as egui knows it.
+    pub gallery_texture: Option<egui::TextureId>,
     /// Thumbnails of recent designs, by share fragment (made on first show; `None`: too
     /// large to draw one quickly, or unreadable).
     pub recent_thumbnails: HashMap<String, Option<egui::TextureHandle>>,
@@ -195,7 +202,8 @@ impl Default for Panels {
         Self {
             message: None,
             pick: PickSlot::default(),
-            thumbnails: None,
+            gallery: None,
+            gallery_texture: None,
             recent_thumbnails: HashMap::new(),
             panel_cache: Default::default(),
             new_size: NEW_SIZE,

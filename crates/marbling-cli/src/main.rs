@@ -1,5 +1,6 @@
 //! `marbling`: validate, render, export and benchmark marbling design documents.
 
+mod animate;
 mod backend;
 mod bench;
 mod bench_gpu;
@@ -41,6 +42,8 @@ enum Command {
     Svg(svg::SvgArgs),
     /// Write a random design (the benchmarks' synthetic designs) as JSON.
     Random(random::RandomArgs),
+    /// Animate the making of a design step by step as an animated PNG or GIF.
+    Animate(animate::AnimateArgs),
     /// Write a traditional pattern's recipe (stone, chevron, nonpareil, …) as JSON.
     Pattern(pattern::PatternArgs),
     /// Measure vector export time, vertex count and SVG size on synthetic designs.
@@ -59,6 +62,7 @@ fn main() -> ExitCode {
         Command::BenchSvg(args) => bench_svg::run(&args),
         Command::Random(args) => random::run(&args),
         Command::Pattern(args) => pattern::run(&args),
+        Command::Animate(args) => animate::run(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -31,6 +31,10 @@ pub struct RenderArgs {
     /// (outlines traced forward, rasterised with tiny-skia at the same sample positions).
     #[arg(long, value_enum, default_value_t = Backend::Cpu)]
     backend: Backend,
+    /// Render the design only `K` steps into its making (a step is a gesture; a
+    /// fraction eases the next step in, as the app's step player shows it).
+    #[arg(long, value_name = "K")]
+    steps: Option<f64>,
     /// Tracing tolerance of --backend vector, output pixels.
     #[arg(long, default_value_t = 1.0, allow_negative_numbers = true)]
     tolerance: f64,
@@ -79,7 +83,14 @@ impl LazyProgress {
 
 /// Renders the design and writes the PNG.
 pub fn run(args: &RenderArgs) -> Result<()> {
-    let design = read_design(&args.design)?;
+    let mut design = read_design(&args.design)?;
+    if let Some(k) = args.steps {
+        let steps = design.gesture_sizes().len();
+        if !(k.is_finite() && (0.0..=steps as f64).contains(&k)) {
+            bail!("--steps must be 0 to {steps} (the design's steps), got {k}");
+        }
+        design = marbling_core::making::design_at(&design, k);
+    }
     let scale = match (args.scale, args.width) {
         (Some(s), _) => s,
         (None, Some(0)) => bail!("--width must be at least 1"),
