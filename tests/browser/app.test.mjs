@@ -8,9 +8,9 @@ import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import { PNG } from 'pngjs';
-import { BACKENDS, MARBLING, READY_MS, ROOT, SHOTS, attr, crop, decode, differing, launch, openPage, sheet, shootSheet, waitOps } from './harness.mjs';
+import { BACKENDS, MARBLING, READY_MS, SHOTS, attr, crop, decode, differing, example, launch, openPage, sheet, shootSheet, waitOps } from './harness.mjs';
 
-const STONE = JSON.parse(fs.readFileSync(path.join(ROOT, 'examples/designs/stone.json'), 'utf8'));
+const STONE = example('stone').design;
 
 /**
  * `n` ops on a 120×90 sheet that stay well conditioned, so f32 (GPU) and f64 (CLI)
@@ -92,7 +92,7 @@ for (const backend of Object.keys(BACKENDS)) {
     });
 
     test('a #d= link shows the same picture as `marbling render`', async () => {
-      const design = path.join(ROOT, 'examples/designs/gel-git.json');
+      const design = example('gel-git').file;
       const d = JSON.parse(fs.readFileSync(design, 'utf8'));
       const link = execFileSync(MARBLING, ['link', design, '--base', site.url]).toString().trim();
       const { page, context, errors } = await open(link.slice(link.indexOf('#')));

@@ -83,17 +83,42 @@ for (const backend of Object.keys(BACKENDS)) {
       await context.close();
     });
 
-    test('A gallery thumbnail opens its example', webgl2Only, async () => {
-      const { page, context, errors } = await openPage(browser, site);
-      const chevron = example('chevron');
+    test('A first visit lands on the gallery: GPU thumbnails, a pattern opens, a blank sheet', webgl2Only, async () => {
+      const context = await browser.newContext({ viewport: { width: 1300, height: 820 }, deviceScaleFactor: 1, acceptDownloads: true });
+      const page = await context.newPage();
+      const errors = [];
+      page.on('pageerror', (e) => errors.push(String(e)));
+      await page.goto(site.url);
+      await page.waitForFunction(() => document.body.dataset.landing === '1', null, { timeout: READY_MS });
+      // Thumbnails are drawn one a frame by the GPU renderer into one atlas.
+      await page.waitForFunction(() => Number((document.body.dataset.thumbnails ?? '0/1').split('/')[0]) >= 2, null, { timeout: READY_MS });
+      assert.match(await attr(page, 'data-thumbnails'), /^\d+\/27$/);
+      assert.equal(await attr(page, 'data-ready'), null, 'no canvas behind the gallery');
       const all = await controls(page);
-      // The thumbnails are drawn from one atlas texture (src/thumbnails.rs), in gallery order.
-      assert.ok(all['gallery-stone'] && all['gallery-chevron'], `no gallery controls in ${Object.keys(all).join(', ')}`);
-      assert.ok(all['gallery-chevron'].x > all['gallery-stone'].x, 'chevron is not right of stone');
+      for (const id of ['gallery-blank', 'gallery-stone', 'gallery-chevron', 'gallery-hearts', 'gallery-close']) assert.ok(all[id], `no ${id}`);
+      // The stone card shows the stone pattern: the GPU thumbnail against the CPU render.
+      const c = all['gallery-stone'];
+      const shot = decode(await page.screenshot({ clip: { x: c.x, y: c.y, width: c.w, height: c.h }, timeout: READY_MS }));
+      const cpu = tmp(`stone-thumb-${backend}.png`);
+      execFileSync(MARBLING, ['render', STONE.file, '-o', cpu, '--width', String(c.w), '--aa', 'rgss']);
+      const frac = differing(crop(decode(fs.readFileSync(cpu)), c.w, c.h), crop(shot, c.w, c.h), 64);
+      console.log(`${backend}: gallery thumbnail vs CLI render: ${(100 * frac).toFixed(2)} % of ${c.w}×${c.h} px differ by > 64/255`);
+      assert.ok(frac <= 0.03, `${(100 * frac).toFixed(2)} % of the thumbnail differs from the pattern`);
+      fs.mkdirSync(SHOTS, { recursive: true });
+      await page.screenshot({ path: path.join(SHOTS, 'gallery.png'), timeout: READY_MS });
+
+      const chevron = example('chevron');
       await clickControl(page, 'gallery-chevron');
       await waitOps(page, chevron.design.ops.length);
+      assert.equal(await attr(page, 'data-landing'), null);
       const saved = await download(page, 'save-json');
-      assert.deepEqual(JSON.parse(saved.bytes.toString('utf8')), chevron.design);
+      assert.deepEqual(JSON.parse(saved.bytes.toString('utf8')), chevron.design, 'the pattern opens as its recipe');
+      await clickControl(page, 'gallery');
+      await page.waitForFunction(() => document.body.dataset.landing === '1', null, { timeout: READY_MS });
+      await clickControl(page, 'gallery-blank');
+      await waitOps(page, 0);
+      await page.keyboard.press('Control+z');
+      await waitOps(page, chevron.design.ops.length);
       assert.deepEqual(errors, []);
       await context.close();
     });
@@ -128,23 +153,48 @@ for (const backend of Object.keys(BACKENDS)) {
       await context.close();
     });
 
-    test('Play animates the history and ends on the same picture', webgl2Only, async () => {
-      // The first 24 ops of the stone design: a short history keeps the test quick.
-      const short = { ...STONE.design, ops: STONE.design.ops.slice(0, 24) };
-      const file = tmp(`short-${backend}.json`);
-      fs.writeFileSync(file, JSON.stringify(short));
+    test('The step player: captions, scrubbing to step k shows k steps, the end is the design, explain', webgl2Only, async () => {
+      // Chevron at 320×200 in a small window keeps SwiftShader's exact frames cheap.
+      const file = tmp(`chevron-small-${backend}.json`);
+      execFileSync(MARBLING, ['pattern', 'chevron', '--size', '320x200', '-o', file]);
+      const d = JSON.parse(fs.readFileSync(file, 'utf8'));
+      const steps = d.recipe.captions.length;
       const link = execFileSync(MARBLING, ['link', file, '--base', site.url]).toString().trim();
-      const { page, context, errors } = await openPage(browser, site, link.slice(link.indexOf('#')));
-      const n = short.ops.length;
-      assert.equal(await attr(page, 'data-ops'), String(n));
-      const start = await shootSheet(page, short.width, short.height);
+      const { page, context, errors } = await openPage(browser, site, link.slice(link.indexOf('#')), { width: 900, height: 600 });
       await clickControl(page, 'play');
-      await page.waitForFunction((k) => Number(document.body.dataset.ops) < k, n, { timeout: READY_MS });
-      const during = Number(await attr(page, 'data-ops'));
-      assert.ok(during < n, `playback did not start from the beginning (${during} ops shown)`);
-      await waitOps(page, n);
-      const end = await shootSheet(page, short.width, short.height);
-      assert.ok(differing(start.img, end.img, 2) < 0.001, 'the played design differs from the design');
+      await page.waitForFunction(() => /^0\.\d+\//.test(document.body.dataset.player ?? ''), null, { timeout: READY_MS });
+      await clickControl(page, 'player-play');
+      await waitReady(page);
+      const positionIs = (v) => page.waitForFunction((want) => document.body.dataset.player === want && document.body.dataset.ready === '1', v, { timeout: READY_MS });
+      const sheetVsCli = async (k, name) => {
+        const shot = await shootSheet(page, d.width, d.height);
+        const out = tmp(`${name}-${backend}.png`);
+        execFileSync(MARBLING, ['render', file, '-o', out, '--scale', String(shot.scale), '--aa', 'rgss', '--steps', String(k)]);
+        const cpu = decode(fs.readFileSync(out));
+        const w = Math.min(cpu.width, shot.img.width);
+        const h = Math.min(cpu.height, shot.img.height);
+        const frac = differing(crop(cpu, w, h), crop(shot.img, w, h), 24);
+        console.log(`${backend}: player at ${k} of ${steps} steps vs \`render --steps ${k}\`: ${(100 * frac).toFixed(3)} % differ by > 24/255`);
+        assert.ok(frac <= 0.01, `${(100 * frac).toFixed(2)} % of pixels differ at step ${k}`);
+      };
+      // Scrub: a click on the timeline's tick 2 shows the first two steps.
+      const tl = (await controls(page))['player-timeline'];
+      await page.mouse.click(tl.x + (tl.w * 2) / steps, tl.y + tl.h / 2);
+      await positionIs(`2/${steps}`);
+      await sheetVsCli(2, 'step2');
+      // Step forward to the end: the player's last frame is the design.
+      for (let k = 3; k <= steps; k++) {
+        await clickControl(page, 'player-forward');
+        await positionIs(`${k}/${steps}`);
+      }
+      await sheetVsCli(steps, 'end');
+      // Explain: the last step's formula with its numbers, the grid and the probe.
+      await clickControl(page, 'player-explain');
+      await page.waitForTimeout(500);
+      await page.screenshot({ path: path.join(SHOTS, 'player-explain.png'), timeout: READY_MS });
+      await clickControl(page, 'player-close');
+      await page.waitForFunction(() => document.body.dataset.player === undefined, null, { timeout: READY_MS });
+      await waitOps(page, d.ops.length);
       assert.deepEqual(errors, []);
       await context.close();
     });

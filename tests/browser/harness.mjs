@@ -146,9 +146,10 @@ export async function download(page, name) {
   return { name: dl.suggestedFilename(), bytes: fs.readFileSync(file) };
 }
 
-/** The example design `name` from examples/designs. */
+/** The pattern `name` from examples/patterns, else the example design from examples/designs. */
 export function example(name) {
-  const file = path.join(ROOT, 'examples/designs', `${name}.json`);
+  const pattern = path.join(ROOT, 'examples/patterns', `${name}.json`);
+  const file = fs.existsSync(pattern) ? pattern : path.join(ROOT, 'examples/designs', `${name}.json`);
   return { file, design: JSON.parse(fs.readFileSync(file, 'utf8')) };
 }
 

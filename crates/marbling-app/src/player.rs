@@ -83,7 +83,7 @@ impl MarblingApp {
             if fwd.clicked() {
                 seek = Some(((p.step + 1).min(steps) as f64, false));
             }
-            let width = (ui.available_width() - 340.0).max(120.0);
+            let width = (ui.available_width() - 8.0).max(60.0);
             let (rect, r) = ui.allocate_exact_size(vec2(width, 22.0), Sense::click_and_drag());
             self.control("player-timeline", &r);
             let x_of = |pos: f64| rect.left() + (pos / steps.max(1) as f64) as f32 * rect.width();
@@ -115,6 +115,8 @@ impl MarblingApp {
                 };
                 seek = Some((snapped, false));
             }
+        });
+        ui.horizontal(|ui| {
             let speed = ui.add(
                 Slider::new(&mut self.editor.play_speed, 0.1..=4.0)
                     .logarithmic(true)
