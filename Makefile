@@ -70,9 +70,13 @@ test: fmt-check clippy wasm-check unit browser-test
 $(MARBLING): $(shell find crates -name '*.rs' -o -name Cargo.toml -o -name '*.wgsl') Cargo.toml
 	$(CARGO) build --release -p marbling-cli
 
-## Renders every example design to docs/gallery/NAME.png.
+## Renders every traditional pattern to docs/gallery/patterns/NAME.png (the README's
+## gallery) and every example design to docs/gallery/NAME.png.
 gallery: $(MARBLING)
-	@mkdir -p docs/gallery
+	@mkdir -p docs/gallery/patterns
+	@for f in examples/patterns/*.json; do \
+	  n=$$(basename $$f .json); $(MARBLING) render $$f -o docs/gallery/patterns/$$n.png --width 240 || exit 1; \
+	done
 	@for f in examples/designs/*.json; do \
 	  n=$$(basename $$f .json); $(MARBLING) render $$f -o docs/gallery/$$n.png --width 320 || exit 1; \
 	done
