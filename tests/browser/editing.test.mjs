@@ -182,16 +182,24 @@ for (const backend of Object.keys(BACKENDS)) {
       await page.mouse.click(tl.x + (tl.w * 2) / steps, tl.y + tl.h / 2);
       await positionIs(`2/${steps}`);
       await sheetVsCli(2, 'step2');
-      // Step forward to the end: the player's last frame is the design.
-      for (let k = 3; k <= steps; k++) {
-        await clickControl(page, 'player-forward');
-        await positionIs(`${k}/${steps}`);
-      }
+      // Step forward once, then the last tick: the player's last frame is the design.
+      await clickControl(page, 'player-forward');
+      await positionIs(`3/${steps}`);
+      await page.mouse.click(tl.x + tl.w, tl.y + tl.h / 2);
+      await positionIs(`${steps}/${steps}`);
       await sheetVsCli(steps, 'end');
       // Explain: the last step's formula with its numbers, the grid and the probe.
       await clickControl(page, 'player-explain');
       await page.waitForTimeout(500);
       await page.screenshot({ path: path.join(SHOTS, 'player-explain.png'), timeout: READY_MS });
+      // Record films the making from the first step (MediaRecorder on the canvas);
+      // stopping it downloads the WebM.
+      await clickControl(page, 'player-record');
+      await page.waitForFunction(() => /^0\.\d+\//.test(document.body.dataset.player ?? ''), null, { timeout: READY_MS });
+      await page.waitForTimeout(1500);
+      const video = await download(page, 'player-record');
+      assert.match(video.name, /^marbling-\d+ops-320x200\.webm$/);
+      assert.ok(video.bytes.length > 1000 && video.bytes.readUInt32BE(0) === 0x1a45dfa3, `not a WebM (${video.bytes.length} bytes)`);
       await clickControl(page, 'player-close');
       await page.waitForFunction(() => document.body.dataset.player === undefined, null, { timeout: READY_MS });
       await waitOps(page, d.ops.length);

@@ -697,6 +697,7 @@ impl eframe::App for MarblingApp {
         self.check_fragment();
         self.handle_shortcuts(&ctx);
         self.advance_playback(&ctx);
+        self.follow_recording();
         self.advance_export(frame, &ctx);
         self.follow_noise();
         self.hooks.controls.clear();

@@ -32,6 +32,7 @@ pub mod player_overlay;
 pub mod prefs;
 pub mod preview_quality;
 pub mod recent;
+pub mod recorder;
 pub mod recovery;
 mod refine;
 pub mod shown;

@@ -148,8 +148,14 @@ mod imp {
         props.set_type(mime);
         let blob = web_sys::Blob::new_with_u8_array_sequence_and_options(&parts, &props)
             .map_err(|_| fail("blob"))?;
+        download_blob(name, &blob)
+    }
+
+    /// Offers `blob` as a download named `name`.
+    pub fn download_blob(name: &str, blob: &web_sys::Blob) -> Result<(), String> {
+        let fail = |what: &str| format!("cannot download {name}: {what}");
         let url =
-            web_sys::Url::create_object_url_with_blob(&blob).map_err(|_| fail("object URL"))?;
+            web_sys::Url::create_object_url_with_blob(blob).map_err(|_| fail("object URL"))?;
         let document = window()
             .and_then(|w| w.document())
             .ok_or_else(|| fail("no document"))?;

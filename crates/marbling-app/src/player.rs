@@ -128,6 +128,32 @@ impl MarblingApp {
             if explain.clicked() {
                 self.editor.explain.on = !self.editor.explain.on;
             }
+            let recording = self.panels.recorder.is_some();
+            let record = ui
+                .selectable_label(
+                    recording,
+                    if recording {
+                        "Stop recording"
+                    } else {
+                        "Record"
+                    },
+                )
+                .on_hover_text("Film the making from the first step to a WebM video");
+            self.control("player-record", &record);
+            if record.clicked() {
+                if recording {
+                    self.finish_recording();
+                } else {
+                    match crate::recorder::Recorder::start(30.0) {
+                        Ok(r) => {
+                            self.panels.recorder = Some(r);
+                            seek = Some((0.0, true));
+                            self.info("recording the making: the video downloads at the end");
+                        }
+                        Err(e) => self.error(e),
+                    }
+                }
+            }
             let close = ui.button("Close").on_hover_text("Close the player");
             self.control("player-close", &close);
             if close.clicked() {
@@ -153,6 +179,25 @@ impl MarblingApp {
         }
         if let Some((position, playing)) = seek {
             self.apply(Action::Seek { position, playing });
+        }
+    }
+
+    /// Ends a recording (its video downloads) once the player stops at the end or is
+    /// closed, or when asked.
+    pub(crate) fn finish_recording(&mut self) {
+        if let Some(r) = self.panels.recorder.take() {
+            let design = self.editor.history.design();
+            let name =
+                crate::export::export_file_name(design, (design.width, design.height), "webm");
+            r.finish(&name);
+            self.info(format!("recorded {name}"));
+        }
+    }
+
+    /// Called every frame: a recording ends with the player.
+    pub(crate) fn follow_recording(&mut self) {
+        if self.panels.recorder.is_some() && self.editor.playback.is_none_or(|p| !p.playing) {
+            self.finish_recording();
         }
     }
 

@@ -195,6 +195,8 @@ pub struct Panels {
     pub new_size: [u32; 2],
     /// The size Export PNG renders at.
     pub export_size: ExportSize,
+    /// The player being filmed (src/recorder.rs).
+    pub recorder: Option<crate::recorder::Recorder>,
 }
 
 impl Default for Panels {
@@ -208,6 +210,7 @@ impl Default for Panels {
             panel_cache: Default::default(),
             new_size: NEW_SIZE,
             export_size: ExportSize::Screen,
+            recorder: None,
         }
     }
 }
