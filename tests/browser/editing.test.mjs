@@ -185,7 +185,7 @@ for (const backend of Object.keys(BACKENDS)) {
       // Step forward once, then the last tick: the player's last frame is the design.
       await clickControl(page, 'player-forward');
       await positionIs(`3/${steps}`);
-      await page.mouse.click(tl.x + tl.w, tl.y + tl.h / 2);
+      await page.mouse.click(tl.x + tl.w - 1, tl.y + tl.h / 2);
       await positionIs(`${steps}/${steps}`);
       await sheetVsCli(steps, 'end');
       // Explain: the last step's formula with its numbers, the grid and the probe.
