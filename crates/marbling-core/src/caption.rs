@@ -52,6 +52,19 @@ fn range(lo: f64, hi: f64) -> String {
     }
 }
 
+/// A drop set's radius, or its range ("12" or "12–30").
+pub fn radii_text(radii: &Radii) -> String {
+    match radii {
+        Radii::One(r) => num(*r),
+        Radii::Each(list) => {
+            let (lo, hi) = list.iter().fold((f64::INFINITY, 0.0f64), |(lo, hi), r| {
+                (lo.min(*r), hi.max(*r))
+            });
+            range(lo, hi)
+        }
+    }
+}
+
 /// The caption of one op.
 pub fn describe_op(op: &Op) -> String {
     match op {
@@ -73,12 +86,6 @@ pub fn describe_op(op: &Op) -> String {
             } else {
                 ("spray", "sprays")
             };
-            let (lo, hi) = match &s.radii {
-                Radii::One(r) => (*r, *r),
-                Radii::Each(list) => list.iter().fold((f64::INFINITY, 0.0f64), |(lo, hi), r| {
-                    (lo.min(*r), hi.max(*r))
-                }),
-            };
             let colors = if s.colors.len() == 1 {
                 format!("of {}", s.colors[0])
             } else {
@@ -87,7 +94,7 @@ pub fn describe_op(op: &Op) -> String {
             format!(
                 "{} {colors}, radius {} px",
                 plural(s.centers.len(), what.0, what.1),
-                range(lo, hi)
+                radii_text(&s.radii)
             )
         }
         Op::Tine(t) => format!(

@@ -377,3 +377,19 @@ fn every_drop_of_a_pattern_counts_toward_the_op_cap() {
         "ops: at most 100000 ops are allowed (each drop of a pattern counts), got 100001"
     );
 }
+
+/// Drop and spray patterns compile to plain discs, so the GPU draws a design of them
+/// with the v1 walk (its extra cases cost a v1 walk 3.5× on lavapipe); every other v3
+/// type needs the v3 walk.
+#[test]
+fn only_v3_kinds_need_the_v3_walk() {
+    use marbling_core::synth::{Mix, random_design};
+    let d = random_design(9, 200, 150, 300, Mix::AllTypes);
+    for op in &d.ops {
+        let v3_kind = marbling_core::CompiledOp::of(op)
+            .iter()
+            .any(|c| c.kind().code() >= marbling_core::OpKind::Rigid.code());
+        assert_eq!(op.walks_v3(), v3_kind, "{}", op.type_name());
+    }
+    assert!(d.ops.iter().any(|o| matches!(o, Op::Drops(_))) && d.ops.iter().any(Op::walks_v3));
+}

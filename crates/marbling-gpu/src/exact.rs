@@ -44,7 +44,7 @@ pub struct PreparedDesign {
     surface_params: SurfaceParams,
     /// Whether the design needs the surface variant of the pipeline.
     textured: bool,
-    /// Whether it holds schema v3 ops (the variant that walks them).
+    /// Whether it holds ops only the v3 walk knows ([`Op::walks_v3`]).
     v3: bool,
     uniform: wgpu::Buffer,
     bind_group: wgpu::BindGroup,
@@ -265,7 +265,7 @@ impl ExactRenderer {
             prepared.surface_params = surface_params;
         }
         prepared.textured = surface_params.flags != 0;
-        prepared.v3 = prepared.uploaded.iter().any(Op::is_v3);
+        prepared.v3 = prepared.uploaded.iter().any(Op::walks_v3);
         self.variant_pipeline(device, prepared.variant());
         prepared.background = design.background;
         (prepared.width, prepared.height) = (design.width, design.height);

@@ -121,6 +121,12 @@ impl Op {
         OP_TYPES_V3.contains(&self.type_name())
     }
 
+    /// Whether the GPU walk needs the v3 code for this op: every v3 type but the drop
+    /// and spray patterns, which compile to plain discs (see [`crate::CompiledOp::push`]).
+    pub fn walks_v3(&self) -> bool {
+        self.is_v3() && !matches!(self, Op::Drops(_) | Op::Sprays(_))
+    }
+
     /// How many ops this one counts as toward [`crate::MAX_OPS`]: every drop of a
     /// drop pattern counts, every other op counts once.
     pub fn counted_ops(&self) -> usize {

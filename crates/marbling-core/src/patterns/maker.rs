@@ -3,7 +3,7 @@
 //! 640 × 400 reference tank and scaled to the requested size.
 
 use super::{Params, Pattern, REFERENCE_HEIGHT, REFERENCE_WIDTH};
-use crate::caption::{heading, num};
+use crate::caption::{heading, num, radii_text};
 use crate::synth::SplitMix64;
 use crate::{
     Circular, Design, DropSet, Jiggle, MAX_SIDE, Op, Point, Radii, Rake, Recipe, Rgb8, Stylus,
@@ -116,33 +116,17 @@ impl Maker {
         self.drops_of(what, vec![self.ink(i)], centers, radii);
     }
 
-    /// Drops at `centers` in `colors` (cycled), one step.
+    /// Drops at `centers` in `colors` (cycled), one step captioned "`what`: n drops
+    /// of #… and #…, radius r px".
     pub fn drops_of(&mut self, what: &str, colors: Vec<Rgb8>, centers: Vec<Point>, radii: Radii) {
-        let (lo, hi) = match &radii {
-            Radii::One(r) => (*r, *r),
-            Radii::Each(rs) => rs
-                .iter()
-                .fold((f64::INFINITY, 0.0f64), |(a, b), r| (a.min(*r), b.max(*r))),
-        };
-        let size = if num(lo) == num(hi) {
-            num(lo)
-        } else {
-            format!("{}–{}", num(lo), num(hi))
-        };
         let inks: Vec<String> = colors.iter().map(Rgb8::to_string).collect();
         let caption = format!(
-            "{what}: {} drops of {}, radius {size} px",
+            "{what}: {} drops of {}, radius {} px",
             centers.len(),
-            inks.join(" and ")
+            inks.join(" and "),
+            radii_text(&radii)
         );
-        self.step(
-            caption,
-            vec![Op::Drops(DropSet {
-                centers: centers.into(),
-                radii,
-                colors: colors.into(),
-            })],
-        );
+        self.drop_set(&caption, colors, centers, radii);
     }
 
     /// The ground of the combed patterns: the inks laid in rows of drops from the top of
@@ -163,7 +147,7 @@ impl Maker {
         let colors = (0..n)
             .flat_map(|i| std::iter::repeat_n(self.ink(i), per_row))
             .collect();
-        self.drops_in_rows(
+        self.drop_set(
             &format!("Lay the inks in rows, top to bottom: {rows} rows of {per_row} drops"),
             colors,
             centers,
@@ -172,7 +156,7 @@ impl Maker {
     }
 
     /// Drops at `centers` in `colors` (cycled drop by drop), one step with `caption`.
-    pub fn drops_in_rows(
+    pub fn drop_set(
         &mut self,
         caption: &str,
         colors: Vec<Rgb8>,
