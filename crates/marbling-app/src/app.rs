@@ -709,16 +709,22 @@ impl eframe::App for MarblingApp {
         let layer = ui.layer_id();
         let shape_count = || crate::layer_shapes::count(&ctx, layer);
         let panel_start = shape_count();
-        egui::Panel::left("marbling_tools")
-            .frame(egui::Frame::side_top_panel(ui.style()))
-            .resizable(true)
-            // The dark canvas marks the edge; a line would be one more draw call a frame.
-            .show_separator_line(false)
-            .default_size(300.0)
-            .size_range(240.0..=360.0)
-            .show(ui, |ui| {
-                egui::ScrollArea::vertical().show(ui, |ui| self.side_panel(ui, frame));
-            });
+        // On a narrow screen the gallery takes the whole width (its cards open designs;
+        // "Back to the editor" brings the panel back).
+        let narrow = ui.max_rect().width() < 720.0;
+        if !(self.editor.landing && narrow) {
+            egui::Panel::left("marbling_tools")
+                .frame(egui::Frame::side_top_panel(ui.style()))
+                .resizable(true)
+                // The dark canvas marks the edge; a line would be one more draw call a
+                // frame.
+                .show_separator_line(false)
+                .default_size(300.0)
+                .size_range(240.0..=360.0)
+                .show(ui, |ui| {
+                    egui::ScrollArea::vertical().show(ui, |ui| self.side_panel(ui, frame));
+                });
+        }
         let panel_end = shape_count();
         egui::Panel::bottom("marbling_status")
             .frame(egui::Frame::side_top_panel(ui.style()))

@@ -47,6 +47,9 @@ impl GalleryView {
     }
 }
 
+/// Text on the dark surround.
+const LIGHT: Color32 = Color32::from_gray(225);
+
 /// A card's thumbnail size, points (16:10).
 const CARD: egui::Vec2 = vec2(176.0, 110.0);
 
@@ -73,19 +76,24 @@ impl MarblingApp {
         let mut blank = false;
         let mut close = false;
         let mut drawn_controls = Vec::new();
-        // Light text on the dark surround.
-        ui.visuals_mut().override_text_color = Some(Color32::from_gray(225));
         egui::ScrollArea::vertical().show(ui, |ui| {
             ui.add_space(8.0);
             ui.horizontal(|ui| {
-                ui.heading("Start from a traditional pattern");
+                ui.label(
+                    RichText::new("Start from a traditional pattern")
+                        .heading()
+                        .color(LIGHT),
+                );
                 let back = ui.button("Back to the editor");
                 drawn_controls.push(("gallery-close".to_owned(), back.clone()));
                 close = back.clicked();
             });
             ui.label(
-                "Each pattern is a recipe made step by step the way a marbler makes it; it \
-                 opens as an editable design, and Play walks through its making.",
+                RichText::new(
+                    "Each pattern is a recipe made step by step the way a marbler makes it; \
+                     it opens as an editable design, and Play walks through its making.",
+                )
+                .color(LIGHT),
             );
             ui.add_space(8.0);
             let gap = ui.spacing().item_spacing.x;
@@ -114,7 +122,7 @@ impl MarblingApp {
                                         egui::FontId::proportional(40.0),
                                         Color32::from_gray(120),
                                     );
-                                    ui.label(RichText::new("Blank sheet").strong());
+                                    ui.label(RichText::new("Blank sheet").strong().color(LIGHT));
                                     drawn_controls.push(("gallery-blank".to_owned(), r.clone()));
                                     blank |= r.clicked();
                                     r
@@ -129,7 +137,7 @@ impl MarblingApp {
                                         None => ui.allocate_exact_size(CARD, Sense::click()).1,
                                     };
                                     let (entry, name) = &names[*n];
-                                    ui.label(name);
+                                    ui.label(RichText::new(name).color(LIGHT));
                                     drawn_controls.push((
                                         format!("gallery-{}", ENTRIES[*entry].id),
                                         r.clone(),
