@@ -266,8 +266,21 @@ impl MarblingApp {
         Some(ops)
     }
 
-    /// Grid, arrows and probe for the current moment of the player.
-    pub(crate) fn explain_geometry(&self) -> Option<ExplainGeometry> {
+    /// Grid, arrows and probe for the current moment of the player, computed once per
+    /// shown design and explain setting (the bar's readout and the canvas share it).
+    pub(crate) fn explain_geometry(&mut self) -> Option<std::sync::Arc<ExplainGeometry>> {
+        let key = (self.editor.key, self.editor.explain.clone());
+        if let Some((k, g)) = &self.panels.explain_cache
+            && *k == key
+        {
+            return Some(g.clone());
+        }
+        let g = std::sync::Arc::new(self.compute_explain_geometry()?);
+        self.panels.explain_cache = Some((key, g.clone()));
+        Some(g)
+    }
+
+    fn compute_explain_geometry(&self) -> Option<ExplainGeometry> {
         if !self.editor.explain.on {
             return None;
         }

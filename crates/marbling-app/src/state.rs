@@ -197,6 +197,12 @@ pub struct Panels {
     pub export_size: ExportSize,
     /// The player being filmed (src/recorder.rs).
     pub recorder: Option<crate::recorder::Recorder>,
+    /// The explain view's geometry and what it was computed for (shown design's key,
+    /// settings).
+    pub explain_cache: Option<(
+        (u64, crate::player::Explain),
+        Arc<crate::player::ExplainGeometry>,
+    )>,
 }
 
 impl Default for Panels {
@@ -211,6 +217,7 @@ impl Default for Panels {
             new_size: NEW_SIZE,
             export_size: ExportSize::Screen,
             recorder: None,
+            explain_cache: None,
         }
     }
 }
