@@ -6,8 +6,8 @@ use super::{Params, Pattern, REFERENCE_HEIGHT, REFERENCE_WIDTH};
 use crate::caption::{heading, num, radii_text};
 use crate::synth::SplitMix64;
 use crate::{
-    Circular, Design, DropSet, Jiggle, MAX_SIDE, Op, Point, Radii, Rake, Recipe, Rgb8, Stylus,
-    Vec2, Vortex, Wavy,
+    Design, DropSet, Jiggle, MAX_SIDE, Op, Point, Radii, Rake, Recipe, Rgb8, Stylus, Vec2, Vortex,
+    Wavy,
 };
 use std::sync::Arc;
 
@@ -269,29 +269,6 @@ impl Maker {
                 Op::Vortex(Vortex {
                     center: *c,
                     alpha: if k % 2 == 0 { alpha } else { -alpha },
-                    lambda,
-                })
-            })
-            .collect();
-        self.step(caption, ops);
-    }
-
-    /// Circular combs around `centers`: ink `alpha` px along the circle of `radius`.
-    pub fn circles(&mut self, what: &str, centers: &[Point], radius: f64, alpha: f64, lambda: f64) {
-        let caption = format!(
-            "{what}: {} circular strokes of radius {} px, {} px along, decay {} px",
-            centers.len(),
-            num(radius),
-            num(alpha),
-            num(lambda)
-        );
-        let ops = centers
-            .iter()
-            .map(|c| {
-                Op::Circular(Circular {
-                    center: *c,
-                    radius,
-                    alpha,
                     lambda,
                 })
             })
