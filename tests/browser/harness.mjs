@@ -29,7 +29,8 @@ export const BACKENDS = {
 /** Serves `dir` on 127.0.0.1 (a free port); resolves to its base URL. */
 export function serve(dir) {
   const types = { '.html': 'text/html', '.js': 'text/javascript', '.wasm': 'application/wasm',
-    '.png': 'image/png', '.json': 'application/json', '.css': 'text/css' };
+    '.png': 'image/png', '.json': 'application/json', '.css': 'text/css', '.svg': 'image/svg+xml',
+    '.webmanifest': 'application/manifest+json' };
   const server = http.createServer((req, res) => {
     const url = new URL(req.url, 'http://x');
     const file = path.join(dir, url.pathname === '/' ? 'index.html' : decodeURIComponent(url.pathname));
@@ -89,9 +90,13 @@ export async function shootSheet(page, w, h) {
   await page.mouse.move(2, 2);
   await page.waitForTimeout(300);
   const s = await sheet(page);
-  const clip = { x: Math.round(s.x), y: Math.round(s.y), width: Math.floor(w * s.scale), height: Math.floor(h * s.scale) };
+  // The shot has the screen's device pixels, `dpr` per CSS pixel; the sheet starts on a
+  // device pixel (half a CSS pixel at a ratio of 2).
+  const dpr = await page.evaluate(() => devicePixelRatio);
+  const device = (v, round) => round(v * dpr) / dpr;
+  const clip = { x: device(s.x, Math.round), y: device(s.y, Math.round), width: device(w * s.scale, Math.floor), height: device(h * s.scale, Math.floor) };
   // A screenshot waits for the GPU to finish the frame: slow on SwiftShader under load.
-  return { img: decode(await page.screenshot({ clip, timeout: READY_MS })), ...s };
+  return { img: decode(await page.screenshot({ clip, timeout: READY_MS })), dpr, ...s };
 }
 
 
@@ -103,13 +108,15 @@ export async function launch(backend, extra = []) {
   return { site, browser };
 }
 
-/** A fresh page (empty storage) at `hash`, ready, with console errors collected. */
 /**
  * Opens the app on a fresh page and waits for its first exact frame. A first visit lands
  * on the gallery; `?landing=0` opens the first pattern instead, which the tests edit.
+ * `device` overrides the context's options (deviceScaleFactor, hasTouch, isMobile).
  */
-export async function openPage(browser, site, hash = '', viewport = { width: 1300, height: 820 }) {
-  const context = await browser.newContext({ viewport, deviceScaleFactor: 1, acceptDownloads: true });
+export async function openPage(browser, site, hash = '', viewport = { width: 1300, height: 820 }, device = {}) {
+  // The offline service worker (web/sw.js) would copy every file of the app into each
+  // fresh context's cache: only the test of offline use lets it run.
+  const context = await browser.newContext({ viewport, deviceScaleFactor: 1, acceptDownloads: true, serviceWorkers: 'block', ...device });
   const page = await context.newPage();
   const errors = [];
   page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });

@@ -643,6 +643,7 @@ impl MarblingApp {
             ("data-controls", Some(controls)),
             ("data-exporting", exporting),
             ("data-mode", Some(self.editor.mode.name().to_owned())),
+            ("data-layout", Some(self.panels.layout.name().to_owned())),
             ("data-landing", self.editor.landing.then(|| "1".to_owned())),
             (
                 "data-player",
@@ -692,6 +693,9 @@ impl eframe::App for MarblingApp {
         }
         self.hooks.frame_times.push_back(dt);
         self.hooks.frames += 1;
+        if crate::device_pixels::fit_backing_store() {
+            ctx.request_repaint();
+        }
         self.check_device_lost();
         self.poll_picked_file();
         self.check_fragment();
@@ -709,10 +713,26 @@ impl eframe::App for MarblingApp {
         let layer = ui.layer_id();
         let shape_count = || crate::layer_shapes::count(&ctx, layer);
         let panel_start = shape_count();
-        // On a narrow screen the gallery takes the whole width (its cards open designs;
-        // "Back to the editor" brings the panel back).
+        // Phones and tablets get their own arrangement (src/layout.rs); the gallery
+        // takes the whole of a narrow screen (its cards open designs; "Back to the
+        // editor" brings the controls back).
+        let layout = crate::layout::Layout::for_screen(ui.max_rect().size());
+        self.panels.layout = layout;
         let narrow = ui.max_rect().width() < 720.0;
-        if !(self.editor.landing && narrow) {
+        let gallery_only = self.editor.landing && (narrow || layout.touch());
+        let side_panel = match layout {
+            _ if gallery_only => false,
+            crate::layout::Layout::Desktop => true,
+            crate::layout::Layout::Portrait => {
+                self.bottom_sheet(ui, frame);
+                false
+            }
+            crate::layout::Layout::Landscape => {
+                self.tool_rail(ui);
+                self.panels.rail_panel_open
+            }
+        };
+        if side_panel {
             egui::Panel::left("marbling_tools")
                 .frame(egui::Frame::side_top_panel(ui.style()))
                 .resizable(true)
@@ -722,6 +742,9 @@ impl eframe::App for MarblingApp {
                 .default_size(300.0)
                 .size_range(240.0..=360.0)
                 .show(ui, |ui| {
+                    if layout.touch() {
+                        crate::layout::touch_spacing(ui);
+                    }
                     egui::ScrollArea::vertical().show(ui, |ui| self.side_panel(ui, frame));
                 });
         }

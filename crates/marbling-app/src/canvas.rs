@@ -19,10 +19,18 @@ impl MarblingApp {
         let painter = ui.painter_at(rect);
         let size = [f64::from(rect.width()), f64::from(rect.height())];
         let ppp = f64::from(ui.ctx().pixels_per_point());
-        let view = *self
-            .editor
-            .view
-            .get_or_insert_with(|| ViewState::fit(&self.editor.shown.design, size).snapped(ppp));
+        let canvas_key = [size[0], size[1], ppp];
+        let refit = match (self.editor.view, self.editor.fit) {
+            (None, _) => true,
+            (Some(v), Some((fitted, key))) => v == fitted && key != canvas_key,
+            (Some(_), None) => false,
+        };
+        if refit {
+            let v = ViewState::fit(&self.editor.shown.design, size).snapped(ppp);
+            self.editor.view = Some(v);
+            self.editor.fit = Some((v, canvas_key));
+        }
+        let view = self.editor.view.unwrap_or_default();
         let pointer = response.hover_pos();
         let local = |p: Pos2| [f64::from(p.x - rect.min.x), f64::from(p.y - rect.min.y)];
 
@@ -64,12 +72,12 @@ impl MarblingApp {
             egui::StrokeKind::Outside,
         );
         let design_pointer = pointer.map(|p| view.to_design(local(p)));
-        // For automation: the sheet's top-left in CSS/physical pixels of the page, and
-        // physical pixels per design pixel.
+        // For automation: the sheet's top-left on the page and the CSS pixels per design
+        // pixel (egui points are CSS pixels; the hooks use no other unit).
         self.hooks.sheet_on_page = Some([
-            placement.sheet_px[0],
-            placement.sheet_px[1],
-            view.zoom * ppp,
+            placement.sheet_px[0] / ppp,
+            placement.sheet_px[1] / ppp,
+            view.zoom,
         ]);
         if let Some(p) = self.editor.playback {
             // The player draws the step's tool moving, and the explain view.
@@ -104,7 +112,7 @@ impl MarblingApp {
     /// zoom level samples exactly the points of a CPU render at that scale (whole-pixel
     /// pans keep it snapped).
     fn navigate(&mut self, ui: &egui::Ui, response: &egui::Response, rect: Rect, ppp: f64) {
-        let Some(view) = &mut self.editor.view else {
+        let Some(view) = self.editor.view.as_mut() else {
             return;
         };
         let before = *view;
@@ -116,10 +124,16 @@ impl MarblingApp {
             view.pan([f64::from(d.x), f64::from(d.y)]);
         }
         if let Some(touch) = ui.input(|i| i.multi_touch()) {
+            // Two fingers: the design point under their midpoint follows the midpoint
+            // (pan), and the pinch zooms about it.
             let d = touch.translation_delta;
             view.pan([f64::from(d.x), f64::from(d.y)]);
-        }
-        if let Some(p) = response.hover_pos() {
+            let c = touch.center_pos - rect.min;
+            view.zoom_about(
+                f64::from(touch.zoom_delta),
+                [f64::from(c.x), f64::from(c.y)],
+            );
+        } else if let Some(p) = response.hover_pos() {
             let (scroll, zoom) = ui.input(|i| (wheel_points(i), i.zoom_delta()));
             let factor = f64::from(zoom) * (scroll * 0.002).exp();
             if (factor - 1.0).abs() > 1e-6 {
@@ -129,7 +143,9 @@ impl MarblingApp {
                 );
             }
         }
-        if view.zoom != before.zoom {
+        let pinching = ui.input(|i| i.multi_touch().is_some());
+        let pinch_ended = std::mem::replace(&mut self.editor.pinching, pinching) && !pinching;
+        if (view.zoom != before.zoom && !pinching) || pinch_ended {
             *view = view.snapped(ppp);
         }
     }

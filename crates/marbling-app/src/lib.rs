@@ -6,8 +6,10 @@
 mod action;
 mod app;
 pub mod autosave;
+mod bottom_sheet;
 mod canvas;
 pub mod canvas_gpu;
+pub mod device_pixels;
 pub mod drop_patterns;
 pub mod export;
 pub mod gallery;
@@ -17,6 +19,7 @@ pub mod history;
 mod labels;
 pub mod landing;
 mod layer_shapes;
+pub mod layout;
 pub mod mode;
 mod noise_panel;
 pub mod noise_settings;
@@ -42,6 +45,7 @@ pub mod style;
 #[cfg(test)]
 mod test_window;
 pub mod thumbnails;
+mod tool_rail;
 pub mod tools;
 pub mod view;
 

@@ -48,7 +48,7 @@ impl MarblingApp {
         self.recent_section(ui);
     }
 
-    fn file_section(&mut self, ui: &mut egui::Ui) {
+    pub(crate) fn file_section(&mut self, ui: &mut egui::Ui) {
         ui.horizontal_wrapped(|ui| {
             let gallery = ui
                 .button("Gallery")
@@ -124,7 +124,7 @@ impl MarblingApp {
         });
     }
 
-    fn export_section(&mut self, ui: &mut egui::Ui, frame: &eframe::Frame) {
+    pub(crate) fn export_section(&mut self, ui: &mut egui::Ui, frame: &eframe::Frame) {
         ui.label(RichText::new("Export").strong());
         ui.horizontal_wrapped(|ui| {
             ui.label("PNG size");
@@ -169,7 +169,7 @@ impl MarblingApp {
         ui.label(RichText::new(size_text).weak());
     }
 
-    fn tool_section(&mut self, ui: &mut egui::Ui) {
+    pub(crate) fn tool_section(&mut self, ui: &mut egui::Ui) {
         ui.label(RichText::new("Tool").strong());
         ui.horizontal_wrapped(|ui| {
             for (i, t) in ToolKind::ALL.into_iter().enumerate() {
@@ -362,7 +362,7 @@ impl MarblingApp {
             });
     }
 
-    fn ink_section(&mut self, ui: &mut egui::Ui) {
+    pub(crate) fn ink_section(&mut self, ui: &mut egui::Ui) {
         ui.label(RichText::new("Ink").strong());
         let before = self.prefs.palette;
         egui::ComboBox::from_label("palette")
@@ -411,7 +411,7 @@ impl MarblingApp {
         });
     }
 
-    fn history_section(&mut self, ui: &mut egui::Ui) {
+    pub(crate) fn history_section(&mut self, ui: &mut egui::Ui) {
         ui.label(RichText::new("History").strong());
         ui.horizontal(|ui| {
             let undo = ui
@@ -497,7 +497,7 @@ impl MarblingApp {
         }
     }
 
-    fn recent_section(&mut self, ui: &mut egui::Ui) {
+    pub(crate) fn recent_section(&mut self, ui: &mut egui::Ui) {
         let count = self.session.recent.entries.len();
         let header = egui::CollapsingHeader::new(format!("Recent designs ({count})"))
             .id_salt("recent")

@@ -37,6 +37,13 @@ pub struct Editor {
     pub shown: Shown,
     /// `None` until the canvas size is known (then the design is fitted).
     pub view: Option<ViewState>,
+    /// The last view made to fit the canvas, and the canvas it fit (width and height in
+    /// points, physical pixels per point): while `view` is still that one, a resized
+    /// canvas or a changed pixel ratio fits it again.
+    pub fit: Option<(ViewState, [f64; 3])>,
+    /// Two fingers are on the canvas: the view follows them unsnapped (snapping every
+    /// frame would let the pinch's anchor drift), and is snapped when they lift.
+    pub pinching: bool,
     /// The tool being dragged.
     pub active: Option<ActiveGesture>,
     /// Seed of the next gesture's random choices.
@@ -74,6 +81,8 @@ impl Editor {
             key: 0,
             stand_in: None,
             view: None,
+            fit: None,
+            pinching: false,
             active: None,
             next_seed: 1,
             playback: None,
@@ -171,7 +180,7 @@ pub struct Hooks {
     pub frame_times: VecDeque<f64>,
     /// Frames drawn since start (for `data-frames`).
     pub frames: u64,
-    /// The sheet's top-left corner on the page (physical pixels) and the scale.
+    /// The sheet's top-left corner on the page and CSS pixels per design pixel.
     pub sheet_on_page: Option<[f64; 3]>,
 }
 
@@ -199,6 +208,13 @@ pub struct Panels {
     pub recorder: Option<crate::recorder::Recorder>,
     /// The explain view's geometry and what it was computed for (shown design's key,
     /// settings).
+    /// The portrait layout's bottom sheet: its tab, and whether it is open.
+    pub sheet_tab: crate::layout::SheetTab,
+    pub sheet_open: bool,
+    /// The landscape layout's full side panel beside the tool rail is open.
+    pub rail_panel_open: bool,
+    /// The layout of the last frame (for `data-layout`).
+    pub layout: crate::layout::Layout,
     pub explain_cache: Option<(
         (u64, crate::player::Explain),
         Arc<crate::player::ExplainGeometry>,
@@ -218,6 +234,10 @@ impl Default for Panels {
             export_size: ExportSize::Screen,
             recorder: None,
             explain_cache: None,
+            sheet_tab: crate::layout::SheetTab::Tools,
+            sheet_open: true,
+            rail_panel_open: false,
+            layout: crate::layout::Layout::Desktop,
         }
     }
 }

@@ -1,0 +1,271 @@
+// Hi-DPI screens, phones and tablets, and the installable offline app (one WebGL2
+// browser for all): the backing store follows devicePixelRatio and the sheet is the CLI's
+// render at the device's resolution; the portrait bottom sheet and landscape tool rail;
+// touch (tap, one-finger drag, pinch and pan about the fingers' midpoint, a second finger
+// cancelling a gesture); the service worker serving the app with the server stopped.
+// Touches are sent through the Chrome DevTools Protocol (real touch events).
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { execFileSync } from 'node:child_process';
+import fs from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
+import {
+  DIST, MARBLING, READY_MS, SHOTS, attr, controls, crop, decode, differing, example, launch,
+  linkFragment, openPage, serve, sheet, shootSheet, waitOps, waitReady,
+} from './harness.mjs';
+
+const PHONE = { width: 390, height: 844 };
+const TABLET = { width: 820, height: 1180 };
+const PHONE_LANDSCAPE = { width: 844, height: 390 };
+const touchDevice = (deviceScaleFactor) => ({ deviceScaleFactor, hasTouch: true, isMobile: true });
+
+/** Real touch events: `points` are the fingers down after this event ([x, y] CSS px). */
+async function touch(cdp, type, points) {
+  await cdp.send('Input.dispatchTouchEvent', {
+    type, touchPoints: points.map(([x, y], id) => ({ x, y, id, radiusX: 4, radiusY: 4, force: 1 })),
+  });
+}
+
+/** Moves the fingers from `from` to `to` in `steps` frames' worth of small moves. */
+async function slide(page, cdp, from, to, steps = 8) {
+  for (let k = 1; k <= steps; k++) {
+    const t = k / steps;
+    await touch(cdp, 'touchMove', from.map(([x, y], i) => [x + (to[i][0] - x) * t, y + (to[i][1] - y) * t]));
+    await page.waitForTimeout(40);
+  }
+}
+
+/** Waits for `k` more frames: a tap's effect is drawn in the frame after it. */
+async function frames(page, k = 3) {
+  const now = Number(await attr(page, 'data-frames'));
+  await page.waitForFunction((n) => Number(document.body.dataset.frames) >= n, now + k, { timeout: READY_MS });
+}
+
+/** The design point under page point `p` (CSS px), from `data-view`. */
+async function designAt(page, p) {
+  const s = await sheet(page);
+  return [(p[0] - s.x) / s.scale, (p[1] - s.y) / s.scale];
+}
+
+/** Waits until `data-view` differs from `before` and holds still for a few frames. */
+async function settledView(page, before) {
+  await page.waitForFunction((b) => document.body.dataset.view !== b, before, { timeout: READY_MS });
+  let last = '';
+  for (let i = 0; i < 20; i++) {
+    const now = await attr(page, 'data-view');
+    if (now === last) break;
+    last = now;
+    await page.waitForTimeout(150);
+  }
+}
+
+/** Compares the sheet on screen (device pixels) with the CLI's render at that scale. */
+async function sheetMatchesCli(page, file, design, label) {
+  const shot = await shootSheet(page, design.width, design.height);
+  const scale = shot.scale * shot.dpr;
+  const tmp = path.join(os.tmpdir(), `marbling-devices-${process.pid}-${label}.png`);
+  execFileSync(MARBLING, ['render', file, '-o', tmp, '--scale', String(scale), '--aa', 'rgss']);
+  const cpu = decode(fs.readFileSync(tmp));
+  const w = Math.min(cpu.width, shot.img.width);
+  const h = Math.min(cpu.height, shot.img.height);
+  // Within a device pixel of the sheet's whole size: the render is at the device's resolution.
+  assert.ok(Math.abs(cpu.width - shot.img.width) <= 2, `${label}: shot ${shot.img.width} px wide, render ${cpu.width}`);
+  const frac = differing(crop(cpu, w, h), crop(shot.img, w, h), 24);
+  if (process.env.KEEP_SHOTS) fs.writeFileSync(`/tmp/shot-${label.split(' ')[0]}.png`, (await import('pngjs')).PNG.sync.write(shot.img));
+  console.log(`${label}: sheet at ${shot.dpr}× vs CLI render at scale ${scale.toFixed(4)}: ${(100 * frac).toFixed(3)} % of ${w}×${h} px differ by > 24/255`);
+  assert.ok(frac <= 0.01, `${label}: ${(100 * frac).toFixed(2)} % of pixels differ`);
+}
+
+const { browser, site } = await launch('webgl2');
+test.after(async () => { await browser.close(); site.server.close(); });
+
+test('a ratio-2 laptop: device-pixel backing store, CSS-px hooks, the CLI render at 2×', { timeout: 600_000 }, async () => {
+  const { file, design } = example('v3-drops');
+  const { page, context, errors } = await openPage(browser, site, linkFragment(design, 'dpr2'), { width: 1440, height: 900 }, { deviceScaleFactor: 2 });
+  await waitOps(page, design.ops.length);
+  const store = await page.evaluate(() => {
+    const c = document.getElementById('marbling_canvas');
+    return [c.width, c.height, c.getBoundingClientRect().width, c.getBoundingClientRect().height];
+  });
+  assert.deepEqual(store, [2880, 1800, 1440, 900], 'backing store = CSS size × devicePixelRatio');
+  assert.equal(await attr(page, 'data-layout'), 'desktop');
+  // One egui point is one CSS pixel: the side panel keeps its 240–360 px and the hooks
+  // agree with each other (the canvas control holds the sheet).
+  const c = await controls(page);
+  assert.ok(c.canvas.x >= 240 && c.canvas.x <= 380, `canvas starts at ${c.canvas.x} CSS px`);
+  const s = await sheet(page);
+  assert.ok(s.x >= c.canvas.x && s.x + design.width * s.scale <= c.canvas.x + c.canvas.w + 1, `sheet at ${s.x} outside the canvas control`);
+  await sheetMatchesCli(page, file, design, 'laptop 1440×900 @2');
+  await page.screenshot({ path: path.join(SHOTS, 'hidpi-1440x900@2.png'), timeout: READY_MS });
+  assert.deepEqual(errors, []);
+  await context.close();
+});
+
+test('a phone: bottom sheet, 44-px targets, tap, drag, pinch, pan, a second finger cancels', { timeout: 600_000 }, async () => {
+  const { file, design } = example('v3-drops');
+  const n = design.ops.length;
+  const { page, context, errors } = await openPage(browser, site, linkFragment(design, 'phone'), PHONE, touchDevice(2));
+  await waitOps(page, n);
+  assert.equal(await attr(page, 'data-layout'), 'portrait');
+  const store = await page.evaluate(() => document.getElementById('marbling_canvas').width);
+  assert.equal(store, PHONE.width * 2);
+  let c = await controls(page);
+  const canvasShare = (c.canvas.w * c.canvas.h) / (PHONE.width * PHONE.height);
+  console.log(`phone: the canvas takes ${(100 * canvasShare).toFixed(1)} % of the viewport with the sheet open`);
+  assert.ok(canvasShare >= 0.55, `canvas ${(100 * canvasShare).toFixed(1)} % of the viewport`);
+  for (const name of ['sheet-tools', 'sheet-ink', 'sheet-history', 'sheet-files', 'sheet-noise', 'sheet-toggle', 'tool-drop', 'tool-rake']) {
+    assert.ok(c[name], `no ${name} in data-controls`);
+    assert.ok(c[name].h >= 44 && c[name].w >= 44, `${name} is ${c[name].w}×${c[name].h} CSS px`);
+  }
+  await sheetMatchesCli(page, file, design, 'phone 390×844 @2');
+  await page.screenshot({ path: path.join(SHOTS, 'phone-390x844.png'), timeout: READY_MS });
+
+  const cdp = await context.newCDPSession(page);
+  const tap = async (name) => {
+    const r = (await controls(page))[name];
+    assert.ok(r, `no control ${name}`);
+    await page.touchscreen.tap(r.x + r.w / 2, r.y + r.h / 2);
+    await frames(page);
+  };
+  const s = await sheet(page);
+  // A point of the sheet, as fractions of its width and height.
+  const at = (fx, fy) => [s.x + fx * design.width * s.scale, s.y + fy * design.height * s.scale];
+
+  // A tap drops one drop.
+  await tap('tool-drop');
+  const [tx, ty] = at(0.5, 0.5);
+  await touch(cdp, 'touchStart', [[tx, ty]]);
+  await page.waitForTimeout(60);
+  await touch(cdp, 'touchEnd', []);
+  await waitOps(page, n + 1);
+
+  // One finger drags a comb.
+  await tap('tool-rake');
+  const from = at(0.16, 0.25);
+  const to = at(0.84, 0.75);
+  await touch(cdp, 'touchStart', [from]);
+  await slide(page, cdp, [from], [to]);
+  await touch(cdp, 'touchEnd', []);
+  await waitOps(page, n + 2);
+
+  // A second finger arriving mid-drag cancels the comb: nothing committed, nothing lost.
+  await touch(cdp, 'touchStart', [from]);
+  await slide(page, cdp, [from], [at(0.47, 0.37)], 4);
+  await touch(cdp, 'touchStart', [at(0.47, 0.37), at(0.62, 0.75)]);
+  await slide(page, cdp, [at(0.47, 0.37), at(0.62, 0.75)], [at(0.5, 0.4), at(0.66, 0.77)], 3);
+  await touch(cdp, 'touchEnd', [at(0.5, 0.4)]);
+  await touch(cdp, 'touchEnd', []);
+  await page.waitForTimeout(800);
+  assert.equal(await attr(page, 'data-ops'), String(n + 2), 'the cancelled gesture committed ops');
+
+  // A pinch zooms about the fingers' midpoint: the design point under it stays.
+  const mid = at(0.5, 0.5);
+  const before = await attr(page, 'data-view');
+  const anchor = await designAt(page, mid);
+  const a0 = [[mid[0] - 40, mid[1]], [mid[0] + 40, mid[1]]];
+  const a1 = [[mid[0] - 110, mid[1]], [mid[0] + 110, mid[1]]];
+  await touch(cdp, 'touchStart', a0);
+  await slide(page, cdp, a0, a1, 10);
+  await touch(cdp, 'touchEnd', []);
+  await settledView(page, before);
+  const zoomed = await sheet(page);
+  const after = await designAt(page, mid);
+  const drift = Math.hypot(after[0] - anchor[0], after[1] - anchor[1]) * zoomed.scale;
+  console.log(`phone: pinch ×${(zoomed.scale / s.scale).toFixed(2)}, the midpoint's design point moved ${drift.toFixed(2)} CSS px`);
+  assert.ok(zoomed.scale / s.scale > 2, `the pinch zoomed only ×${(zoomed.scale / s.scale).toFixed(2)}`);
+  assert.ok(drift <= 1, `the design point under the midpoint moved ${drift.toFixed(2)} CSS px`);
+
+  // Two fingers moving together pan the view by their displacement.
+  const p0 = [[mid[0] - 60, mid[1]], [mid[0] + 60, mid[1]]];
+  const p1 = p0.map(([x, y]) => [x - 50, y - 70]);
+  const panBefore = await attr(page, 'data-view');
+  await touch(cdp, 'touchStart', p0);
+  await slide(page, cdp, p0, p1, 8);
+  await touch(cdp, 'touchEnd', []);
+  await settledView(page, panBefore);
+  const panned = await sheet(page);
+  console.log(`phone: two-finger pan moved the sheet by ${(panned.x - zoomed.x).toFixed(1)}, ${(panned.y - zoomed.y).toFixed(1)} CSS px`);
+  assert.ok(Math.abs(panned.x - zoomed.x + 50) <= 3 && Math.abs(panned.y - zoomed.y + 70) <= 3, 'the view did not follow the fingers');
+  assert.equal(await attr(page, 'data-ops'), String(n + 2), 'navigating committed ops');
+
+  // The sheet's tabs: History's Undo takes the comb back; the arrow collapses the sheet
+  // and the canvas grows; Noise opens the noise playground.
+  await tap('sheet-history');
+  await page.waitForFunction(() => (document.body.dataset.controls ?? '').includes('undo='), null, { timeout: READY_MS });
+  await tap('undo');
+  await waitOps(page, n + 1);
+  c = await controls(page);
+  const openHeight = c.canvas.h;
+  await tap('sheet-toggle');
+  await page.waitForFunction((h) => {
+    const m = /(?:^|;)canvas=[\d.]+,[\d.]+,[\d.]+,([\d.]+)/.exec(document.body.dataset.controls ?? '');
+    return m && Number(m[1]) > h + 100;
+  }, openHeight, { timeout: READY_MS });
+  await tap('sheet-noise');
+  await page.waitForFunction(() => document.body.dataset.mode === 'noise', null, { timeout: READY_MS });
+  await tap('sheet-tools');
+  await page.waitForFunction(() => document.body.dataset.mode === 'marbling', null, { timeout: READY_MS });
+  assert.deepEqual(errors, []);
+  await context.close();
+});
+
+test('a tablet and a landscape phone: bottom sheet and tool rail', { timeout: 600_000 }, async () => {
+  // A light design: each page's first exact frame is drawn by SwiftShader.
+  const light = linkFragment(example('v3-drops').design, 'light');
+  const tablet = await openPage(browser, site, light, TABLET, touchDevice(1));
+  assert.equal(await attr(tablet.page, 'data-layout'), 'portrait');
+  const c = await controls(tablet.page);
+  const share = (c.canvas.w * c.canvas.h) / (TABLET.width * TABLET.height);
+  console.log(`tablet: the canvas takes ${(100 * share).toFixed(1)} % of the viewport`);
+  assert.ok(share >= 0.55);
+  await tablet.page.screenshot({ path: path.join(SHOTS, 'tablet-820x1180.png'), timeout: READY_MS });
+  await tablet.context.close();
+
+  const phone = await openPage(browser, site, light, PHONE_LANDSCAPE, touchDevice(1));
+  const { page } = phone;
+  assert.equal(await attr(page, 'data-layout'), 'landscape');
+  let r = await controls(page);
+  assert.ok(r['rail-drop'] && r['rail-drop'].h >= 44, 'the rail has 44-px tool buttons');
+  assert.equal(r['mode-marbling'], undefined, 'the full panel is closed');
+  const ops = Number(await attr(page, 'data-ops'));
+  await page.touchscreen.tap(r['rail-drop'].x + 20, r['rail-drop'].y + 20);
+  await page.touchscreen.tap(r.canvas.x + r.canvas.w / 2, r.canvas.y + r.canvas.h / 2);
+  await waitOps(page, ops + 1);
+  r = await controls(page);
+  await page.touchscreen.tap(r['rail-panel'].x + 20, r['rail-panel'].y + 20);
+  await page.waitForFunction(() => (document.body.dataset.controls ?? '').includes('mode-marbling='), null, { timeout: READY_MS });
+  await page.screenshot({ path: path.join(SHOTS, 'phone-landscape-844x390.png'), timeout: READY_MS });
+  assert.deepEqual(phone.errors, []);
+  await phone.context.close();
+});
+
+test('installable and offline: manifest, icons, and the service worker serves the app with the server stopped', { timeout: 600_000 }, async () => {
+  const manifest = JSON.parse(await (await fetch(`${site.url}manifest.webmanifest`)).text());
+  const sizes = manifest.icons.map((i) => i.sizes);
+  assert.ok(sizes.includes('192x192') && sizes.includes('512x512') && sizes.includes('any'), `icons ${sizes}`);
+  assert.equal(manifest.display, 'standalone');
+  for (const icon of manifest.icons) assert.equal((await fetch(`${site.url}${icon.src}`)).status, 200, icon.src);
+
+
+  // A server of its own, stopped after the first visit.
+  const own = await serve(DIST);
+  const context = await browser.newContext({ viewport: { width: 800, height: 600 }, serviceWorkers: 'allow' });
+  const page = await context.newPage();
+  const errors = [];
+  page.on('pageerror', (e) => errors.push(String(e)));
+  await page.goto(`${own.url}?landing=0`);
+  await waitReady(page);
+  // Installed (every file cached) and in control of the page.
+  await page.waitForFunction(async () => (await navigator.serviceWorker.ready).active?.state === 'activated'
+    && navigator.serviceWorker.controller !== null, null, { timeout: READY_MS, polling: 200 });
+  own.server.close();
+  own.server.closeAllConnections();
+  assert.equal(await fetch(own.url).then(() => 'up', () => 'down'), 'down', 'the server still answers');
+  await page.reload();
+  await waitReady(page);
+  assert.equal(await attr(page, 'data-backend'), 'webgl2');
+  assert.ok(Number(await attr(page, 'data-ops')) > 0, 'the offline page shows no design');
+  assert.deepEqual(errors, []);
+  await context.close();
+});
