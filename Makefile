@@ -8,7 +8,7 @@ CARGO ?= cargo
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 MARBLING := target/release/marbling
 
-.PHONY: run test gallery setup-rust setup-gpu setup-web setup-browser fmt-check clippy unit wasm-check bench bench-gpu web browser-test noise-gallery bench-noise bench-svg
+.PHONY: run dist icons test gallery setup-rust setup-gpu setup-web setup-browser fmt-check clippy unit wasm-check bench bench-gpu web browser-test noise-gallery bench-noise bench-svg
 
 TRUNK_VERSION := 0.21.14
 # Must equal the wasm-bindgen version in Cargo.lock (see crates/marbling-app/Cargo.toml).
@@ -47,6 +47,18 @@ setup-browser:
 ## The web app in dist/ (release build, wasm-opt off: see index.html).
 web: setup-web
 	trunk build --release --offline
+
+## The static site in dist/ (relative paths: host the folder as it is, under any path).
+dist: web
+	@echo "dist/ is the static site: copy the folder to any web server"
+
+## The app's icons in web/, rendered from web/icon.json.
+icons: $(MARBLING)
+	$(MARBLING) render web/icon.json --width 512 -o web/icon-512.png
+	$(MARBLING) render web/icon.json --width 192 -o web/icon-192.png
+	$(MARBLING) render web/icon.json --width 180 -o web/apple-touch-icon.png
+	$(MARBLING) render web/icon.json --width 32 -o web/favicon-32.png
+	$(MARBLING) svg web/icon.json -o web/icon.svg
 
 ## End-to-end tests in headless Chromium on WebGPU and WebGL2 (SwiftShader).
 browser-test: web setup-browser

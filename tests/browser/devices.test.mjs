@@ -98,6 +98,7 @@ test('a ratio-2 laptop: device-pixel backing store, CSS-px hooks, the CLI render
   assert.ok(s.x >= c.canvas.x && s.x + design.width * s.scale <= c.canvas.x + c.canvas.w + 1, `sheet at ${s.x} outside the canvas control`);
   await sheetMatchesCli(page, file, design, 'laptop 1440×900 @2');
   await page.screenshot({ path: path.join(SHOTS, 'hidpi-1440x900@2.png'), timeout: READY_MS });
+
   assert.deepEqual(errors, []);
   await context.close();
 });
@@ -232,6 +233,17 @@ test('a tablet and a landscape phone: bottom sheet and tool rail', { timeout: 60
   await page.touchscreen.tap(r['rail-drop'].x + 20, r['rail-drop'].y + 20);
   await page.touchscreen.tap(r.canvas.x + r.canvas.w / 2, r.canvas.y + r.canvas.h / 2);
   await waitOps(page, ops + 1);
+
+  // The keyboard reaches the controls: Tab walks the rail to Undo, Enter presses it.
+  let tabs = 0;
+  while ((await attr(page, 'data-focus')) !== 'rail-undo') {
+    assert.ok(tabs++ < 40, `Tab never reached Undo (focus: ${await attr(page, 'data-focus')})`);
+    await page.keyboard.press('Tab');
+    await frames(page, 2);
+  }
+  console.log(`landscape phone: Undo takes the focus after ${tabs} Tab presses`);
+  await page.keyboard.press('Enter');
+  await waitOps(page, ops);
   r = await controls(page);
   await page.touchscreen.tap(r['rail-panel'].x + 20, r['rail-panel'].y + 20);
   await page.waitForFunction(() => (document.body.dataset.controls ?? '').includes('mode-marbling='), null, { timeout: READY_MS });
@@ -246,6 +258,9 @@ test('installable and offline: manifest, icons, and the service worker serves th
   assert.ok(sizes.includes('192x192') && sizes.includes('512x512') && sizes.includes('any'), `icons ${sizes}`);
   assert.equal(manifest.display, 'standalone');
   for (const icon of manifest.icons) assert.equal((await fetch(`${site.url}${icon.src}`)).status, 200, icon.src);
+  // `make dist` is hosted as it is under any path: no URL in the page starts at the root.
+  const html = fs.readFileSync(path.join(DIST, 'index.html'), 'utf8');
+  assert.deepEqual(html.match(/(?:href|src)="\/[^"]*"|(?:from |module_or_path: )'\/[^']*'/g), null);
 
 
   // A server of its own, stopped after the first visit.

@@ -394,6 +394,7 @@ impl MarblingApp {
 
     fn handle_shortcuts(&mut self, ctx: &egui::Context) {
         use egui::{Key, KeyboardShortcut, Modifiers};
+        crate::accessibility::handle_shortcut(ctx);
         let redo = KeyboardShortcut::new(Modifiers::COMMAND | Modifiers::SHIFT, Key::Z);
         let redo_y = KeyboardShortcut::new(Modifiers::COMMAND, Key::Y);
         let undo = KeyboardShortcut::new(Modifiers::COMMAND, Key::Z);
@@ -644,6 +645,14 @@ impl MarblingApp {
             ("data-exporting", exporting),
             ("data-mode", Some(self.editor.mode.name().to_owned())),
             ("data-layout", Some(self.panels.layout.name().to_owned())),
+            (
+                "data-focus",
+                crate::accessibility::focused_control(
+                    ctx,
+                    self.hooks.controls.iter().map(|(n, r)| (n.as_ref(), *r)),
+                )
+                .map(str::to_owned),
+            ),
             ("data-landing", self.editor.landing.then(|| "1".to_owned())),
             (
                 "data-player",

@@ -3,6 +3,7 @@
 //! history of operations with undo/redo, the tools that turn pointer gestures into
 //! operations, palettes, share links, autosave and the example gallery.
 
+pub mod accessibility;
 mod action;
 mod app;
 pub mod autosave;

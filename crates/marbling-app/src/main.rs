@@ -84,6 +84,9 @@ mod web {
         let new: web_sys::HtmlCanvasElement =
             document.create_element("canvas").ok()?.dyn_into().ok()?;
         new.set_id(CANVAS_ID);
+        if let Some(label) = old.get_attribute("aria-label") {
+            let _ = new.set_attribute("aria-label", &label);
+        }
         old.replace_with_with_node_1(&new).ok()?;
         Some(new)
     }
