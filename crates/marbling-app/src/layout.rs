@@ -134,10 +134,12 @@ mod tests {
     fn touch_spacing_makes_44_px_targets() {
         let ctx = egui::Context::default();
         let mut height = 0.0;
-        let _ = ctx.run_ui(Default::default(), |ui| {
+        ctx.run_ui(Default::default(), |ui| {
             touch_spacing(ui);
             height = ui.button("Undo").rect.height();
-        });
+        })
+        .textures_delta
+        .clear();
         assert!(height >= TOUCH_TARGET, "{height}");
     }
 }

@@ -123,10 +123,12 @@ impl MarblingApp {
             );
         });
         let mut aloud = crate::accessibility::reading_aloud(ui.ctx());
-        let read = ui.checkbox(&mut aloud, "Read controls aloud").on_hover_text(
-            "Alt+Shift+R: each control is spoken as it takes focus (Tab moves between \
+        let read = ui
+            .checkbox(&mut aloud, "Read controls aloud")
+            .on_hover_text(
+                "Alt+Shift+R: each control is spoken as it takes focus (Tab moves between \
              controls, Enter presses one)",
-        );
+            );
         self.control("read-aloud", &read);
         if read.changed() {
             crate::accessibility::set_reading_aloud(ui.ctx(), aloud);

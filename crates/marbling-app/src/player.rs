@@ -55,7 +55,11 @@ impl MarblingApp {
         let captions = design.step_captions();
         let mut seek = None;
         ui.add_space(2.0);
-        ui.horizontal(|ui| {
+        if self.panels.layout.touch() {
+            crate::layout::touch_spacing(ui);
+        }
+        // Wrapped: on a phone the bar's controls take two rows.
+        ui.horizontal_wrapped(|ui| {
             let back = ui.button("◀ Step").on_hover_text("Step back");
             self.control("player-back", &back);
             if back.clicked() {
