@@ -1,4 +1,4 @@
-// Shared by the diagnosis scripts (drag-rate, skip-draws, jit-profile, trace, gpu-calls,
+// Shared by the diagnosis scripts (diagnose/: drag-rate, skip-draws, jit-profile, trace, gpu-calls,
 // ab-drag; not run by npm test): the gallery design with its live-preview cache built,
 // the tine tool chosen, and the pointer wiggled over the sheet; WebGPU draws skipped by
 // pipeline label; and the perf test's gesture (`sweep`, used by perf.test.mjs too).

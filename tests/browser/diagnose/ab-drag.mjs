@@ -7,8 +7,8 @@ import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
-import { MARBLING, launch, openPage, serve, sheet } from './harness.mjs';
-import { sweep as wiggle } from './probe.mjs';
+import { MARBLING, launch, openPage, serve, sheet } from '../harness.mjs';
+import { sweep as wiggle } from '../probe.mjs';
 
 const [distA, distB, runs = '3', ...flags] = process.argv.slice(2);
 const design = path.join(os.tmpdir(), `marbling-ab-${process.pid}.json`);

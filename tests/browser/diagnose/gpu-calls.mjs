@@ -1,6 +1,6 @@
 // Diagnosis: the WebGPU calls the app makes per frame while hovering (or dragging).
-import { attr, launch } from './harness.mjs';
-import { tineOverSheet } from './probe.mjs';
+import { attr, launch } from '../harness.mjs';
+import { tineOverSheet } from '../probe.mjs';
 const [mode = 'hover', ...extra] = process.argv.slice(2);
 const { browser, site } = await launch('webgpu', extra);
 const context = await browser.newContext({ viewport: { width: 1024, height: 768 }, deviceScaleFactor: 1 });

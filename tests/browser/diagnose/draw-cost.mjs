@@ -5,7 +5,7 @@
 // Results: docs/BENCHMARKS.md, "eighth session".
 import fs from 'node:fs';
 import path from 'node:path';
-import { launch, serve } from './harness.mjs';
+import { launch, serve } from '../harness.mjs';
 
 /** CPU milliseconds used by the whole machine so far (user, nice, system, irq, softirq). */
 function cpuMs() {

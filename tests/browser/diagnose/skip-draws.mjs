@@ -2,8 +2,8 @@
 // when the draws of the render pipelines whose label matches SKIP (a regex) are skipped,
 // which bounds what each pipeline costs: node skip-draws.mjs SKIP [flags…]. SKIP is
 // matched against "LABEL COUNT" (COUNT: the draw's vertex or index count).
-import { launch } from './harness.mjs';
-import { skipDraws, tineOverSheet, wiggle } from './probe.mjs';
+import { launch } from '../harness.mjs';
+import { skipDraws, tineOverSheet, wiggle } from '../probe.mjs';
 const [skip = '^$', ...extra] = process.argv.slice(2);
 const { browser, site } = await launch('webgpu', extra);
 const context = await browser.newContext({ viewport: { width: 1024, height: 768 }, deviceScaleFactor: 1 });

@@ -6,7 +6,7 @@
 //
 // Prints one line: idle rAF/s (nothing drawn by the app), then while hovering for 6 s:
 // egui frames/s (data-frames), rAF/s and pointer moves/s. Results: docs/BENCHMARKS.md.
-import { attr, launch, openPage } from './harness.mjs';
+import { attr, launch, openPage } from '../harness.mjs';
 
 const [backend = 'webgl2', width = '1024', height = '768', ...extra] = process.argv.slice(2);
 const { browser, site } = await launch(backend, extra);

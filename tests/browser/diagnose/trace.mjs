@@ -2,8 +2,8 @@
 // prints the busiest threads and their top-level events per frame.
 // node trace.mjs [webgpu|webgl2] [hover|drag] OUT.json [flags…]
 import fs from 'node:fs';
-import { launch, openPage } from './harness.mjs';
-import { tineOverSheet, wiggle } from './probe.mjs';
+import { launch, openPage } from '../harness.mjs';
+import { tineOverSheet, wiggle } from '../probe.mjs';
 const [backend = 'webgpu', mode = 'drag', out = '/tmp/trace.json', ...extra] = process.argv.slice(2);
 const { browser, site } = await launch(backend, extra);
 const { page } = await openPage(browser, site, '', { width: 1024, height: 768 });

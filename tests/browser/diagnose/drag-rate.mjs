@@ -1,7 +1,7 @@
 // Diagnosis: egui frames/s while hovering and while dragging a tool (tine) over the
 // gallery design, on one backend: node drag-rate.mjs [webgpu|webgl2] [W] [H] [flags…]
-import { attr, launch, openPage } from './harness.mjs';
-import { tineOverSheet, wiggle } from './probe.mjs';
+import { attr, launch, openPage } from '../harness.mjs';
+import { tineOverSheet, wiggle } from '../probe.mjs';
 const [backend = 'webgl2', width = '1024', height = '768', ...extra] = process.argv.slice(2);
 const { browser, site } = await launch(backend, extra);
 const { page } = await openPage(browser, site, '', { width: Number(width), height: Number(height) });

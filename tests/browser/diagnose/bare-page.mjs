@@ -8,7 +8,7 @@
 //
 // Results: docs/BENCHMARKS.md, "Where the time went".
 import http from 'node:http';
-import { launch } from './harness.mjs';
+import { launch } from '../harness.mjs';
 
 const [passes = '1', shader = 'flat', width = '1024', height = '768', ...extra] = process.argv.slice(2);
 const PAGE = `<!doctype html><html><body style="margin:0;overflow:hidden">

@@ -1,8 +1,8 @@
 // Diagnosis: every WebGPU draw of one tine-drag frame over the gallery design, with its
 // pipeline label, index or vertex count, scissor and viewport (1024×768):
 // node draw-list.mjs [flags…]
-import { launch } from './harness.mjs';
-import { tineOverSheet } from './probe.mjs';
+import { launch } from '../harness.mjs';
+import { tineOverSheet } from '../probe.mjs';
 const { browser, site } = await launch('webgpu', process.argv.slice(2));
 const context = await browser.newContext({ viewport: { width: 1024, height: 768 }, deviceScaleFactor: 1 });
 await context.addInitScript(() => {

@@ -2,7 +2,7 @@
 // script and task durations) while hovering and while dragging the tine over the
 // gallery design, 5 s each: node cpu-split.mjs [webgpu|webgl2] [extra Chromium flags…]
 // Results: docs/BENCHMARKS.md, "Where the time went".
-import { attr, launch, openPage, sheet } from './harness.mjs';
+import { attr, launch, openPage, sheet } from '../harness.mjs';
 
 const [backend = 'webgpu', ...extra] = process.argv.slice(2);
 const { browser, site } = await launch(backend, extra);

@@ -7,8 +7,8 @@
 // among the JIT mappings and its code size, so compare runs by skipping draws), and the
 // rest by thread. Results: docs/BENCHMARKS.md, "eighth session".
 import { execFileSync, spawn } from 'node:child_process';
-import { launch } from './harness.mjs';
-import { skipDraws, tineOverSheet, wiggle } from './probe.mjs';
+import { launch } from '../harness.mjs';
+import { skipDraws, tineOverSheet, wiggle } from '../probe.mjs';
 
 const SECONDS = 6;
 const HZ = 999;
