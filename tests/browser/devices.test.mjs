@@ -11,7 +11,7 @@ import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import {
-  DIST, MARBLING, READY_MS, SHOTS, attr, controls, crop, decode, differing, example, launch,
+  DIST, MARBLING, READY_MS, ROOT, SHOTS, attr, controls, crop, decode, differing, example, launch,
   linkFragment, openPage, serve, sheet, shootSheet, waitOps, waitReady,
 } from './harness.mjs';
 
@@ -262,6 +262,26 @@ test('installable and offline: manifest, icons, and the service worker serves th
   const html = fs.readFileSync(path.join(DIST, 'index.html'), 'utf8');
   assert.deepEqual(html.match(/(?:href|src)="\/[^"]*"|(?:from |module_or_path: )'\/[^']*'/g), null);
 
+
+  // Each build's service worker lists that build's files under a version of its own, so
+  // installing a new build's worker replaces the old cache (web/precache.sh on a staging
+  // folder, as Trunk runs it).
+  const stage = fs.mkdtempSync(path.join(os.tmpdir(), 'marbling-stage-'));
+  const stageBuild = () => {
+    fs.copyFileSync(path.join(ROOT, 'web/sw.js'), path.join(stage, 'sw.js'));
+    execFileSync('sh', [path.join(ROOT, 'web/precache.sh')], { env: { ...process.env, TRUNK_STAGING_DIR: stage } });
+    const sw = fs.readFileSync(path.join(stage, 'sw.js'), 'utf8');
+    return { version: /const BUILD = '([0-9a-f]{16})'/.exec(sw)?.[1], files: JSON.parse(/const FILES = (\[.*\]);/.exec(sw)[1].replace(/'/g, '"')) };
+  };
+  fs.writeFileSync(path.join(stage, 'index.html'), 'page');
+  fs.writeFileSync(path.join(stage, 'app-1.wasm'), 'one');
+  const first = stageBuild();
+  fs.rmSync(path.join(stage, 'app-1.wasm'));
+  fs.writeFileSync(path.join(stage, 'app-2.wasm'), 'two!');
+  const second = stageBuild();
+  assert.deepEqual([first.files, second.files], [['./', 'app-1.wasm', 'index.html'], ['./', 'app-2.wasm', 'index.html']]);
+  assert.ok(first.version && second.version && first.version !== second.version, `versions ${first.version}, ${second.version}`);
+  fs.rmSync(stage, { recursive: true });
 
   // A server of its own, stopped after the first visit.
   const own = await serve(DIST);
