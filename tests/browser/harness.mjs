@@ -1,7 +1,6 @@
 // Shared by the browser tests: a static server for dist/, Chromium on each GPU path,
-// pixel comparison of screenshots, and the app's automation hooks on <body>
-// (data-ready, data-backend, data-ops, data-error, data-view, data-frame-ms,
-// data-controls, data-exporting, data-recovered).
+// pixel comparison of screenshots, and readers of the app's automation hooks on <body>
+// (the `data-*` attributes listed in the README; positions in CSS px).
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';

@@ -1,7 +1,8 @@
-//! Mathematical marbling (Lu, Jaffer, Jin, Zhao & Mao 2012): the seven operations of
-//! design schema v1 with their exact forward and inverse maps, design documents (JSON,
-//! validated with path-named errors; schema v2 adds noise backgrounds and grain
-//! overlays, see [`surface`]) and the exact CPU reference renderer.
+//! Mathematical marbling (Lu, Jaffer, Jin, Zhao & Mao 2012): the fourteen operations of
+//! design schemas v1 and v3 with their exact forward and inverse maps, design documents
+//! (JSON, validated with path-named errors; schema v2 adds noise backgrounds and grain
+//! overlays, see [`surface`]), the traditional patterns and the exact CPU reference
+//! renderer.
 //!
 //! Conventions: design pixels, origin top-left, x right, y down, angles in radians,
 //! colours sRGB `"#rrggbb"`; all geometry in f64.

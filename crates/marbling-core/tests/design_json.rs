@@ -15,7 +15,8 @@ const DESIGN_MD_EXAMPLE: &str = r##"{ "version": 1, "width": 800, "height": 600,
     {"type":"vortex",   "center":[400,300], "alpha":90, "lambda":20}
   ] }"##;
 
-/// Replaces `from` (which must occur) in the DESIGN.md example.
+/// Replaces `from` (which must occur) in the example above: the README's schema v1
+/// example, one op of each of the seven v1 types.
 fn variant(from: &str, to: &str) -> String {
     assert!(DESIGN_MD_EXAMPLE.contains(from), "{from} not in example");
     DESIGN_MD_EXAMPLE.replacen(from, to, 1)

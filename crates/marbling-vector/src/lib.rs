@@ -68,8 +68,8 @@
 //! outside: collapsing a run in one half-plane changes the fill only inside it.
 //!
 //! **What the lossy steps give up** (defaults):
-//! * *Thin pieces.* A dropped piece had mean width below w when it was dropped. All
-//!   seven ops preserve area, so the ink (or gap) it takes away keeps its area
+//! * *Thin pieces.* A dropped piece had mean width below w when it was dropped. Every op
+//!   but the jiggle preserves area, so the ink (or gap) it takes away keeps its area
 //!   ([`TraceStats::dropped_area`], design px²) through every later op, and later ops
 //!   usually stretch it thinner still (a shear can widen a filament only by the factor
 //!   by which it shortens it). The pixels that may differ are those such a piece
