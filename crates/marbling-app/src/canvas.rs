@@ -19,7 +19,10 @@ impl MarblingApp {
         let painter = ui.painter_at(rect);
         let size = [f64::from(rect.width()), f64::from(rect.height())];
         let ppp = f64::from(ui.ctx().pixels_per_point());
-        let canvas_key = [size[0], size[1], ppp];
+        // Refit on a new window size or pixel ratio (a rotated phone, a hi-DPI page's
+        // first frames), not when a panel's content changes the canvas a little.
+        let window = ui.ctx().content_rect().size();
+        let canvas_key = [f64::from(window.x), f64::from(window.y), ppp];
         let refit = match (self.editor.view, self.editor.fit) {
             (None, _) => true,
             (Some(v), Some((fitted, key))) => v == fitted && key != canvas_key,

@@ -37,9 +37,9 @@ pub struct Editor {
     pub shown: Shown,
     /// `None` until the canvas size is known (then the design is fitted).
     pub view: Option<ViewState>,
-    /// The last view made to fit the canvas, and the canvas it fit (width and height in
-    /// points, physical pixels per point): while `view` is still that one, a resized
-    /// canvas or a changed pixel ratio fits it again.
+    /// The last view made to fit the canvas, and the window it was made in (width and
+    /// height in points, physical pixels per point): while `view` is still that one, a
+    /// resized window or a changed pixel ratio fits it again.
     pub fit: Option<(ViewState, [f64; 3])>,
     /// Two fingers are on the canvas: the view follows them unsnapped (snapping every
     /// frame would let the pinch's anchor drift), and is snapped when they lift.
