@@ -4,7 +4,7 @@
 //! compute shaders and storage textures (every native backend and WebGPU; not WebGL2):
 //! some GPUs run fragment work on a small part of the chip only (an NVIDIA H100 has
 //! graphics on 4 of its 132 SMs), while compute runs on all of it. Same bytes as the
-//! fragment path (tests/compute.rs).
+//! fragment path (tests/it/compute.rs).
 
 use crate::exact::{ExactRenderer, PreparedDesign};
 use crate::shaders::ExactVariant;

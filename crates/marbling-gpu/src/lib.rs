@@ -33,7 +33,7 @@
 //! where the design itself is ill-conditioned: heavily combed designs stretch ink
 //! exponentially, and beyond a few hundred strong combs a relative change of 1e-7 in
 //! the parameters (what rounding them to f32 does) already moves visible ink. The tests
-//! state both budgets (tests/gpu_vs_cpu.rs); docs/BENCHMARKS.md has the numbers.
+//! state both budgets (tests/it/gpu_vs_cpu.rs); docs/BENCHMARKS.md has the numbers.
 //!
 //! # Schema v2 surfaces
 //! Noise backgrounds and grain overlays (see `marbling_core::surface`) use

@@ -1,5 +1,5 @@
 //! Uniform blocks shared with the WGSL shaders: `#[repr(C)]` + bytemuck mirrors of the
-//! WGSL structs (uniform address-space layout; checked against naga by tests/layout.rs).
+//! WGSL structs (uniform address-space layout; checked against naga by tests/it/layout.rs).
 
 use crate::encode::{GpuOp, color_texel};
 use marbling_core::sampling::Sample;

@@ -1,6 +1,6 @@
 //! The uniform block of schema v2 surfaces (noise background, paper and pigment grain)
 //! read by `shaders/surface.wgsl`: `#[repr(C)]` + bytemuck mirrors of the WGSL structs,
-//! checked against naga by tests/layout.rs.
+//! checked against naga by tests/it/layout.rs.
 
 use marbling_core::surface::MAX_PALETTE_STOPS;
 use marbling_core::{Design, GrainKind, NoiseLayer};

@@ -3,7 +3,7 @@
 //! milliseconds per megapixel on the CPU (one thread) and, when an adapter exists, on
 //! the GPU through `sample_noise` (set WGPU_BACKEND=vulkan for lavapipe).
 
-#[path = "../tests/common/gpu.rs"]
+#[path = "../tests/it/common/gpu.rs"]
 mod gpu;
 
 use fastnoise_lite::{FastNoiseLite, FractalType, NoiseType};

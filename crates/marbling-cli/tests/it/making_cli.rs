@@ -4,8 +4,7 @@ use marbling_core::compare::compare;
 use marbling_core::{Design, RgbaImage};
 use std::path::PathBuf;
 
-mod common;
-use common::marbling;
+use crate::common::marbling;
 
 fn scratch(name: &str) -> PathBuf {
     let dir = std::env::temp_dir().join(format!("marbling-making-{}-{name}", std::process::id()));

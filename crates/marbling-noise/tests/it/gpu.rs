@@ -3,10 +3,7 @@
 //! more than 4/255 after the 0.5 + n/6 grey map. Fails when no adapter exists unless
 //! MARBLING_SKIP_GPU=1.
 
-#[path = "common/gpu.rs"]
-mod gpu;
-
-use gpu::GpuNoise;
+use crate::common::gpu::GpuNoise;
 use marbling_noise::wgsl::NoiseGpu;
 use marbling_noise::{NoiseSpec, noise_to_grey, sample_grid};
 

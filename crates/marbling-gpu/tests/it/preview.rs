@@ -2,8 +2,6 @@
 //! exact render of the design with the op committed: they are an approximation, with
 //! a looser budget than the exact renderer's.
 
-mod common;
-
 use marbling_core::compare::compare;
 use marbling_core::synth::{Mix, random_design};
 use marbling_core::{
@@ -86,7 +84,7 @@ fn read_back(
 /// give exactly the bytes of one full draw; leaving out one tile is seen.
 #[test]
 fn tiles_drawn_over_frames_equal_one_full_draw() {
-    let Some(gpu) = common::renderer() else {
+    let Some(gpu) = crate::common::renderer() else {
         return;
     };
     let ctx = gpu.context();
@@ -170,7 +168,7 @@ fn one_sample_preview_frames_approximate_the_exact_render() {
 /// the CPU's exact RGSS render of the design with that op committed: fewer than
 /// `soft_budget` of the pixels may differ by > 24/255 and `gross_budget` by > 96/255.
 fn preview_approximates_exact(antialias: Antialias, soft_budget: f64, gross_budget: f64) {
-    let Some(gpu) = common::renderer() else {
+    let Some(gpu) = crate::common::renderer() else {
         return;
     };
     let committed = random_design(77, 160, 120, 300, Mix::DropHeavy);
@@ -234,7 +232,7 @@ fn preview_approximates_exact(antialias: Antialias, soft_budget: f64, gross_budg
 /// covering the view, or the app would rebuild it on every frame of a drag.
 #[test]
 fn a_cache_at_the_texture_limit_covers_its_view() {
-    let Some(ctx) = common::or_skip(marbling_gpu::GpuContext::new_headless_with_limits(
+    let Some(ctx) = crate::common::or_skip(marbling_gpu::GpuContext::new_headless_with_limits(
         wgpu::Limits::downlevel_webgl2_defaults(),
     )) else {
         return;
@@ -269,7 +267,7 @@ fn a_cache_at_the_texture_limit_covers_its_view() {
 /// that changed.
 #[test]
 fn an_updated_design_draws_as_a_fresh_upload_and_writes_only_new_ops() {
-    let Some(gpu) = common::renderer() else {
+    let Some(gpu) = crate::common::renderer() else {
         return;
     };
     let ctx = gpu.context();

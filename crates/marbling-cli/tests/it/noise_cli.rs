@@ -3,8 +3,7 @@
 
 use std::path::PathBuf;
 
-mod common;
-use common::marbling as run;
+use crate::common::marbling as run;
 
 fn temp(name: &str) -> PathBuf {
     let dir = std::env::temp_dir().join(format!("marbling-noise-cli-{}", std::process::id()));

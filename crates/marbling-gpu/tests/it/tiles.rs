@@ -1,14 +1,12 @@
 //! A render split into small tiles equals the untiled render, and reports progress.
 
-mod common;
-
 use marbling_core::synth::{Mix, random_design};
 use marbling_core::{Antialias, RenderOptions};
 use std::cell::RefCell;
 
 #[test]
 fn tiled_render_equals_untiled() {
-    let Some(gpu) = common::renderer() else {
+    let Some(gpu) = crate::common::renderer() else {
         return;
     };
     let design = random_design(42, 230, 170, 400, Mix::Mixed);

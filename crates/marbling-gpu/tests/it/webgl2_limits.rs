@@ -2,14 +2,13 @@
 //! textures, 16 KiB uniform blocks, no storage buffers) and within WebGPU's default
 //! limits, on a device opened with exactly those limits.
 
-mod common;
-
 use marbling_core::synth::{Mix, random_design};
 use marbling_core::{Antialias, MAX_OPS, RenderOptions};
 use marbling_gpu::{GpuContext, GpuRenderer};
 
 fn render_max_ops(name: &str, limits: wgpu::Limits) {
-    let Some(ctx) = common::or_skip(GpuContext::new_headless_with_limits(limits.clone())) else {
+    let Some(ctx) = crate::common::or_skip(GpuContext::new_headless_with_limits(limits.clone()))
+    else {
         return;
     };
     assert_eq!(ctx.max_texture_side(), limits.max_texture_dimension_2d);

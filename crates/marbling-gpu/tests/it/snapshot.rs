@@ -1,8 +1,6 @@
 //! A golden image of the GPU renderer (tests/snapshots/gpu/), itself checked against
 //! the CPU reference so the golden cannot silently drift from the truth.
-//! Regenerate with `UPDATE_SNAPSHOTS=1 cargo test -p marbling-gpu --test snapshot`.
-
-mod common;
+//! Regenerate with `UPDATE_SNAPSHOTS=1 cargo test -p marbling-gpu --test it snapshot`.
 
 use marbling_core::compare::{check_snapshot, compare};
 use marbling_core::synth::{Mix, random_design};
@@ -11,7 +9,7 @@ use std::path::Path;
 
 #[test]
 fn golden_mixed_design() {
-    let Some(gpu) = common::renderer() else {
+    let Some(gpu) = crate::common::renderer() else {
         return;
     };
     let design = random_design(2026, 128, 96, 250, Mix::Mixed);
@@ -24,6 +22,7 @@ fn golden_mixed_design() {
     let cpu = render(&design, &opts).expect("CPU render");
     let d = compare(&cpu, &image, 8).expect("size");
     assert!(d.fraction() <= 0.01, "GPU vs CPU: {d:?}");
-    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../tests/snapshots/gpu/mixed_250_rgss.png");
+    let path =
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../../tests/snapshots/gpu/mixed_250_rgss.png");
     check_snapshot(&path, &image, 8, 0.005).unwrap_or_else(|e| panic!("{e}"));
 }

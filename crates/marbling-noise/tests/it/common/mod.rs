@@ -3,4 +3,6 @@
 
 #![allow(dead_code)]
 
+pub mod gpu;
+
 pub use marbling_noise::analysis::{bin_frequency as freq, power_spectrum};

@@ -8,7 +8,7 @@ use marbling_core::patterns::{self, Params};
 use marbling_core::{Antialias, Design, RenderOptions, Rgb8, render};
 use std::path::PathBuf;
 
-/// As tests/snapshots.rs: libm's last-bit differences may flip a pixel on an ink edge.
+/// As tests/it/snapshots.rs: libm's last-bit differences may flip a pixel on an ink edge.
 const THRESHOLD: u8 = 2;
 const BUDGET: f64 = 0.01;
 

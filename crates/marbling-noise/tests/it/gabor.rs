@@ -1,9 +1,7 @@
 //! Gabor noise statistics: mean ≈ 0 and variance within 5 % of the analytical formula,
 //! the anisotropic spectrum peak at F₀ (5 %) and ω₀ (3°), the isotropic spectrum a ring.
 
-mod common;
-
-use common::{freq, power_spectrum};
+use crate::common::{freq, power_spectrum};
 use marbling_noise::{Gabor, GaborKind, GaborParams};
 use std::f64::consts::PI;
 

@@ -381,7 +381,7 @@ fn gesture_spans_are_read_written_and_checked() {
 /// links much shorter: the stone example's link shrinks to less than half.
 #[test]
 fn rounded_ops_make_short_links() {
-    let stone = Design::from_json(include_str!("../../../examples/designs/stone.json"))
+    let stone = Design::from_json(include_str!("../../../../examples/designs/stone.json"))
         .expect("valid example");
     let mut rounded = stone.clone();
     rounded.ops = stone.ops.iter().map(Op::rounded).collect();

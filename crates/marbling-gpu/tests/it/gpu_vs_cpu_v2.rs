@@ -1,9 +1,7 @@
 //! Schema v2 on the GPU against the f64 CPU reference: noise backgrounds (Perlin fBm,
 //! Worley, Gabor) marbled by random ops, with paper and pigment grain, within the same
-//! pixel budgets as v1 designs (tests/gpu_vs_cpu.rs); and the comparison shown to see
+//! pixel budgets as v1 designs (tests/it/gpu_vs_cpu.rs); and the comparison shown to see
 //! the grain (a wrong strength fails it).
-
-mod common;
 
 use marbling_core::compare::{ImageDiff, compare};
 use marbling_core::synth::{Mix, random_design};
@@ -47,7 +45,7 @@ const PAPER: &str = r#"{"type":"value","frequency":0.2,"octaves":3,"seed":8}"#;
 const FIBERS: &str = r#"{"type":"paper","length":10,"width":1.5,"density":0.2,"seed":8,"impurities":{"density":0.001}}"#;
 const PIGMENT: &str = r#"{"type":"perlin","frequency":0.12,"octaves":2,"seed":3}"#;
 
-/// A random design (combs at 0.3 strength as in tests/gpu_vs_cpu.rs) on a noise
+/// A random design (combs at 0.3 strength as in tests/it/gpu_vs_cpu.rs) on a noise
 /// background with both grains.
 fn design(i: usize, ops: usize) -> (String, Design) {
     let (name, noise, palette) = BACKGROUNDS[i % BACKGROUNDS.len()];
@@ -111,7 +109,7 @@ fn check(gpu: &GpuRenderer, aa: Antialias, budget: f64, n: usize) {
 
 #[test]
 fn noise_backgrounds_and_grain_without_antialiasing() {
-    let Some(gpu) = common::renderer() else {
+    let Some(gpu) = crate::common::renderer() else {
         return;
     };
     check(&gpu, Antialias::None, 0.005, 6);
@@ -119,7 +117,7 @@ fn noise_backgrounds_and_grain_without_antialiasing() {
 
 #[test]
 fn noise_backgrounds_and_grain_with_rgss_and_adaptive() {
-    let Some(gpu) = common::renderer() else {
+    let Some(gpu) = crate::common::renderer() else {
         return;
     };
     // Lavapipe is slow on the noise shaders: every case with RGSS, three adaptive.
@@ -129,7 +127,7 @@ fn noise_backgrounds_and_grain_with_rgss_and_adaptive() {
 
 #[test]
 fn paper_fibers_as_grain() {
-    let Some(gpu) = common::renderer() else {
+    let Some(gpu) = crate::common::renderer() else {
         return;
     };
     let (name, mut d) = design(1, 40);
@@ -145,7 +143,7 @@ fn paper_fibers_as_grain() {
 
 #[test]
 fn a_wrong_grain_strength_fails_the_comparison() {
-    let Some(gpu) = common::renderer() else {
+    let Some(gpu) = crate::common::renderer() else {
         return;
     };
     let (_, d) = design(0, 30);

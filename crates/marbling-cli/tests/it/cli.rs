@@ -5,8 +5,7 @@ use marbling_core::RgbaImage;
 use std::path::{Path, PathBuf};
 use std::process::Output;
 
-mod common;
-use common::marbling;
+use crate::common::marbling;
 
 const GOOD: &str = r##"{"version":1,"width":120,"height":80,"background":"#f3ead7","ops":[
   {"type":"drop","center":[60,40],"radius":20,"color":"#1d3557"},

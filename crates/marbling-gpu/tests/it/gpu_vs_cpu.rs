@@ -11,8 +11,6 @@
 //! [`STRENGTH`], which keeps them well-conditioned; the full-strength designs are
 //! checked against their own f32-rounding baseline instead.
 
-mod common;
-
 use marbling_core::compare::{ImageDiff, compare};
 use marbling_core::synth::{Mix, random_design};
 use marbling_core::{Antialias, Design, Op, RenderOptions, RgbaImage, render};
@@ -222,7 +220,7 @@ fn cases(aa: Antialias) -> Vec<(String, Design, RenderOptions)> {
 
 #[test]
 fn twenty_designs_without_antialiasing() {
-    let Some(gpu) = common::renderer() else {
+    let Some(gpu) = crate::common::renderer() else {
         return;
     };
     check(&gpu, &cases(Antialias::None), 0.005);
@@ -230,7 +228,7 @@ fn twenty_designs_without_antialiasing() {
 
 #[test]
 fn twenty_designs_with_rgss() {
-    let Some(gpu) = common::renderer() else {
+    let Some(gpu) = crate::common::renderer() else {
         return;
     };
     check(&gpu, &cases(Antialias::Rgss), 0.01);
@@ -238,7 +236,7 @@ fn twenty_designs_with_rgss() {
 
 #[test]
 fn other_modes_and_scales() {
-    let Some(gpu) = common::renderer() else {
+    let Some(gpu) = crate::common::renderer() else {
         return;
     };
     let mut all = Vec::new();
@@ -262,7 +260,7 @@ fn other_modes_and_scales() {
 
 #[test]
 fn comparator_fails_on_a_perturbed_image() {
-    let Some(gpu) = common::renderer() else {
+    let Some(gpu) = crate::common::renderer() else {
         return;
     };
     let (_, design) = designs().swap_remove(5);
@@ -303,7 +301,7 @@ fn comparator_fails_on_a_perturbed_image() {
 
 #[test]
 fn full_strength_designs_within_their_f32_conditioning() {
-    let Some(gpu) = common::renderer() else {
+    let Some(gpu) = crate::common::renderer() else {
         return;
     };
     let opts = RenderOptions {
@@ -336,7 +334,7 @@ fn full_strength_designs_within_their_f32_conditioning() {
 /// jiggle and stylus among them), drawn by the variant with v3 ops.
 #[test]
 fn designs_with_every_op_type() {
-    let Some(gpu) = common::renderer() else {
+    let Some(gpu) = crate::common::renderer() else {
         return;
     };
     let cases: Vec<(String, Design, RenderOptions)> = (0..6u64)

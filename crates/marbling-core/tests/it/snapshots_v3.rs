@@ -6,7 +6,7 @@ use marbling_core::compare::check_snapshot;
 use marbling_core::{Antialias, Design, RenderOptions, render};
 use std::path::PathBuf;
 
-/// As tests/snapshots.rs: libm's last-bit differences may flip a pixel on an ink edge.
+/// As tests/it/snapshots.rs: libm's last-bit differences may flip a pixel on an ink edge.
 const THRESHOLD: u8 = 2;
 const BUDGET: f64 = 0.005;
 

@@ -1,0 +1,10 @@
+//! The integration tests of `marbling-cli`, in one test binary (one link instead of one per
+//! file): each module is one area, named as its file.
+
+mod cli;
+mod cli_gpu;
+mod common;
+mod making_cli;
+mod noise_cli;
+mod svg_cli;
+mod v2_cli;

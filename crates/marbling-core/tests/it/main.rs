@@ -1,0 +1,12 @@
+//! The integration tests of `marbling-core`, in one test binary (one link instead of one per
+//! file): each module is one area, named as its file.
+
+mod design_json;
+mod design_v2;
+mod ops_properties;
+mod ops_v3;
+mod patterns;
+mod render_reference;
+mod snapshots;
+mod snapshots_v2;
+mod snapshots_v3;

@@ -1,0 +1,9 @@
+//! The integration tests of `marbling-noise`, in one test binary (one link instead of one per
+//! file): each module is one area, named as its file.
+
+mod common;
+mod gabor;
+mod gpu;
+mod noises;
+mod snapshots;
+mod wgsl;

@@ -1,0 +1,8 @@
+//! The integration tests of `marbling-vector`, in one test binary (one link instead of one per
+//! file): each module is one area, named as its file.
+
+mod agreement;
+mod comparator;
+mod lossy;
+mod svg_resvg;
+mod tolerance;
