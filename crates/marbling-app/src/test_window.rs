@@ -10,18 +10,11 @@ use marbling_gpu::{GpuContext, RenderTarget, copy_to_buffer, read_buffer};
 pub const FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8Unorm;
 pub const CLEAR: [f32; 4] = [0.2, 0.2, 0.2, 1.0];
 
-/// A headless device (lavapipe or any adapter), or `None` with a note when
-/// `MARBLING_SKIP_GPU=1` and there is none; without that variable a missing adapter fails
-/// the test.
+/// A headless device (lavapipe or any adapter), or `None` where `MARBLING_SKIP_GPU=1`
+/// lets a missing adapter skip; otherwise a missing adapter fails the test
+/// (`marbling_testkit`).
 pub fn gpu_or_skip() -> Option<GpuContext> {
-    match GpuContext::new_headless() {
-        Ok(g) => Some(g),
-        Err(e) if std::env::var("MARBLING_SKIP_GPU").is_ok_and(|v| v == "1") => {
-            eprintln!("MARBLING_SKIP_GPU=1: skipping GPU test ({e})");
-            None
-        }
-        Err(e) => panic!("GPU test cannot run: {e}"),
-    }
+    marbling_testkit::gpu_or_skip(GpuContext::new_headless())
 }
 
 /// The window: context, device and egui's renderer (without dithering, so that pixels

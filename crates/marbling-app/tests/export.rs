@@ -6,16 +6,9 @@ use marbling_core::synth::{Mix, random_design};
 use marbling_core::{Antialias, RenderOptions};
 use marbling_gpu::{GpuContext, GpuRenderer};
 
-/// A device, or a loud failure unless `MARBLING_SKIP_GPU=1`.
+/// A device, or a loud failure unless `MARBLING_SKIP_GPU=1` (`marbling_testkit`).
 fn context() -> Option<GpuContext> {
-    match GpuContext::new_headless() {
-        Ok(c) => Some(c),
-        Err(e) if std::env::var("MARBLING_SKIP_GPU").is_ok_and(|v| v == "1") => {
-            eprintln!("MARBLING_SKIP_GPU=1: skipping GPU test ({e})");
-            None
-        }
-        Err(e) => panic!("GPU test cannot run: {e}"),
-    }
+    marbling_testkit::gpu_or_skip(GpuContext::new_headless())
 }
 
 #[test]

@@ -112,7 +112,7 @@ fn main() {
         cpu_ms_per_mp / threads as f64
     );
 
-    if std::env::var_os("MARBLING_SKIP_GPU").is_some_and(|v| v == "1") {
+    if marbling_testkit::skip_requested() {
         println!("gabor GPU: skipped (MARBLING_SKIP_GPU=1)");
         return;
     }

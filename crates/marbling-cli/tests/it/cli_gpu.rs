@@ -38,9 +38,8 @@ fn gpu_backend_matches_cpu_backend() {
     let stderr = String::from_utf8_lossy(&gpu_run.stderr);
     if !gpu_run.status.success()
         && stderr.contains("no GPU adapter")
-        && std::env::var("MARBLING_SKIP_GPU").is_ok_and(|v| v == "1")
+        && marbling_testkit::gpu_or_skip::<(), _>(Err(stderr.trim())).is_none()
     {
-        eprintln!("MARBLING_SKIP_GPU=1: skipping ({stderr})");
         return;
     }
     assert!(gpu_run.status.success(), "{stderr}");

@@ -109,7 +109,7 @@ fn every_pattern_renders_like_its_golden() {
         .expect("render");
         assert_eq!((img.width, img.height), (80, 50));
         if let Err(e) = check_snapshot(
-            &root().join(format!("tests/snapshots/core/patterns/{}.png", p.id)),
+            &marbling_testkit::goldens("core").join(format!("patterns/{}.png", p.id)),
             &img,
             THRESHOLD,
             BUDGET,

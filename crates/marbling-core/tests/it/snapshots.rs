@@ -11,7 +11,7 @@ const THRESHOLD: u8 = 2;
 const BUDGET: f64 = 0.005;
 
 fn snapshot_dir() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../tests/snapshots/core")
+    marbling_testkit::goldens("core")
 }
 
 /// Three drops to deform, then `op` (a JSON op object).
@@ -127,6 +127,7 @@ fn each_op_changes_the_picture() {
 }
 
 #[test]
+/// The one test of the comparator every golden and agreement test relies on.
 fn the_comparator_fails_on_a_perturbed_image() {
     let dir = std::env::temp_dir().join(format!("marbling-snap-{}", std::process::id()));
     let golden = dir.join("golden.png");
@@ -161,4 +162,12 @@ fn the_comparator_fails_on_a_perturbed_image() {
     let small = RgbaImage::filled(3, 3, [0, 0, 0, 255]);
     assert!(check_snapshot_with(&golden, &small, THRESHOLD, BUDGET, false).is_err());
     std::fs::remove_dir_all(&dir).ok();
+    // `compare`, which every agreement test uses: a channel off by exactly the threshold
+    // is not counted, one level more is.
+    for (offset, counted) in [(THRESHOLD, 0), (THRESHOLD + 1, 1)] {
+        let mut off = img.clone();
+        off.pixels[0] = off.pixels[0].wrapping_add(offset);
+        let d = marbling_core::compare::compare(&img, &off, THRESHOLD).expect("same size");
+        assert_eq!(d.differing, counted, "offset {offset}");
+    }
 }

@@ -32,7 +32,7 @@ fn v2_examples_match_their_goldens() {
         .expect("render");
         assert!(img.width <= 256 && img.height <= 256);
         if let Err(e) = check_snapshot(
-            &root().join(format!("tests/snapshots/core/v2-{name}.png")),
+            &marbling_testkit::goldens("core").join(format!("v2-{name}.png")),
             &img,
             THRESHOLD,
             BUDGET,

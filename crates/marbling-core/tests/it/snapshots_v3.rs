@@ -44,7 +44,7 @@ fn v3_examples_match_their_goldens() {
         .expect("render");
         assert!(img.width <= 256 && img.height <= 256);
         if let Err(e) = check_snapshot(
-            &root().join(format!("tests/snapshots/core/v3-{name}.png")),
+            &marbling_testkit::goldens("core").join(format!("v3-{name}.png")),
             &img,
             THRESHOLD,
             BUDGET,

@@ -10,7 +10,7 @@ use marbling_gpu::{GpuContext, GpuRenderer};
 
 /// (compute, fragment) renderers on one device of the best adapter.
 fn renderers() -> Option<(GpuRenderer, GpuRenderer)> {
-    let ctx = crate::common::or_skip(GpuContext::new_headless())?;
+    let ctx = marbling_testkit::gpu_or_skip(GpuContext::new_headless())?;
     let compute = GpuRenderer::new(ctx.clone());
     let fragment = GpuRenderer::new(ctx).with_fragment_path();
     eprintln!("adapter: {}", compute.context().describe());
@@ -271,7 +271,7 @@ fn inverse_errors(ctx: &GpuContext, shaders: &str, kind: marbling_core::OpKind) 
 
 /// The per-kind test: the same ink answers, positions within 1e-4 relative.
 fn wgsl_inverse_matches_cpu(kind: marbling_core::OpKind) {
-    let Some(ctx) = crate::common::or_skip(GpuContext::new_headless()) else {
+    let Some(ctx) = marbling_testkit::gpu_or_skip(GpuContext::new_headless()) else {
         return;
     };
     let shaders = [
@@ -293,7 +293,7 @@ fn wgsl_inverse_matches_cpu(kind: marbling_core::OpKind) {
 /// sub-step walked forward instead of back.
 #[test]
 fn a_wrong_wgsl_inverse_is_caught() {
-    let Some(ctx) = crate::common::or_skip(GpuContext::new_headless()) else {
+    let Some(ctx) = marbling_testkit::gpu_or_skip(GpuContext::new_headless()) else {
         return;
     };
     let shaders = [

@@ -121,7 +121,7 @@ fn wrong_pixels(image: &[u8], tolerance: u8, rect: [u32; 4]) -> Vec<(u32, u32)> 
 /// one step of rounding off. Nothing outside the scissor is touched.
 #[test]
 fn encoded_texels_are_shown_unchanged_within_the_scissor() {
-    let Some(ctx) = crate::common::or_skip(GpuContext::new_headless()) else {
+    let Some(ctx) = marbling_testkit::gpu_or_skip(GpuContext::new_headless()) else {
         return;
     };
     for (format, tolerance) in [
@@ -142,7 +142,7 @@ fn encoded_texels_are_shown_unchanged_within_the_scissor() {
 /// The comparison can fail: one changed byte is found, and so is a copy one pixel off.
 #[test]
 fn the_comparison_sees_one_changed_byte_and_a_shifted_copy() {
-    let Some(ctx) = crate::common::or_skip(GpuContext::new_headless()) else {
+    let Some(ctx) = marbling_testkit::gpu_or_skip(GpuContext::new_headless()) else {
         return;
     };
     let image = present(
@@ -168,7 +168,7 @@ fn the_comparison_sees_one_changed_byte_and_a_shifted_copy() {
 /// for `…Unorm` and `…UnormSrgb` targets alike, and only within the scissor.
 #[test]
 fn a_texture_in_the_target_format_is_copied_as_it_is() {
-    let Some(ctx) = crate::common::or_skip(GpuContext::new_headless()) else {
+    let Some(ctx) = marbling_testkit::gpu_or_skip(GpuContext::new_headless()) else {
         return;
     };
     for format in [
@@ -190,7 +190,7 @@ fn a_texture_in_the_target_format_is_copied_as_it_is() {
 /// values (its texels decoded twice).
 #[test]
 fn decoding_a_texture_in_the_target_format_again_is_caught() {
-    let Some(ctx) = crate::common::or_skip(GpuContext::new_headless()) else {
+    let Some(ctx) = marbling_testkit::gpu_or_skip(GpuContext::new_headless()) else {
         return;
     };
     let format = wgpu::TextureFormat::Rgba8UnormSrgb;

@@ -232,9 +232,11 @@ fn preview_approximates_exact(antialias: Antialias, soft_budget: f64, gross_budg
 /// covering the view, or the app would rebuild it on every frame of a drag.
 #[test]
 fn a_cache_at_the_texture_limit_covers_its_view() {
-    let Some(ctx) = crate::common::or_skip(marbling_gpu::GpuContext::new_headless_with_limits(
-        wgpu::Limits::downlevel_webgl2_defaults(),
-    )) else {
+    let Some(ctx) =
+        marbling_testkit::gpu_or_skip(marbling_gpu::GpuContext::new_headless_with_limits(
+            wgpu::Limits::downlevel_webgl2_defaults(),
+        ))
+    else {
         return;
     };
     let design = random_design(3, 1024, 768, 20, Mix::Mixed);

@@ -5,7 +5,6 @@
 use marbling_core::compare::{check_snapshot, compare};
 use marbling_core::synth::{Mix, random_design};
 use marbling_core::{Antialias, RenderOptions, render};
-use std::path::Path;
 
 #[test]
 fn golden_mixed_design() {
@@ -22,7 +21,6 @@ fn golden_mixed_design() {
     let cpu = render(&design, &opts).expect("CPU render");
     let d = compare(&cpu, &image, 8).expect("size");
     assert!(d.fraction() <= 0.01, "GPU vs CPU: {d:?}");
-    let path =
-        Path::new(env!("CARGO_MANIFEST_DIR")).join("../../tests/snapshots/gpu/mixed_250_rgss.png");
+    let path = marbling_testkit::goldens("gpu").join("mixed_250_rgss.png");
     check_snapshot(&path, &image, 8, 0.005).unwrap_or_else(|e| panic!("{e}"));
 }

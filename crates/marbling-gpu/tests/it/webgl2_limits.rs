@@ -7,7 +7,8 @@ use marbling_core::{Antialias, MAX_OPS, RenderOptions};
 use marbling_gpu::{GpuContext, GpuRenderer};
 
 fn render_max_ops(name: &str, limits: wgpu::Limits) {
-    let Some(ctx) = crate::common::or_skip(GpuContext::new_headless_with_limits(limits.clone()))
+    let Some(ctx) =
+        marbling_testkit::gpu_or_skip(GpuContext::new_headless_with_limits(limits.clone()))
     else {
         return;
     };

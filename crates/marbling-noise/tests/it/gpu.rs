@@ -35,13 +35,8 @@ fn grey(n: f32) -> i32 {
 
 #[test]
 fn cpu_matches_wgsl() {
-    let gpu = match GpuNoise::new() {
-        Ok(g) => g,
-        Err(e) if std::env::var_os("MARBLING_SKIP_GPU").is_some_and(|v| v == "1") => {
-            eprintln!("skipping GPU test (MARBLING_SKIP_GPU=1): {e}");
-            return;
-        }
-        Err(e) => panic!("{e}; install Mesa lavapipe (make setup-gpu) or set MARBLING_SKIP_GPU=1"),
+    let Some(gpu) = marbling_testkit::gpu_or_skip(GpuNoise::new()) else {
+        return;
     };
     println!("adapter: {}", gpu.adapter);
     let mut report = String::new();

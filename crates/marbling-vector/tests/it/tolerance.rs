@@ -7,7 +7,6 @@ use marbling_core::{CompiledOp, Design, Op};
 use marbling_vector::refine::{Refiner, distance_to_segment};
 use marbling_vector::simplify::rdp_closed;
 use marbling_vector::{Blend, TraceOptions, initial_sides, preview, trace};
-use std::path::PathBuf;
 
 /// Refiners for every ink op of `design` at tolerance `t` (scale 1, no off-canvas
 /// relaxation, so the bounds apply everywhere).
@@ -158,7 +157,6 @@ fn golden_vector_preview() {
         marbling_core::render(&design, &marbling_core::RenderOptions::default()).expect("render");
     let diff = marbling_core::compare::compare(&reference, &image, 48).expect("same size");
     assert!(diff.fraction() <= 0.01, "{:.3} %", 100.0 * diff.fraction());
-    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("../../tests/snapshots/vector/mixed_80ops_160x120.png");
+    let path = marbling_testkit::goldens("vector").join("mixed_80ops_160x120.png");
     check_snapshot(&path, &image, 16, 0.002).unwrap_or_else(|e| panic!("{e}"));
 }

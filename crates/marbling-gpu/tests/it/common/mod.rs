@@ -2,29 +2,13 @@
 
 #![allow(dead_code)]
 
-use marbling_gpu::{GpuContext, GpuError, GpuRenderer};
+use marbling_gpu::{GpuContext, GpuRenderer};
+use marbling_testkit::gpu_or_skip;
 
-/// True when the environment explicitly asks to skip GPU tests.
-pub fn skip_requested() -> bool {
-    std::env::var("MARBLING_SKIP_GPU").is_ok_and(|v| v == "1")
-}
-
-/// Handles a failure to open a device: `None` (skip) only with MARBLING_SKIP_GPU=1,
-/// otherwise the test fails with the fix in the message.
-pub fn or_skip<T>(r: Result<T, GpuError>) -> Option<T> {
-    match r {
-        Ok(v) => Some(v),
-        Err(e) if skip_requested() => {
-            eprintln!("MARBLING_SKIP_GPU=1: skipping GPU test ({e})");
-            None
-        }
-        Err(e) => panic!("GPU test cannot run: {e}"),
-    }
-}
-
-/// A headless renderer on the best adapter (lavapipe here).
+/// A headless renderer on the best adapter (lavapipe here); `None` only where
+/// `MARBLING_SKIP_GPU=1` lets a missing adapter skip (`marbling_testkit`).
 pub fn renderer() -> Option<GpuRenderer> {
-    let ctx = or_skip(GpuContext::new_headless())?;
+    let ctx = gpu_or_skip(GpuContext::new_headless())?;
     eprintln!("adapter: {}", ctx.describe());
     Some(GpuRenderer::new(ctx))
 }
