@@ -5,6 +5,10 @@
 //!   with a running count, so a run that skipped GPU tests says so loudly.
 //! * **Where the goldens are**: `tests/snapshots/` at the workspace's root, one folder
 //!   per crate (`core`, `gpu`, `noise`, `vector`).
+//! * **naga checks of WGSL** ([`wgsl`]): validation, and host structs against WGSL
+//!   struct layouts, every member.
+
+pub mod wgsl;
 
 use std::fmt::Display;
 use std::path::PathBuf;

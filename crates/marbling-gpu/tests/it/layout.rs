@@ -7,41 +7,11 @@ use marbling_gpu::shaders::{FLAT_MESH_WGSL, PRESENT_WGSL, preview_wgsl, render_w
 use marbling_gpu::surface::{LayerParams, SurfaceParams};
 use std::mem::{offset_of, size_of};
 
-/// (member name, offset) of WGSL struct `name`, and its size.
-fn wgsl_layout(source: &str, name: &str) -> (Vec<(String, u32)>, u32) {
-    let module = naga::front::wgsl::parse_str(source).expect("parses");
-    let ty = module
-        .types
-        .iter()
-        .find(|(_, t)| t.name.as_deref() == Some(name))
-        .unwrap_or_else(|| panic!("no struct {name}"))
-        .1;
-    let naga::TypeInner::Struct { members, span } = &ty.inner else {
-        panic!("{name} is not a struct");
-    };
-    let members = members
-        .iter()
-        .map(|m| (m.name.clone().unwrap_or_default(), m.offset))
-        .collect();
-    (members, *span)
-}
-
+/// The host struct `host` mirrors WGSL uniform struct `name` of `source`, every member
+/// (`marbling_testkit::wgsl`).
 fn check(source: &str, name: &str, host: &[(&str, usize)], host_size: usize) {
-    let (members, size) = wgsl_layout(source, name);
-    let host: Vec<(String, u32)> = host
-        .iter()
-        .map(|&(n, o)| (n.to_owned(), o as u32))
-        .collect();
-    assert_eq!(
-        members, host,
-        "{name}: member offsets differ between WGSL and Rust"
-    );
-    assert_eq!(size as usize, host_size, "{name}: sizes differ");
-    assert_eq!(
-        host_size % 16,
-        0,
-        "{name}: uniform size must be a multiple of 16"
-    );
+    let module = marbling_testkit::wgsl::validate(name, source);
+    marbling_testkit::wgsl::check_uniform(&module, name, host, host_size);
 }
 
 #[test]

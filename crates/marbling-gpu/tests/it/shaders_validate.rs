@@ -2,22 +2,7 @@
 
 use marbling_gpu::shaders::{all, compute_modules};
 
-fn validate(name: &str, source: &str) -> naga::Module {
-    let module = naga::front::wgsl::parse_str(source)
-        .unwrap_or_else(|e| panic!("{name}.wgsl does not parse:\n{}", e.emit_to_string(source)));
-    naga::valid::Validator::new(
-        naga::valid::ValidationFlags::all(),
-        naga::valid::Capabilities::empty(),
-    )
-    .validate(&module)
-    .unwrap_or_else(|e| {
-        panic!(
-            "{name}.wgsl does not validate:\n{}",
-            e.emit_to_string(source)
-        )
-    });
-    module
-}
+use marbling_testkit::wgsl::validate;
 
 /// The names of `module`'s entry points, in order.
 fn entry_points(module: &naga::Module) -> Vec<&str> {
@@ -61,16 +46,8 @@ fn a_broken_shader_is_caught() {
         "return Hit(e.ink, false, e.p);",
         "return Hit(e.ink.xyz, false, e.p);",
     );
-    let parsed = naga::front::wgsl::parse_str(&broken);
-    let valid = parsed.as_ref().ok().map(|m| {
-        naga::valid::Validator::new(
-            naga::valid::ValidationFlags::all(),
-            naga::valid::Capabilities::empty(),
-        )
-        .validate(m)
-        .is_ok()
-    });
-    assert_ne!(valid, Some(true), "a type error went unnoticed");
+    let caught = std::panic::catch_unwind(|| validate("broken", &broken)).is_err();
+    assert!(caught, "a type error went unnoticed");
 }
 
 /// Each entry point translates to GLSL ES 3.00 for WebGL2 (what wgpu's GL backend does
