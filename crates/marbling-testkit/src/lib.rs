@@ -5,6 +5,8 @@
 //!   with a running count, so a run that skipped GPU tests says so loudly.
 //! * **Where the goldens are**: `tests/snapshots/` at the workspace's root, one folder
 //!   per crate (`core`, `gpu`, `noise`, `vector`).
+//! * **The error-message assertion** ([`assert_listed`]): a refused document's messages
+//!   (each naming its JSON path) include the expected one, word for word.
 //! * **naga checks of WGSL** ([`wgsl`]): validation, and host structs against WGSL
 //!   struct layouts, every member.
 
@@ -47,6 +49,15 @@ pub fn gpu_or_skip<T, E: Display>(opened: Result<T, E>) -> Option<T> {
     }
 }
 
+/// Asserts that `messages` (a refused document's errors, each naming its JSON path)
+/// include `expected` word for word; the failure lists them all.
+pub fn assert_listed(messages: &[String], expected: &str) {
+    assert!(
+        messages.iter().any(|m| m == expected),
+        "wanted {expected:?} among {messages:#?}"
+    );
+}
+
 /// The goldens of `area` (`core`, `gpu`, `noise`, `vector`): `tests/snapshots/AREA/`
 /// at the workspace's root.
 pub fn goldens(area: &str) -> PathBuf {
@@ -65,6 +76,15 @@ mod tests {
         for area in ["core", "gpu", "noise", "vector"] {
             assert!(goldens(area).is_dir(), "{}", goldens(area).display());
         }
+    }
+
+    #[test]
+    fn the_error_assertion_finds_only_the_exact_message() {
+        let messages = vec!["ops[0].radius: must be > 0, got -1".to_owned()];
+        assert_listed(&messages, "ops[0].radius: must be > 0, got -1");
+        let near =
+            std::panic::catch_unwind(|| assert_listed(&messages, "ops[0].radius: must be > 0"));
+        assert!(near.is_err(), "a partial message passed");
     }
 
     #[test]

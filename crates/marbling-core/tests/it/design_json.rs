@@ -1,6 +1,7 @@
 //! Design documents: the exact v1 shape, round trips, and one test per validation rule,
 //! each checking the message names the JSON path.
 
+use crate::common::{assert_error, errors};
 use marbling_core::synth::{Mix, random_design};
 use marbling_core::{Design, DesignError, Drop, Op, Point, Rgb8, Tine, Vec2};
 
@@ -20,22 +21,6 @@ const DESIGN_MD_EXAMPLE: &str = r##"{ "version": 1, "width": 800, "height": 600,
 fn variant(from: &str, to: &str) -> String {
     assert!(DESIGN_MD_EXAMPLE.contains(from), "{from} not in example");
     DESIGN_MD_EXAMPLE.replacen(from, to, 1)
-}
-
-/// The messages of an invalid document.
-fn errors(text: &str) -> Vec<String> {
-    match Design::from_json(text) {
-        Err(DesignError::Invalid(e)) => e.0.iter().map(ToString::to_string).collect(),
-        other => panic!("expected validation errors, got {other:?}"),
-    }
-}
-
-fn assert_error(text: &str, expected: &str) {
-    let errs = errors(text);
-    assert!(
-        errs.iter().any(|e| e == expected),
-        "wanted {expected:?} in {errs:#?}"
-    );
 }
 
 #[test]

@@ -3,9 +3,10 @@
 //! renderer marbles the noise background, moves pigment grain with the ink and keeps
 //! paper grain fixed.
 
+use crate::common::{assert_error, errors};
 use marbling_core::{
-    Antialias, Design, DesignError, GrainKind, NoiseBackground, NoiseLayer, Overlay, Palette,
-    RenderOptions, Rgb8, Traced, Walker, render,
+    Antialias, Design, GrainKind, NoiseBackground, NoiseLayer, Overlay, Palette, RenderOptions,
+    Rgb8, Traced, Walker, render,
 };
 
 const V2: &str = r##"{"version":2,"width":96,"height":64,
@@ -16,21 +17,6 @@ const V2: &str = r##"{"version":2,"width":96,"height":64,
   "ops":[
     {"type":"drop","center":[48,32],"radius":14,"color":"#1d3557"},
     {"type":"tine","origin":[0,32],"direction":[1,0],"alpha":20,"lambda":6}]}"##;
-
-fn errors(text: &str) -> Vec<String> {
-    match Design::from_json(text) {
-        Err(DesignError::Invalid(e)) => e.0.iter().map(ToString::to_string).collect(),
-        other => panic!("expected validation errors, got {other:?}"),
-    }
-}
-
-fn assert_error(text: &str, expected: &str) {
-    let errs = errors(text);
-    assert!(
-        errs.iter().any(|e| e == expected),
-        "wanted {expected:?} in {errs:#?}"
-    );
-}
 
 #[test]
 fn v1_documents_load_and_write_back_as_v1() {

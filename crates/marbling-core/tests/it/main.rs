@@ -1,6 +1,7 @@
 //! The integration tests of `marbling-core`, in one test binary (one link instead of one per
 //! file): each module is one area, named as its file.
 
+mod common;
 mod design_json;
 mod design_v2;
 mod ops_properties;

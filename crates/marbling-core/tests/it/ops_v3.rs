@@ -3,9 +3,9 @@
 //! drop pattern renders exactly like its drops one by one, the documents round-trip,
 //! and every broken rule is named with its JSON path.
 
+use crate::common::errors;
 use marbling_core::{
-    Antialias, Design, DesignError, DropSet, Op, Point, Radii, RenderOptions, Rgb8, Stylus, Vec2,
-    render,
+    Antialias, Design, DropSet, Op, Point, Radii, RenderOptions, Rgb8, Stylus, Vec2, render,
 };
 use std::f64::consts::TAU;
 use std::path::PathBuf;
@@ -266,13 +266,6 @@ fn v3_documents_round_trip_and_older_ones_keep_their_version() {
     d.ops.retain(|o| !o.is_v3());
     assert_eq!(d.version(), 1);
     assert!(d.to_json_compact().starts_with("{\"version\":1"));
-}
-
-fn errors(text: &str) -> Vec<String> {
-    match Design::from_json(text) {
-        Err(DesignError::Invalid(e)) => e.0.iter().map(ToString::to_string).collect(),
-        other => panic!("expected validation errors, got {other:?}"),
-    }
 }
 
 fn doc(version: u32, op: &str) -> String {
