@@ -115,6 +115,12 @@ impl MarblingApp {
     /// zoom level samples exactly the points of a CPU render at that scale (whole-pixel
     /// pans keep it snapped).
     fn navigate(&mut self, ui: &egui::Ui, response: &egui::Response, rect: Rect, ppp: f64) {
+        let (steps, any_touches) =
+            ui.input(|i| (self.editor.fingers.feed(&i.events), i.any_touches()));
+        if !any_touches {
+            // No finger is down (also after a lift the canvas did not see).
+            self.editor.fingers = Default::default();
+        }
         let Some(view) = self.editor.view.as_mut() else {
             return;
         };
@@ -126,16 +132,16 @@ impl MarblingApp {
             let d = response.drag_delta();
             view.pan([f64::from(d.x), f64::from(d.y)]);
         }
-        if let Some(touch) = ui.input(|i| i.multi_touch()) {
-            // Two fingers: the design point under their midpoint follows the midpoint
-            // (pan), and the pinch zooms about it.
-            let d = touch.translation_delta;
-            view.pan([f64::from(d.x), f64::from(d.y)]);
-            let c = touch.center_pos - rect.min;
-            view.zoom_about(
-                f64::from(touch.zoom_delta),
-                [f64::from(c.x), f64::from(c.y)],
-            );
+        // Two fingers: the design point under their midpoint follows the midpoint (pan),
+        // and the pinch zooms about it, move by move (src/fingers.rs).
+        for step in &steps {
+            view.pan([f64::from(step.pan.x), f64::from(step.pan.y)]);
+            let c = step.about - rect.min;
+            view.zoom_about(step.zoom, [f64::from(c.x), f64::from(c.y)]);
+        }
+        let two_fingers = self.editor.fingers.count() >= 2 || !steps.is_empty();
+        if two_fingers || ui.input(|i| i.multi_touch().is_some()) {
+            // egui's own pinch summary (zoom_delta) is the same motion: not twice.
         } else if let Some(p) = response.hover_pos() {
             let (scroll, zoom) = ui.input(|i| (wheel_points(i), i.zoom_delta()));
             let factor = f64::from(zoom) * (scroll * 0.002).exp();
@@ -146,7 +152,7 @@ impl MarblingApp {
                 );
             }
         }
-        let pinching = ui.input(|i| i.multi_touch().is_some());
+        let pinching = two_fingers;
         let pinch_ended = std::mem::replace(&mut self.editor.pinching, pinching) && !pinching;
         if (view.zoom != before.zoom && !pinching) || pinch_ended {
             *view = view.snapped(ppp);
@@ -169,7 +175,7 @@ impl MarblingApp {
                 i.pointer.interact_pos(),
                 f64::from(i.stable_dt).min(0.1),
                 i.key_down(egui::Key::Space),
-                i.multi_touch().is_some(),
+                i.multi_touch().is_some() || self.editor.fingers.count() >= 2,
             )
         });
         let to_design =

@@ -13,6 +13,7 @@ pub mod canvas_gpu;
 pub mod device_pixels;
 pub mod drop_patterns;
 pub mod export;
+pub mod fingers;
 pub mod gallery;
 pub mod gallery_gpu;
 pub mod gpu_errors;

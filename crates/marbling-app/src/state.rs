@@ -44,6 +44,8 @@ pub struct Editor {
     /// Two fingers are on the canvas: the view follows them unsnapped (snapping every
     /// frame would let the pinch's anchor drift), and is snapped when they lift.
     pub pinching: bool,
+    /// The fingers on the canvas (src/fingers.rs).
+    pub fingers: crate::fingers::Fingers,
     /// The tool being dragged.
     pub active: Option<ActiveGesture>,
     /// Seed of the next gesture's random choices.
@@ -83,6 +85,7 @@ impl Editor {
             view: None,
             fit: None,
             pinching: false,
+            fingers: Default::default(),
             active: None,
             next_seed: 1,
             playback: None,
