@@ -725,7 +725,8 @@ impl eframe::App for MarblingApp {
         // Phones and tablets get their own arrangement (src/layout.rs); the gallery
         // takes the whole of a narrow screen (its cards open designs; "Back to the
         // editor" brings the controls back).
-        let layout = crate::layout::Layout::for_screen(ui.max_rect().size());
+        let layout =
+            crate::layout::Layout::for_screen(ui.max_rect().size(), platform::touch_screen());
         self.panels.layout = layout;
         let narrow = ui.max_rect().width() < 720.0;
         let gallery_only = self.editor.landing && (narrow || layout.touch());

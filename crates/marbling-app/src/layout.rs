@@ -6,7 +6,7 @@ use egui::Vec2;
 
 /// Portrait screens up to this width (CSS px) get the bottom sheet.
 pub const PORTRAIT_MAX_WIDTH: f32 = 820.0;
-/// Landscape screens up to this height (CSS px) get the tool rail.
+/// Landscape touch screens up to this height (CSS px) get the tool rail.
 pub const LANDSCAPE_MAX_HEIGHT: f32 = 500.0;
 /// Smallest height and width of a control in the touch layouts, CSS px.
 pub const TOUCH_TARGET: f32 = 44.0;
@@ -23,16 +23,18 @@ pub enum Layout {
     Desktop,
     /// Canvas on top; the controls in a bottom sheet with tabs that can be collapsed.
     Portrait,
-    /// A narrow tool rail beside the canvas; the full panel opens from it.
+    /// A narrow tool rail beside the canvas; the full panel opens from it (touch
+    /// screens only: a short desktop window keeps its side panel).
     Landscape,
 }
 
 impl Layout {
-    /// The layout for a screen of `size` CSS px.
-    pub fn for_screen(size: Vec2) -> Self {
+    /// The layout for a screen of `size` CSS px; `touch_screen` when it takes touches
+    /// (`platform::touch_screen`).
+    pub fn for_screen(size: Vec2, touch_screen: bool) -> Self {
         if size.x <= PORTRAIT_MAX_WIDTH && size.y > size.x {
             Layout::Portrait
-        } else if size.y <= LANDSCAPE_MAX_HEIGHT && size.x > size.y {
+        } else if touch_screen && size.y <= LANDSCAPE_MAX_HEIGHT && size.x > size.y {
             Layout::Landscape
         } else {
             Layout::Desktop
@@ -120,13 +122,36 @@ mod tests {
 
     #[test]
     fn phones_and_tablets_get_their_layouts() {
-        assert_eq!(Layout::for_screen(vec2(390.0, 844.0)), Layout::Portrait);
-        assert_eq!(Layout::for_screen(vec2(820.0, 1180.0)), Layout::Portrait);
-        assert_eq!(Layout::for_screen(vec2(844.0, 390.0)), Layout::Landscape);
-        assert_eq!(Layout::for_screen(vec2(1440.0, 900.0)), Layout::Desktop);
-        assert_eq!(Layout::for_screen(vec2(1300.0, 820.0)), Layout::Desktop);
-        // A tablet held sideways has room for the side panel.
-        assert_eq!(Layout::for_screen(vec2(1180.0, 820.0)), Layout::Desktop);
+        assert_eq!(
+            Layout::for_screen(vec2(390.0, 844.0), true),
+            Layout::Portrait
+        );
+        assert_eq!(
+            Layout::for_screen(vec2(820.0, 1180.0), true),
+            Layout::Portrait
+        );
+        assert_eq!(
+            Layout::for_screen(vec2(844.0, 390.0), true),
+            Layout::Landscape
+        );
+        assert_eq!(
+            Layout::for_screen(vec2(1440.0, 900.0), false),
+            Layout::Desktop
+        );
+        assert_eq!(
+            Layout::for_screen(vec2(1300.0, 820.0), true),
+            Layout::Desktop
+        );
+        // A tablet held sideways has room for the side panel; a short desktop window
+        // keeps it too.
+        assert_eq!(
+            Layout::for_screen(vec2(1180.0, 820.0), true),
+            Layout::Desktop
+        );
+        assert_eq!(
+            Layout::for_screen(vec2(760.0, 480.0), false),
+            Layout::Desktop
+        );
         assert!(Layout::Portrait.touch() && !Layout::Desktop.touch());
     }
 

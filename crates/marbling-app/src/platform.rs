@@ -220,6 +220,18 @@ mod imp {
         f.forget();
     }
 
+    /// True when the screen takes touches (`navigator.maxTouchPoints` > 0), read once.
+    pub fn touch_screen() -> bool {
+        static TOUCH: std::sync::OnceLock<bool> = std::sync::OnceLock::new();
+        *TOUCH.get_or_init(|| {
+            let points = window()
+                .and_then(|w| js_sys::Reflect::get(&w, &"navigator".into()).ok())
+                .and_then(|n| js_sys::Reflect::get(&n, &"maxTouchPoints".into()).ok())
+                .and_then(|p| p.as_f64());
+            points.is_some_and(|p| p > 0.0)
+        })
+    }
+
     /// Sets (or with `None` removes) a `data-…` attribute on `<body>`.
     pub fn set_body_attribute(name: &str, value: Option<&str>) {
         let Some(body) = window().and_then(|w| w.document()).and_then(|d| d.body()) else {
@@ -321,6 +333,11 @@ mod imp {
 
     /// Desktop windows have no page to expose a test hook on.
     pub fn expose_device_loss(_device: &wgpu::Device) {}
+
+    /// Desktop windows are used with a mouse (a touch screen's touches arrive as one).
+    pub fn touch_screen() -> bool {
+        false
+    }
 
     /// Desktop windows have no `<body>`.
     pub fn set_body_attribute(_name: &str, _value: Option<&str>) {}
