@@ -26,7 +26,7 @@
 //!   and the GPU renderers draw the same picture.
 
 use crate::Rgb8;
-use marbling_noise::wgsl::NoiseGpu;
+use marbling_noise::wgsl::{GpuUnsupported, wgsl_form};
 use marbling_noise::{ColorRamp, Field, NoiseSpec, PALETTES, Source, Transfer, noise_field};
 use serde_json::Value;
 use std::fmt;
@@ -111,8 +111,8 @@ impl NoiseLayer {
             );
         }
         let field = noise_field(&spec, 1);
-        match (&field, NoiseGpu::from_spec(&spec, 1)) {
-            (None, _) | (_, Err(marbling_noise::wgsl::GpuUnsupported::Product)) => {
+        match (&field, wgsl_form(&spec)) {
+            (None, _) | (_, Err(GpuUnsupported::Product)) => {
                 no("type", "a product is not allowed in a design")
             }
             (_, Err(e)) => no("", &e.to_string()),

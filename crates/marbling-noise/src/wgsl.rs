@@ -259,6 +259,27 @@ pub enum GpuUnsupported {
     Drive(&'static str),
 }
 
+/// Whether `spec`'s noise has a WGSL form (one [`NoiseGpu`] uniform), without building
+/// it: a product has none, and the WGSL Gabor takes only an fBm as a driving field.
+pub fn wgsl_form(spec: &NoiseSpec) -> Result<(), GpuUnsupported> {
+    let drive = |d: &Option<DriveSpec>, what: &'static str| match d {
+        Some(d) if !matches!(d.noise.source, Source::Fbm(_)) => Err(GpuUnsupported::Drive(what)),
+        _ => Ok(()),
+    };
+    match &spec.source {
+        Source::Product(_) => Err(GpuUnsupported::Product),
+        Source::Gabor {
+            orientation_field,
+            frequency_field,
+            ..
+        } => {
+            drive(orientation_field, "orientation_field")?;
+            drive(frequency_field, "frequency_field")
+        }
+        _ => Ok(()),
+    }
+}
+
 fn drive_fbm(
     d: &Option<DriveSpec>,
     what: &'static str,
@@ -418,5 +439,36 @@ impl NoiseGpu {
             Source::Product(_) => return Err(GpuUnsupported::Product),
         }
         Ok(u)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The plain check says yes exactly where a uniform can be built.
+    #[test]
+    fn wgsl_form_agrees_with_building_the_uniform() {
+        let specs = [
+            r#"{"type":"perlin","frequency":0.05,"octaves":3,"seed":1}"#,
+            r#"{"type":"worley","frequency":0.05,"seed":1}"#,
+            r#"{"type":"gabor","frequency":0.1,"bandwidth":0.04,"seed":2,"orientation_field":{"noise":{"type":"perlin","frequency":0.008,"seed":9},"amount":1.5}}"#,
+            r#"{"type":"gabor","frequency":0.1,"bandwidth":0.04,"seed":2,"frequency_field":{"noise":{"type":"worley","frequency":0.01,"seed":9},"amount":0.5}}"#,
+            r#"{"type":"product","inputs":[{"type":"perlin","frequency":0.05,"seed":1},{"type":"value","frequency":0.05,"seed":2}]}"#,
+        ];
+        let mut refused = 0;
+        for text in specs {
+            let spec = NoiseSpec::from_json(text).expect("valid spec");
+            let plain = wgsl_form(&spec).map_err(|e| e.to_string());
+            let built = NoiseGpu::from_spec(&spec, 64)
+                .map(|_| ())
+                .map_err(|e| e.to_string());
+            assert_eq!(plain, built, "{text}");
+            refused += usize::from(plain.is_err());
+        }
+        assert_eq!(
+            refused, 2,
+            "the worley drive and the product have no WGSL form"
+        );
     }
 }
