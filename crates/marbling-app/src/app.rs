@@ -244,6 +244,7 @@ impl MarblingApp {
         if self.editor.noise_shown.as_ref() != Some(&now) {
             self.editor.noise_shown = Some(now);
             self.editor.noise_analysis = None;
+            self.editor.noise_layer = None;
             self.refresh();
         }
     }

@@ -61,6 +61,16 @@ impl MarblingApp {
         crate::noise_settings::zoom_octave_factor(feature_frequency, zoom)
     }
 
+    /// The noise layer of the current settings, made once per change of them
+    /// (`follow_noise` forgets it), not once a frame.
+    fn noise_layer(&mut self) -> Result<NoiseLayer, String> {
+        let factor = self.noise_zoom_factor();
+        self.editor
+            .noise_layer
+            .get_or_insert_with(|| self.editor.noise.layer(factor))
+            .clone()
+    }
+
     /// The noise panel.
     pub(crate) fn noise_section(&mut self, ui: &mut egui::Ui) {
         ui.label(RichText::new("Noise").strong());
@@ -90,13 +100,13 @@ impl MarblingApp {
         }
         self.noise_readout(ui);
         ui.separator();
-        self.noise_uses(ui, factor);
+        self.noise_uses(ui);
     }
 
     /// Min/max/mean, the histogram and the spectrum.
     fn noise_readout(&mut self, ui: &mut egui::Ui) {
         if self.editor.noise_analysis.is_none() {
-            let layer = self.editor.noise.layer(self.noise_zoom_factor());
+            let layer = self.noise_layer();
             self.editor.noise_analysis = Some(layer.ok().and_then(|l| NoiseAnalysis::of(&l)));
         }
         let Some(Some(a)) = &self.editor.noise_analysis else {
@@ -138,7 +148,7 @@ impl MarblingApp {
     }
 
     /// Export, link, and putting the noise on the design.
-    fn noise_uses(&mut self, ui: &mut egui::Ui, factor: f64) {
+    fn noise_uses(&mut self, ui: &mut egui::Ui) {
         ui.horizontal_wrapped(|ui| {
             let link = ui
                 .button("Copy noise link")
@@ -155,7 +165,7 @@ impl MarblingApp {
             }
         });
         ui.label(RichText::new("Use on the design").strong());
-        let layer = match self.editor.noise.layer(factor) {
+        let layer = match self.noise_layer() {
             Ok(l) => l,
             Err(e) => {
                 ui.label(RichText::new(e).color(egui::Color32::from_rgb(255, 110, 110)));

@@ -71,6 +71,9 @@ pub struct Editor {
     pub noise_shown: Option<(NoiseSettings, f64)>,
     /// Statistics of the shown noise (`Some(None)`: none can be computed).
     pub noise_analysis: Option<Option<NoiseAnalysis>>,
+    /// The noise layer of the shown settings, made once per change of them (parsing a
+    /// spec builds its CPU field); `None` until asked for.
+    pub noise_layer: Option<Result<marbling_core::NoiseLayer, String>>,
 }
 
 impl Editor {
@@ -98,6 +101,7 @@ impl Editor {
             noise: NoiseSettings::default(),
             noise_shown: None,
             noise_analysis: None,
+            noise_layer: None,
         }
     }
 }
