@@ -4,13 +4,12 @@
 //! itself (drawn by the GPU renderer as a design with a noise background and no ops).
 
 use crate::app::MarblingApp;
-use crate::noise_settings::{
-    CURL_COMPONENTS, GABOR_KINDS, NoiseKind, NoiseSettings, WORLEY_FEATURES, WORLEY_METRICS,
-};
+use crate::noise_settings::{NoiseKind, NoiseSettings, SLIDER_FLOOR, frequency_range};
 use egui::{RichText, Slider};
 use egui_plot::{Bar, BarChart, Line, Plot};
 use marbling_core::{GrainKind, NoiseBackground, NoiseLayer, Overlay, Palette};
 use marbling_noise::analysis::{Stats, histogram, radial_spectrum, stats};
+use marbling_noise::ranges;
 
 /// Side of the sample grid the statistics and spectrum are computed on, design pixels.
 pub const ANALYSIS_SIDE: usize = 128;
@@ -261,30 +260,34 @@ impl MarblingApp {
 
 /// The sliders of the selected noise.
 fn noise_parameters(ui: &mut egui::Ui, s: &mut NoiseSettings) {
-    let choice = |ui: &mut egui::Ui, label: &str, options: &[&str], i: &mut usize| {
+    // Every range and name comes from the noise crate (`marbling_noise::ranges`).
+    fn choice<T>(ui: &mut egui::Ui, label: &str, options: &[(&str, T)], i: &mut usize) {
         ui.horizontal_wrapped(|ui| {
             ui.label(label);
-            for (k, name) in options.iter().enumerate() {
+            for (k, (name, _)) in options.iter().enumerate() {
                 ui.selectable_value(i, k, *name);
             }
         });
-    };
-    let frequency = |ui: &mut egui::Ui, f: &mut f64, max: f64| {
+    }
+    let slider = |r: ranges::Range| r.slider(SLIDER_FLOOR);
+    let whole = |r: ranges::Range| (r.lo as u32)..=(r.hi as u32);
+    let kind = s.kind;
+    let frequency = |ui: &mut egui::Ui, f: &mut f64| {
         ui.add(
-            Slider::new(f, 0.001..=max)
+            Slider::new(f, slider(frequency_range(kind)))
                 .text("frequency (cycles/px)")
                 .logarithmic(true),
         );
     };
     let fbm = |ui: &mut egui::Ui, s: &mut NoiseSettings| {
-        ui.add(Slider::new(&mut s.octaves, 1..=12).text("octaves"));
-        ui.add(Slider::new(&mut s.lacunarity, 1.0..=8.0).text("lacunarity"));
-        ui.add(Slider::new(&mut s.persistence, 0.0..=1.0).text("persistence"));
+        ui.add(Slider::new(&mut s.octaves, whole(ranges::OCTAVES)).text("octaves"));
+        ui.add(Slider::new(&mut s.lacunarity, slider(ranges::LACUNARITY)).text("lacunarity"));
+        ui.add(Slider::new(&mut s.persistence, slider(ranges::PERSISTENCE)).text("persistence"));
     };
     match s.kind {
         NoiseKind::Gabor => {
-            choice(ui, "kind", &GABOR_KINDS, &mut s.gabor_kind);
-            frequency(ui, &mut s.frequency, 0.5);
+            choice(ui, "kind", &ranges::GABOR_KINDS, &mut s.gabor_kind);
+            frequency(ui, &mut s.frequency);
             if s.gabor_kind != 1 {
                 ui.add(
                     Slider::new(&mut s.orientation, 0.0..=std::f64::consts::PI)
@@ -292,36 +295,39 @@ fn noise_parameters(ui: &mut egui::Ui, s: &mut NoiseSettings) {
                 );
             }
             ui.add(
-                Slider::new(&mut s.bandwidth, 0.002..=1.0)
+                Slider::new(&mut s.bandwidth, slider(ranges::BANDWIDTH))
                     .text("bandwidth a (1/px)")
                     .logarithmic(true),
             );
-            ui.add(Slider::new(&mut s.impulses, 1..=256).text("impulses"));
+            ui.add(Slider::new(&mut s.impulses, whole(ranges::IMPULSES)).text("impulses"));
         }
         NoiseKind::Perlin | NoiseKind::Value => {
-            frequency(ui, &mut s.frequency, 1.0);
+            frequency(ui, &mut s.frequency);
             fbm(ui, s);
         }
         NoiseKind::Curl => {
-            frequency(ui, &mut s.frequency, 1.0);
+            frequency(ui, &mut s.frequency);
             fbm(ui, s);
-            choice(ui, "component", &CURL_COMPONENTS, &mut s.component);
+            choice(ui, "component", &ranges::CURL_COMPONENTS, &mut s.component);
         }
         NoiseKind::Worley => {
-            frequency(ui, &mut s.frequency, 1.0);
-            choice(ui, "feature", &WORLEY_FEATURES, &mut s.feature);
-            choice(ui, "metric", &WORLEY_METRICS, &mut s.metric);
+            frequency(ui, &mut s.frequency);
+            choice(ui, "feature", &ranges::WORLEY_FEATURES, &mut s.feature);
+            choice(ui, "metric", &ranges::WORLEY_METRICS, &mut s.metric);
         }
         NoiseKind::White => {}
         NoiseKind::Paper | NoiseKind::Canvas => {
             ui.add(
-                Slider::new(&mut s.fiber_length, 1.0..=256.0)
+                Slider::new(&mut s.fiber_length, slider(ranges::FIBER_LENGTH))
                     .text("fiber length (px)")
                     .logarithmic(true),
             );
-            ui.add(Slider::new(&mut s.fiber_width, 1.0..=32.0).text("fiber width (px)"));
             ui.add(
-                Slider::new(&mut s.fiber_density, 0.01..=4.0)
+                Slider::new(&mut s.fiber_width, slider(ranges::FIBER_WIDTH))
+                    .text("fiber width (px)"),
+            );
+            ui.add(
+                Slider::new(&mut s.fiber_density, slider(ranges::FIBER_DENSITY))
                     .text("density (/px²)")
                     .logarithmic(true),
             );

@@ -3,6 +3,7 @@
 //! rule.
 
 use marbling_core::{Design, NoiseBackground, NoiseLayer, Palette, Rgb8};
+use marbling_noise::ranges;
 use serde_json::{Value, json};
 
 /// The noises offered, in panel order.
@@ -59,14 +60,10 @@ impl NoiseKind {
     }
 }
 
-/// Gabor variants (the spec's `kind`).
-pub const GABOR_KINDS: [&str; 3] = ["anisotropic", "isotropic", "random-phase"];
-/// Worley features.
-pub const WORLEY_FEATURES: [&str; 3] = ["f1", "f2", "f2-f1"];
-/// Worley metrics.
-pub const WORLEY_METRICS: [&str; 3] = ["euclidean", "manhattan", "chebyshev"];
-/// Curl components.
-pub const CURL_COMPONENTS: [&str; 3] = ["magnitude", "x", "y"];
+/// The spec's name of choice `i` of `options` (a table of `marbling_noise::ranges`).
+pub fn name_of<T>(options: &[(&'static str, T)], i: usize) -> &'static str {
+    options[i.min(options.len() - 1)].0
+}
 
 /// Everything the noise panel's sliders set. Lengths are design pixels, frequencies
 /// cycles per design pixel, angles radians (x right, y down).
@@ -74,7 +71,7 @@ pub const CURL_COMPONENTS: [&str; 3] = ["magnitude", "x", "y"];
 pub struct NoiseSettings {
     /// Which noise.
     pub kind: NoiseKind,
-    /// Index into [`GABOR_KINDS`].
+    /// Index into [`marbling_noise::ranges::GABOR_KINDS`].
     pub gabor_kind: usize,
     /// Base frequency F₀ (Gabor, lattice noises, Worley cells, curl).
     pub frequency: f64,
@@ -90,11 +87,11 @@ pub struct NoiseSettings {
     pub lacunarity: f64,
     /// fBm amplitude ratio.
     pub persistence: f64,
-    /// Index into [`WORLEY_FEATURES`].
+    /// Index into [`marbling_noise::ranges::WORLEY_FEATURES`].
     pub feature: usize,
-    /// Index into [`WORLEY_METRICS`].
+    /// Index into [`marbling_noise::ranges::WORLEY_METRICS`].
     pub metric: usize,
-    /// Index into [`CURL_COMPONENTS`].
+    /// Index into [`marbling_noise::ranges::CURL_COMPONENTS`].
     pub component: usize,
     /// Fiber length.
     pub fiber_length: f64,
@@ -143,24 +140,32 @@ impl Default for NoiseSettings {
 }
 
 /// Largest frequency each noise accepts (its spec's range), cycles per pixel.
-fn max_frequency(kind: NoiseKind) -> f64 {
-    if kind == NoiseKind::Gabor { 0.5 } else { 1.0 }
+/// The accepted frequencies of `kind`.
+pub fn frequency_range(kind: NoiseKind) -> ranges::Range {
+    if kind == NoiseKind::Gabor {
+        ranges::GABOR_FREQUENCY
+    } else {
+        ranges::FREQUENCY
+    }
 }
+
+/// The smallest value the sliders give a parameter whose range is open below.
+pub const SLIDER_FLOOR: f64 = 0.001;
 
 impl NoiseSettings {
     /// The spec, with every frequency multiplied (and every length divided) by `zoom`
     /// — the factor from [`zoom_octave_factor`], 1 when not zoom-independent.
     pub fn spec_json(&self, zoom: f64) -> Value {
-        let f = (self.frequency * zoom).min(max_frequency(self.kind));
+        let f = (self.frequency * zoom).min(frequency_range(self.kind).hi);
         let k = f / self.frequency;
         let seed = self.seed;
         match self.kind {
             NoiseKind::Gabor => json!({
                 "type": "gabor",
-                "kind": GABOR_KINDS[self.gabor_kind.min(2)],
+                "kind": name_of(&ranges::GABOR_KINDS, self.gabor_kind),
                 "frequency": f,
                 "orientation": self.orientation,
-                "bandwidth": (self.bandwidth * k).clamp(0.002, 1.0),
+                "bandwidth": ranges::BANDWIDTH.clamp(self.bandwidth * k, SLIDER_FLOOR),
                 "impulses": self.impulses,
                 "seed": seed,
             }),
@@ -178,23 +183,23 @@ impl NoiseSettings {
                 "octaves": self.octaves,
                 "lacunarity": self.lacunarity,
                 "persistence": self.persistence,
-                "component": CURL_COMPONENTS[self.component.min(2)],
+                "component": name_of(&ranges::CURL_COMPONENTS, self.component),
                 "seed": seed,
             }),
             NoiseKind::Worley => json!({
                 "type": "worley",
                 "frequency": f,
-                "feature": WORLEY_FEATURES[self.feature.min(2)],
-                "metric": WORLEY_METRICS[self.metric.min(2)],
+                "feature": name_of(&ranges::WORLEY_FEATURES, self.feature),
+                "metric": name_of(&ranges::WORLEY_METRICS, self.metric),
                 "seed": seed,
             }),
             NoiseKind::White => json!({ "type": "white", "seed": seed }),
             NoiseKind::Paper | NoiseKind::Canvas => {
                 let mut spec = json!({
                     "type": self.kind.type_name(),
-                    "length": (self.fiber_length / k).clamp(1.0, 256.0),
-                    "width": (self.fiber_width / k).clamp(1.0, 32.0),
-                    "density": (self.fiber_density * k * k).clamp(1e-4, 4.0),
+                    "length": ranges::FIBER_LENGTH.clamp(self.fiber_length / k, SLIDER_FLOOR),
+                    "width": ranges::FIBER_WIDTH.clamp(self.fiber_width / k, SLIDER_FLOOR),
+                    "density": ranges::FIBER_DENSITY.clamp(self.fiber_density * k * k, 1e-4),
                     "seed": seed,
                 });
                 if self.kind == NoiseKind::Canvas {
@@ -252,6 +257,44 @@ pub fn zoom_octave_factor(frequency: f64, zoom: f64) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The sliders' ends are the spec's ranges: a spec made at either end of every
+    /// slider is accepted, for every kind and choice.
+    #[test]
+    fn every_slider_end_is_a_valid_spec() {
+        let end = |r: ranges::Range, high: bool| {
+            let s = r.slider(SLIDER_FLOOR);
+            if high { *s.end() } else { *s.start() }
+        };
+        for kind in NoiseKind::ALL {
+            for high in [false, true] {
+                for choice in 0..3 {
+                    let s = NoiseSettings {
+                        kind,
+                        gabor_kind: choice,
+                        feature: choice,
+                        metric: choice,
+                        component: choice,
+                        frequency: end(frequency_range(kind), high),
+                        bandwidth: end(ranges::BANDWIDTH, high),
+                        impulses: end(ranges::IMPULSES, high) as u32,
+                        octaves: end(ranges::OCTAVES, high) as u32,
+                        lacunarity: end(ranges::LACUNARITY, high),
+                        persistence: end(ranges::PERSISTENCE, high),
+                        fiber_length: end(ranges::FIBER_LENGTH, high),
+                        fiber_width: end(ranges::FIBER_WIDTH, high),
+                        fiber_density: end(ranges::FIBER_DENSITY, high),
+                        ..NoiseSettings::default()
+                    };
+                    let spec = s.spec_json(1.0);
+                    assert!(
+                        marbling_noise::NoiseSpec::from_value(&spec).is_ok(),
+                        "{spec}"
+                    );
+                }
+            }
+        }
+    }
 
     #[test]
     fn every_kind_makes_a_valid_spec_and_design() {

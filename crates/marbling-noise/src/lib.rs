@@ -22,6 +22,7 @@ mod gabor;
 pub mod hash;
 mod perlin;
 mod ramp;
+pub mod ranges;
 mod render;
 mod spec;
 mod transfer;

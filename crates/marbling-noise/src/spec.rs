@@ -6,10 +6,11 @@
 //! `blend`. Lengths are in output pixels, frequencies in cycles per output pixel,
 //! angles in radians from +x towards +y (x right, y down).
 
-use crate::fbm::{Basis, FbmParams, MAX_OCTAVES};
+use crate::fbm::{Basis, FbmParams};
 use crate::fibers::{FiberLayout, FiberParams, Impurities};
 use crate::gabor::GaborKind;
 use crate::ramp::{ColorRamp, PALETTES, Rgb, parse_hex};
+use crate::ranges;
 use crate::transfer::Threshold;
 use crate::{CurlComponent, Metric, WorleyFeature};
 use serde_json::{Map, Value};
@@ -21,7 +22,7 @@ pub const NOISE_TYPES: &[&str] = &[
 ];
 
 /// Most impulses per kernel a Gabor spec may ask for.
-pub const MAX_IMPULSES: f64 = 256.0;
+pub const MAX_IMPULSES: f64 = ranges::IMPULSES.hi;
 
 /// One problem at one place of a spec, e.g. `inputs[1].frequency: must be > 0, got -3`.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -289,6 +290,16 @@ enum Rule {
     Any,
 }
 
+impl From<ranges::Range> for Rule {
+    fn from(r: ranges::Range) -> Self {
+        if r.open_below {
+            Rule::Above(r.lo, r.hi)
+        } else {
+            Rule::Within(r.lo, r.hi)
+        }
+    }
+}
+
 struct Reader {
     errors: Vec<FieldError>,
 }
@@ -499,19 +510,25 @@ impl Reader {
     }
 
     fn fbm(&mut self, path: &str, obj: &Map<String, Value>, basis: Basis) -> Option<FbmParams> {
-        let frequency = self.number(path, obj, "frequency", None, Rule::Above(0.0, 1.0));
-        let octaves = self.number(
-            path,
-            obj,
-            "octaves",
-            Some(1.0),
-            Rule::Within(1.0, f64::from(MAX_OCTAVES)),
-        );
+        let frequency = self.number(path, obj, "frequency", None, ranges::FREQUENCY.into());
+        let octaves = self.number(path, obj, "octaves", Some(1.0), ranges::OCTAVES.into());
         if octaves.is_some_and(|o| o.fract() != 0.0) {
             self.push(join(path, "octaves"), "must be a whole number");
         }
-        let lacunarity = self.number(path, obj, "lacunarity", Some(2.0), Rule::Within(1.0, 8.0));
-        let persistence = self.number(path, obj, "persistence", Some(0.5), Rule::Within(0.0, 1.0));
+        let lacunarity = self.number(
+            path,
+            obj,
+            "lacunarity",
+            Some(2.0),
+            ranges::LACUNARITY.into(),
+        );
+        let persistence = self.number(
+            path,
+            obj,
+            "persistence",
+            Some(0.5),
+            ranges::PERSISTENCE.into(),
+        );
         let seed = self.seed(path, obj);
         Some(FbmParams {
             basis,
@@ -548,23 +565,15 @@ impl Reader {
                     obj,
                     "kind",
                     GaborKind::Anisotropic,
-                    &[
-                        ("anisotropic", GaborKind::Anisotropic),
-                        ("isotropic", GaborKind::Isotropic),
-                        ("random-phase", GaborKind::RandomPhase),
-                    ],
+                    &ranges::GABOR_KINDS,
                 );
-                let frequency = self.number(path, obj, "frequency", None, Rule::Above(0.0, 0.5));
+                let frequency =
+                    self.number(path, obj, "frequency", None, ranges::GABOR_FREQUENCY.into());
                 let orientation = self.number(path, obj, "orientation", Some(0.0), Rule::Any);
                 // Radius √(−ln 0.05/π)/a ≤ 512 px.
-                let bandwidth = self.number(path, obj, "bandwidth", None, Rule::Within(0.002, 1.0));
-                let impulses = self.number(
-                    path,
-                    obj,
-                    "impulses",
-                    Some(64.0),
-                    Rule::Within(1.0, MAX_IMPULSES),
-                );
+                let bandwidth = self.number(path, obj, "bandwidth", None, ranges::BANDWIDTH.into());
+                let impulses =
+                    self.number(path, obj, "impulses", Some(64.0), ranges::IMPULSES.into());
                 let seed = self.seed(path, obj);
                 let orientation_field = obj
                     .get("orientation_field")
@@ -592,28 +601,20 @@ impl Reader {
             "perlin" => self.fbm(path, obj, Basis::Perlin).map(Source::Fbm),
             "value" => self.fbm(path, obj, Basis::Value).map(Source::Fbm),
             "worley" => {
-                let frequency = self.number(path, obj, "frequency", None, Rule::Above(0.0, 1.0));
+                let frequency = self.number(path, obj, "frequency", None, ranges::FREQUENCY.into());
                 let feature = self.choice(
                     path,
                     obj,
                     "feature",
                     WorleyFeature::F1,
-                    &[
-                        ("f1", WorleyFeature::F1),
-                        ("f2", WorleyFeature::F2),
-                        ("f2-f1", WorleyFeature::F2MinusF1),
-                    ],
+                    &ranges::WORLEY_FEATURES,
                 );
                 let metric = self.choice(
                     path,
                     obj,
                     "metric",
                     Metric::Euclidean,
-                    &[
-                        ("euclidean", Metric::Euclidean),
-                        ("manhattan", Metric::Manhattan),
-                        ("chebyshev", Metric::Chebyshev),
-                    ],
+                    &ranges::WORLEY_METRICS,
                 );
                 let seed = self.seed(path, obj);
                 Some(Source::Worley {
@@ -633,11 +634,7 @@ impl Reader {
                     obj,
                     "component",
                     CurlComponent::Magnitude,
-                    &[
-                        ("x", CurlComponent::X),
-                        ("y", CurlComponent::Y),
-                        ("magnitude", CurlComponent::Magnitude),
-                    ],
+                    &ranges::CURL_COMPONENTS,
                 );
                 Some(Source::Curl {
                     potential: potential?,
@@ -677,9 +674,15 @@ impl Reader {
     }
 
     fn fibers(&mut self, path: &str, obj: &Map<String, Value>, canvas: bool) -> Option<Source> {
-        let length = self.number(path, obj, "length", Some(20.0), Rule::Within(1.0, 256.0));
-        let width = self.number(path, obj, "width", Some(1.5), Rule::Within(1.0, 32.0));
-        let density = self.number(path, obj, "density", Some(0.3), Rule::Above(0.0, 4.0));
+        let length = self.number(path, obj, "length", Some(20.0), ranges::FIBER_LENGTH.into());
+        let width = self.number(path, obj, "width", Some(1.5), ranges::FIBER_WIDTH.into());
+        let density = self.number(
+            path,
+            obj,
+            "density",
+            Some(0.3),
+            ranges::FIBER_DENSITY.into(),
+        );
         let seed = self.seed(path, obj);
         let layout = if canvas {
             let p = join(path, "weights");
