@@ -25,6 +25,7 @@ mod ramp;
 pub mod ranges;
 mod render;
 mod spec;
+mod spec_writer;
 mod transfer;
 mod value;
 pub mod wgsl;
