@@ -223,6 +223,17 @@ test('a tablet and a landscape phone: bottom sheet and tool rail', { timeout: 60
   await tablet.page.screenshot({ path: path.join(SHOTS, 'tablet-820x1180.png'), timeout: READY_MS });
   await tablet.context.close();
 
+  // A first visit on a phone lands on the gallery, full screen, with 44-px controls.
+  const first = await browser.newContext({ viewport: PHONE, serviceWorkers: 'block', ...touchDevice(1) });
+  const landing = await first.newPage();
+  await landing.goto(site.url);
+  await landing.waitForFunction(() => document.body.dataset.landing === '1', null, { timeout: READY_MS });
+  await landing.waitForFunction(() => (document.body.dataset.controls ?? '').includes('gallery-close='), null, { timeout: READY_MS });
+  const back = (await controls(landing))['gallery-close'];
+  assert.ok(back.h >= 44, `"Back to the editor" is ${back.h} CSS px high`);
+  assert.equal((await controls(landing))['sheet-tools'], undefined, 'the bottom sheet is hidden under the gallery');
+  await first.close();
+
   const phone = await openPage(browser, site, light, PHONE_LANDSCAPE, touchDevice(1));
   const { page } = phone;
   assert.equal(await attr(page, 'data-layout'), 'landscape');

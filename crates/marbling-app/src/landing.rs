@@ -76,6 +76,9 @@ impl MarblingApp {
         let mut blank = false;
         let mut close = false;
         let mut drawn_controls = Vec::new();
+        if self.panels.layout.touch() {
+            crate::layout::touch_spacing(ui);
+        }
         egui::ScrollArea::vertical().show(ui, |ui| {
             ui.add_space(8.0);
             ui.horizontal(|ui| {
