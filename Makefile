@@ -75,7 +75,7 @@ unit: setup-rust setup-gpu
 	WGPU_BACKEND=vulkan $(CARGO) test --workspace
 
 wasm-check: setup-rust
-	$(CARGO) clippy --target wasm32-unknown-unknown -p marbling-core -p marbling-gpu -p marbling-noise -p marbling-vector -p marbling-app -- -D warnings
+	$(CARGO) clippy --target wasm32-unknown-unknown -p marbling-json -p marbling-core -p marbling-gpu -p marbling-noise -p marbling-vector -p marbling-app -- -D warnings
 
 test: fmt-check clippy wasm-check unit browser-test
 

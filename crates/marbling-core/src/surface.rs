@@ -27,7 +27,9 @@
 
 use crate::Rgb8;
 use marbling_noise::wgsl::{GpuUnsupported, wgsl_form};
-use marbling_noise::{ColorRamp, Field, NoiseSpec, PALETTES, Source, Transfer, noise_field};
+use marbling_noise::{
+    ColorRamp, Field, FieldError, NoiseSpec, PALETTES, Source, Transfer, noise_field,
+};
 use serde_json::Value;
 use std::fmt;
 use std::sync::Arc;
@@ -36,15 +38,6 @@ use std::sync::Arc;
 pub const MAX_PALETTE_STOPS: usize = 8;
 /// Names accepted as overlay `type`.
 pub const OVERLAY_TYPES: &[&str] = &["paper-grain", "pigment-grain"];
-
-/// A noise spec problem at a path relative to the spec (`frequency`, `inputs[1].kind`).
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct SpecProblem {
-    /// Path inside the spec; empty for the spec itself.
-    pub path: String,
-    /// What is wrong.
-    pub message: String,
-}
 
 /// A noise spec usable inside a design: the JSON as written (kept so the design writes
 /// it back unchanged) and its evaluator.
@@ -71,23 +64,17 @@ impl PartialEq for NoiseLayer {
 impl NoiseLayer {
     /// Parses a noise spec (the `marbling-noise` JSON format) for use in a design; every
     /// problem is returned with its path inside the spec.
-    pub fn from_value(json: &Value) -> Result<Self, Vec<SpecProblem>> {
+    pub fn from_value(json: &Value) -> Result<Self, Vec<FieldError>> {
         let spec = NoiseSpec::from_value(json).map_err(|e| match e {
-            marbling_noise::SpecError::Invalid(list) => list
-                .into_iter()
-                .map(|f| SpecProblem {
-                    path: f.path,
-                    message: f.message,
-                })
-                .collect(),
-            other => vec![SpecProblem {
+            marbling_noise::SpecError::Invalid(list) => list,
+            other => vec![FieldError {
                 path: String::new(),
                 message: other.to_string(),
             }],
         })?;
         let mut problems = Vec::new();
         let mut no = |path: &str, message: &str| {
-            problems.push(SpecProblem {
+            problems.push(FieldError {
                 path: path.to_owned(),
                 message: message.to_owned(),
             })
@@ -141,13 +128,7 @@ impl NoiseLayer {
         let v: Value = serde_json::from_str(text).map_err(|e| e.to_string())?;
         Self::from_value(&v).map_err(|list| {
             list.iter()
-                .map(|p| {
-                    if p.path.is_empty() {
-                        p.message.clone()
-                    } else {
-                        format!("{}: {}", p.path, p.message)
-                    }
-                })
+                .map(ToString::to_string)
                 .collect::<Vec<_>>()
                 .join("\n")
         })

@@ -6,21 +6,7 @@ use crate::{Design, DropSet, Op, Radii};
 use kurbo::{Point, Vec2};
 use std::fmt;
 
-/// One broken rule at one place of a design document, e.g.
-/// `ops[12].radius: must be > 0, got -3`.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct FieldError {
-    /// JSON path of the offending value (`ops[3].center[1]`, `width`, …).
-    pub path: String,
-    /// What is wrong, with the value found.
-    pub message: String,
-}
-
-impl fmt::Display for FieldError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{}: {}", self.path, self.message)
-    }
-}
+pub use marbling_json::FieldError;
 
 /// All the rules a design breaks; displayed one per line.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
@@ -38,13 +24,12 @@ impl fmt::Display for ValidationErrors {
     }
 }
 
-/// Collects field errors while checking values.
-#[derive(Default)]
-pub(crate) struct Checker {
-    pub(crate) errors: Vec<FieldError>,
+/// Checks values against the schema's rules, adding each broken rule to `errors`.
+pub(crate) struct Checker<'a> {
+    pub(crate) errors: &'a mut Vec<FieldError>,
 }
 
-impl Checker {
+impl Checker<'_> {
     pub(crate) fn push(&mut self, path: impl Into<String>, message: impl Into<String>) {
         self.errors.push(FieldError {
             path: path.into(),
@@ -322,21 +307,16 @@ impl Checker {
             }
         }
     }
-
-    pub(crate) fn finish(self) -> Result<(), ValidationErrors> {
-        if self.errors.is_empty() {
-            Ok(())
-        } else {
-            Err(ValidationErrors(self.errors))
-        }
-    }
 }
 
 impl Design {
     /// Checks every value rule of the schema and reports all broken ones with their paths.
     /// Use it on designs built in code; [`crate::Design::from_json`] applies it already.
     pub fn validate(&self) -> Result<(), ValidationErrors> {
-        let mut c = Checker::default();
+        let mut errors = Vec::new();
+        let mut c = Checker {
+            errors: &mut errors,
+        };
         c.side("width", self.width);
         c.side("height", self.height);
         c.op_count(self.counted_ops());
@@ -360,6 +340,10 @@ impl Design {
             c.strength(&format!("overlays[{i}].strength"), o.strength);
         }
         c.overlay_kinds(self.overlays.iter().map(|o| o.kind));
-        c.finish()
+        if errors.is_empty() {
+            Ok(())
+        } else {
+            Err(ValidationErrors(errors))
+        }
     }
 }

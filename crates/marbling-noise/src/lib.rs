@@ -25,6 +25,7 @@ mod ramp;
 pub mod ranges;
 mod render;
 mod spec;
+mod spec_reader;
 mod spec_writer;
 mod transfer;
 mod value;

@@ -95,6 +95,26 @@ pub const OP_TYPES: [&str; 14] = [
     "drops", "sprays", "jiggle", "stylus",
 ];
 
+/// Field names of each op type, `type` first, in the order they are written: the
+/// schema's one list (the reader refuses any other field; a test holds the writer to it).
+pub(crate) fn op_fields(kind: &str) -> Option<&'static [&'static str]> {
+    Some(match kind {
+        "drop" | "spray" => &["type", "center", "radius", "color"],
+        "tine" => &["type", "origin", "direction", "alpha", "lambda"],
+        "rake" => &["type", "origin", "direction", "spacing", "alpha", "lambda"],
+        "wavy" => &["type", "angle", "amplitude", "wavelength", "phase"],
+        "circular" => &["type", "center", "radius", "alpha", "lambda"],
+        "vortex" => &["type", "center", "alpha", "lambda"],
+        "shift" => &["type", "offset"],
+        "turn" => &["type", "center", "angle"],
+        "comb" => &["type", "origin", "direction", "tines", "alpha", "lambda"],
+        "drops" | "sprays" => &["type", "centers", "radius", "radii", "colors"],
+        "jiggle" => &["type", "angle", "wavelength", "along", "across", "phase"],
+        "stylus" => &["type", "path", "wake", "tips"],
+        _ => return None,
+    })
+}
+
 impl Op {
     /// The `"type"` tag of the op in design documents.
     pub fn type_name(&self) -> &'static str {

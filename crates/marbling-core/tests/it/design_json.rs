@@ -293,9 +293,10 @@ fn missing_fields_and_wrong_types_are_named() {
         &variant("\"origin\":[0,300]", "\"origin\":[0,null]"),
         "ops[2].origin[1]: must be a number, got null",
     );
+    // A problem with the document itself has no path to name.
     assert_eq!(
         errors("[1, 2]"),
-        [": must be an object, got an array".to_owned()]
+        ["must be an object, got an array".to_owned()]
     );
 }
 
