@@ -204,11 +204,9 @@ impl MarblingApp {
         self.editor.key += 1;
         if self.editor.mode == Mode::Noise {
             let d = self.editor.history.design();
-            match self
-                .editor
-                .noise
-                .design([d.width, d.height], self.noise_zoom_factor())
-            {
+            let size = [d.width, d.height];
+            let noise = self.noise_layer();
+            match noise.and_then(|layer| self.editor.noise.design(size, layer)) {
                 Ok(noise) => self.editor.shown = crate::shown::Shown::all(Arc::new(noise)),
                 Err(e) => self.error(format!("noise: {e}")),
             }
@@ -240,9 +238,10 @@ impl MarblingApp {
         if self.editor.mode != Mode::Noise {
             return;
         }
-        let now = (self.editor.noise.clone(), self.noise_zoom_factor());
-        if self.editor.noise_shown.as_ref() != Some(&now) {
-            self.editor.noise_shown = Some(now);
+        let factor = self.noise_zoom_factor();
+        let shown = self.editor.noise_shown.as_ref();
+        if shown.map(|(s, f)| (s, *f)) != Some((&self.editor.noise, factor)) {
+            self.editor.noise_shown = Some((self.editor.noise.clone(), factor));
             self.editor.noise_analysis = None;
             self.editor.noise_layer = None;
             self.refresh();

@@ -4,12 +4,13 @@
 //! itself (drawn by the GPU renderer as a design with a noise background and no ops).
 
 use crate::app::MarblingApp;
-use crate::noise_settings::{NoiseKind, NoiseSettings, SLIDER_FLOOR, frequency_range};
 use egui::{RichText, Slider};
 use egui_plot::{Bar, BarChart, Line, Plot};
 use marbling_core::{GrainKind, NoiseBackground, NoiseLayer, Overlay, Palette};
 use marbling_noise::analysis::{Stats, histogram, radial_spectrum, stats};
-use marbling_noise::ranges;
+use marbling_noise::ranges::{self, Range};
+use marbling_noise::{EDIT_FLOOR, FbmParams, FiberLayout, NOISE_TYPES, NoiseSpec, Source};
+use std::ops::RangeInclusive;
 
 /// Side of the sample grid the statistics and spectrum are computed on, design pixels.
 pub const ANALYSIS_SIDE: usize = 128;
@@ -48,21 +49,13 @@ impl NoiseAnalysis {
 impl MarblingApp {
     /// The zoom factor the zoom-independent rule applies now (1 when it is off).
     pub(crate) fn noise_zoom_factor(&self) -> f64 {
-        let s = &self.editor.noise;
-        if !s.zoom_independent || !s.kind.has_frequency() {
-            return 1.0;
-        }
-        let feature_frequency = match s.kind {
-            NoiseKind::Paper | NoiseKind::Canvas => 1.0 / s.fiber_length,
-            _ => s.frequency,
-        };
         let zoom = self.editor.view.map_or(1.0, |v| v.zoom);
-        crate::noise_settings::zoom_octave_factor(feature_frequency, zoom)
+        self.editor.noise.zoom_factor(zoom)
     }
 
     /// The noise layer of the current settings, made once per change of them
     /// (`follow_noise` forgets it), not once a frame.
-    fn noise_layer(&mut self) -> Result<NoiseLayer, String> {
+    pub(crate) fn noise_layer(&mut self) -> Result<NoiseLayer, String> {
         let factor = self.noise_zoom_factor();
         self.editor
             .noise_layer
@@ -74,14 +67,18 @@ impl MarblingApp {
     pub(crate) fn noise_section(&mut self, ui: &mut egui::Ui) {
         ui.label(RichText::new("Noise").strong());
         let s = &mut self.editor.noise;
+        let shown = s.spec.source.type_name();
         egui::ComboBox::from_label("noise")
-            .selected_text(s.kind.type_name())
+            .selected_text(shown)
             .show_ui(ui, |ui| {
-                for k in NoiseKind::ALL {
-                    ui.selectable_value(&mut s.kind, k, k.type_name());
+                // A product (cross-hatching) is read from JSON; it has no sliders here.
+                for &t in NOISE_TYPES.iter().filter(|t| **t != "product") {
+                    if ui.selectable_label(t == shown, t).clicked() && t != shown {
+                        s.set_type(t);
+                    }
                 }
             });
-        noise_parameters(ui, s);
+        noise_parameters(ui, &mut s.spec);
         egui::ComboBox::from_label("palette")
             .selected_text(s.palette_name())
             .show_ui(ui, |ui| {
@@ -258,84 +255,109 @@ impl MarblingApp {
     }
 }
 
-/// The sliders of the selected noise.
-fn noise_parameters(ui: &mut egui::Ui, s: &mut NoiseSettings) {
-    // Every range and name comes from the noise crate (`marbling_noise::ranges`).
-    fn choice<T>(ui: &mut egui::Ui, label: &str, options: &[(&str, T)], i: &mut usize) {
-        ui.horizontal_wrapped(|ui| {
-            ui.label(label);
-            for (k, (name, _)) in options.iter().enumerate() {
-                ui.selectable_value(i, k, *name);
-            }
-        });
-    }
-    let slider = |r: ranges::Range| r.slider(SLIDER_FLOOR);
-    let whole = |r: ranges::Range| (r.lo as u32)..=(r.hi as u32);
-    let kind = s.kind;
-    let frequency = |ui: &mut egui::Ui, f: &mut f64| {
-        ui.add(
-            Slider::new(f, slider(frequency_range(kind)))
-                .text("frequency (cycles/px)")
-                .logarithmic(true),
-        );
-    };
-    let fbm = |ui: &mut egui::Ui, s: &mut NoiseSettings| {
-        ui.add(Slider::new(&mut s.octaves, whole(ranges::OCTAVES)).text("octaves"));
-        ui.add(Slider::new(&mut s.lacunarity, slider(ranges::LACUNARITY)).text("lacunarity"));
-        ui.add(Slider::new(&mut s.persistence, slider(ranges::PERSISTENCE)).text("persistence"));
-    };
-    match s.kind {
-        NoiseKind::Gabor => {
-            choice(ui, "kind", &ranges::GABOR_KINDS, &mut s.gabor_kind);
-            frequency(ui, &mut s.frequency);
-            if s.gabor_kind != 1 {
+/// A slider's range for a spec range (open ranges start at [`EDIT_FLOOR`]).
+fn slider(r: Range) -> RangeInclusive<f32> {
+    let s = r.slider(EDIT_FLOOR);
+    (*s.start() as f32)..=(*s.end() as f32)
+}
+
+/// One button per name of a `marbling_noise::ranges` table.
+fn choice<T: PartialEq + Copy>(ui: &mut egui::Ui, label: &str, options: &[(&str, T)], v: &mut T) {
+    ui.horizontal_wrapped(|ui| {
+        ui.label(label);
+        for &(name, option) in options {
+            ui.selectable_value(v, option, name);
+        }
+    });
+}
+
+fn frequency(ui: &mut egui::Ui, f: &mut f32, range: Range) {
+    ui.add(
+        Slider::new(f, slider(range))
+            .text("frequency (cycles/px)")
+            .logarithmic(true),
+    );
+}
+
+fn fbm(ui: &mut egui::Ui, p: &mut FbmParams) {
+    frequency(ui, &mut p.frequency, ranges::FREQUENCY);
+    let octaves = (ranges::OCTAVES.lo as u32)..=(ranges::OCTAVES.hi as u32);
+    ui.add(Slider::new(&mut p.octaves, octaves).text("octaves"));
+    ui.add(Slider::new(&mut p.lacunarity, slider(ranges::LACUNARITY)).text("lacunarity"));
+    ui.add(Slider::new(&mut p.persistence, slider(ranges::PERSISTENCE)).text("persistence"));
+}
+
+/// The sliders of the spec's noise: each edits one field of the typed spec, within the
+/// range the spec parser accepts (`marbling_noise::ranges`).
+fn noise_parameters(ui: &mut egui::Ui, spec: &mut NoiseSpec) {
+    match &mut spec.source {
+        Source::Gabor {
+            kind,
+            frequency: f,
+            orientation,
+            bandwidth,
+            impulses,
+            ..
+        } => {
+            choice(ui, "kind", &ranges::GABOR_KINDS, kind);
+            frequency(ui, f, ranges::GABOR_FREQUENCY);
+            if *kind != marbling_noise::GaborKind::Isotropic {
                 ui.add(
-                    Slider::new(&mut s.orientation, 0.0..=std::f64::consts::PI)
-                        .text("orientation (rad)"),
+                    Slider::new(orientation, 0.0..=std::f32::consts::PI).text("orientation (rad)"),
                 );
             }
             ui.add(
-                Slider::new(&mut s.bandwidth, slider(ranges::BANDWIDTH))
+                Slider::new(bandwidth, slider(ranges::BANDWIDTH))
                     .text("bandwidth a (1/px)")
                     .logarithmic(true),
             );
-            ui.add(Slider::new(&mut s.impulses, whole(ranges::IMPULSES)).text("impulses"));
-        }
-        NoiseKind::Perlin | NoiseKind::Value => {
-            frequency(ui, &mut s.frequency);
-            fbm(ui, s);
-        }
-        NoiseKind::Curl => {
-            frequency(ui, &mut s.frequency);
-            fbm(ui, s);
-            choice(ui, "component", &ranges::CURL_COMPONENTS, &mut s.component);
-        }
-        NoiseKind::Worley => {
-            frequency(ui, &mut s.frequency);
-            choice(ui, "feature", &ranges::WORLEY_FEATURES, &mut s.feature);
-            choice(ui, "metric", &ranges::WORLEY_METRICS, &mut s.metric);
-        }
-        NoiseKind::White => {}
-        NoiseKind::Paper | NoiseKind::Canvas => {
             ui.add(
-                Slider::new(&mut s.fiber_length, slider(ranges::FIBER_LENGTH))
+                Slider::new(impulses, slider(ranges::IMPULSES))
+                    .text("impulses")
+                    .integer(),
+            );
+        }
+        Source::Fbm(p) => fbm(ui, p),
+        Source::Curl {
+            potential,
+            component,
+        } => {
+            fbm(ui, potential);
+            choice(ui, "component", &ranges::CURL_COMPONENTS, component);
+        }
+        Source::Worley {
+            frequency: f,
+            feature,
+            metric,
+            ..
+        } => {
+            frequency(ui, f, ranges::FREQUENCY);
+            choice(ui, "feature", &ranges::WORLEY_FEATURES, feature);
+            choice(ui, "metric", &ranges::WORLEY_METRICS, metric);
+        }
+        Source::White { .. } => {}
+        Source::Fibers(p) => {
+            ui.add(
+                Slider::new(&mut p.length, slider(ranges::FIBER_LENGTH))
                     .text("fiber length (px)")
                     .logarithmic(true),
             );
+            ui.add(Slider::new(&mut p.width, slider(ranges::FIBER_WIDTH)).text("fiber width (px)"));
             ui.add(
-                Slider::new(&mut s.fiber_width, slider(ranges::FIBER_WIDTH))
-                    .text("fiber width (px)"),
-            );
-            ui.add(
-                Slider::new(&mut s.fiber_density, slider(ranges::FIBER_DENSITY))
+                Slider::new(&mut p.density, slider(ranges::FIBER_DENSITY))
                     .text("density (/px²)")
                     .logarithmic(true),
             );
-            if s.kind == NoiseKind::Canvas {
-                ui.add(Slider::new(&mut s.weights[0], 0.0..=4.0).text("horizontal threads"));
-                ui.add(Slider::new(&mut s.weights[1], 0.0..=4.0).text("vertical threads"));
+            if let FiberLayout::Canvas { weights } = &mut p.layout {
+                ui.add(Slider::new(&mut weights[0], 0.0..=4.0).text("horizontal threads"));
+                ui.add(Slider::new(&mut weights[1], 0.0..=4.0).text("vertical threads"));
             }
         }
+        Source::Product(inputs) => {
+            ui.label(format!("product of {} noises (set in JSON)", inputs.len()));
+        }
     }
-    ui.add(egui::DragValue::new(&mut s.seed).prefix("seed "));
+    if let Some(seed) = spec.source.seed_mut() {
+        ui.add(egui::DragValue::new(seed).prefix("seed "));
+    }
 }

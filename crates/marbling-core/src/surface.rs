@@ -72,6 +72,18 @@ impl NoiseLayer {
                 message: other.to_string(),
             }],
         })?;
+        Self::checked(json.clone(), spec)
+    }
+
+    /// A spec made in code, for use in a design: written ([`NoiseSpec::to_value`]) and
+    /// read back, so every rule of the spec grammar is checked as for a document.
+    pub fn from_spec(spec: &NoiseSpec) -> Result<Self, Vec<FieldError>> {
+        Self::from_value(&spec.to_value())
+    }
+
+    /// `spec` (written as `json`) if a design may hold it: no tiling, palette, blend or
+    /// spline decay, and a WGSL form.
+    fn checked(json: Value, spec: NoiseSpec) -> Result<Self, Vec<FieldError>> {
         let mut problems = Vec::new();
         let mut no = |path: &str, message: &str| {
             problems.push(FieldError {
@@ -116,7 +128,7 @@ impl NoiseLayer {
             _ => None,
         };
         Ok(Self {
-            json: json.clone(),
+            json,
             spec,
             field,
             threshold,

@@ -25,6 +25,7 @@ mod ramp;
 pub mod ranges;
 mod render;
 mod spec;
+mod spec_edit;
 mod spec_reader;
 mod spec_writer;
 mod transfer;
@@ -53,6 +54,7 @@ pub use spec::{
     Blend, BlendBase, DecayValue, DriveSpec, FieldError, MAX_IMPULSES, NOISE_TYPES, NoiseSpec,
     Source, SpecError, Transfer,
 };
+pub use spec_edit::EDIT_FLOOR;
 pub use transfer::{
     SplineDecay, SplineDecayTable, Threshold, hsv_to_rgb, hsv_value_blend, rgb_to_hsv, smoothstep,
 };

@@ -44,7 +44,7 @@ pub enum SpecError {
 }
 
 /// How a Gabor parameter is driven by another field.
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct DriveSpec {
     /// The driving noise (no transfer, palette or blend).
     pub noise: Box<NoiseSpec>,
@@ -53,7 +53,7 @@ pub struct DriveSpec {
 }
 
 /// The noise a spec evaluates.
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, PartialEq)]
 pub enum Source {
     /// Sparse Gabor noise ([`crate::Gabor`]).
     Gabor {
@@ -142,7 +142,7 @@ pub enum BlendBase {
 }
 
 /// A parsed noise spec.
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct NoiseSpec {
     /// What is evaluated.
     pub source: Source,

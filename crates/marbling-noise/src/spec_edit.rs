@@ -1,0 +1,253 @@
+//! Changing a spec in code, as an editor does: the starting values of each noise type,
+//! the type's name, the seed, and the spec rescaled for a zoom (seed 004's
+//! zoom-independent rule multiplies every frequency by a power of two).
+
+use crate::fbm::{Basis, FbmParams};
+use crate::fibers::{FiberLayout, FiberParams};
+use crate::gabor::GaborKind;
+use crate::ranges::{self, Range};
+use crate::spec::{NoiseSpec, Source};
+use crate::{CurlComponent, Metric, WorleyFeature};
+
+/// The smallest value an editor gives a parameter whose range is open below.
+pub const EDIT_FLOOR: f64 = 0.001;
+
+impl Source {
+    /// The spec's `type` of this source.
+    #[must_use]
+    pub fn type_name(&self) -> &'static str {
+        match self {
+            Source::Gabor { .. } => "gabor",
+            Source::Fbm(p) if p.basis == Basis::Value => "value",
+            Source::Fbm(_) => "perlin",
+            Source::Worley { .. } => "worley",
+            Source::White { .. } => "white",
+            Source::Curl { .. } => "curl",
+            Source::Fibers(p) if matches!(p.layout, FiberLayout::Canvas { .. }) => "canvas",
+            Source::Fibers(_) => "paper",
+            Source::Product(_) => "product",
+        }
+    }
+
+    /// A noise of type `type_name` (one of [`crate::NOISE_TYPES`] but `product`) with
+    /// the values an editor starts from: features about 50 px wide, seed `seed`.
+    #[must_use]
+    pub fn starting(type_name: &str, seed: u32) -> Option<Source> {
+        let fbm = |basis| FbmParams {
+            basis,
+            frequency: 0.02,
+            octaves: 5,
+            lacunarity: 2.0,
+            persistence: 0.5,
+            seed,
+            period: None,
+        };
+        let fibers = |layout| FiberParams {
+            layout,
+            length: 20.0,
+            width: 1.5,
+            density: 0.3,
+            seed,
+            period: None,
+            impurities: None,
+        };
+        Some(match type_name {
+            "gabor" => Source::Gabor {
+                kind: GaborKind::Anisotropic,
+                frequency: 0.02,
+                orientation: 0.6,
+                bandwidth: 0.04,
+                impulses: 64.0,
+                seed,
+                orientation_field: None,
+                frequency_field: None,
+            },
+            "perlin" => Source::Fbm(fbm(Basis::Perlin)),
+            "value" => Source::Fbm(fbm(Basis::Value)),
+            "worley" => Source::Worley {
+                frequency: 0.02,
+                feature: WorleyFeature::F1,
+                metric: Metric::Euclidean,
+                seed,
+            },
+            "white" => Source::White { seed },
+            "curl" => Source::Curl {
+                potential: fbm(Basis::Perlin),
+                component: CurlComponent::Magnitude,
+            },
+            "paper" => Source::Fibers(fibers(FiberLayout::Paper)),
+            "canvas" => Source::Fibers(fibers(FiberLayout::Canvas {
+                weights: [1.0, 1.0],
+            })),
+            _ => return None,
+        })
+    }
+
+    /// The seed (a product's first input's).
+    #[must_use]
+    pub fn seed(&self) -> u32 {
+        match self {
+            Source::Gabor { seed, .. } | Source::Worley { seed, .. } | Source::White { seed } => {
+                *seed
+            }
+            Source::Fbm(p) | Source::Curl { potential: p, .. } => p.seed,
+            Source::Fibers(p) => p.seed,
+            Source::Product(inputs) => inputs.first().map_or(0, |s| s.source.seed()),
+        }
+    }
+
+    /// The seed to change (`None` for a product, whose inputs have their own).
+    pub fn seed_mut(&mut self) -> Option<&mut u32> {
+        match self {
+            Source::Gabor { seed, .. } | Source::Worley { seed, .. } | Source::White { seed } => {
+                Some(seed)
+            }
+            Source::Fbm(p) | Source::Curl { potential: p, .. } => Some(&mut p.seed),
+            Source::Fibers(p) => Some(&mut p.seed),
+            Source::Product(_) => None,
+        }
+    }
+
+    /// The frequency of the visible features, cycles per pixel: the base frequency, one
+    /// over the fiber length for fibers; `None` for white noise and products.
+    #[must_use]
+    pub fn feature_frequency(&self) -> Option<f64> {
+        match self {
+            Source::Gabor { frequency, .. } | Source::Worley { frequency, .. } => {
+                Some(f64::from(*frequency))
+            }
+            Source::Fbm(p) | Source::Curl { potential: p, .. } => Some(f64::from(p.frequency)),
+            Source::Fibers(p) => Some(1.0 / f64::from(p.length)),
+            Source::White { .. } | Source::Product(_) => None,
+        }
+    }
+}
+
+impl NoiseSpec {
+    /// A spec of `source` alone: no tiling, transfer, palette or blend.
+    #[must_use]
+    pub fn plain(source: Source) -> Self {
+        Self {
+            source,
+            tile: false,
+            transfer: None,
+            palette: None,
+            blend: None,
+        }
+    }
+
+    /// The same noise seen `k` times smaller: every frequency × k, every length ÷ k,
+    /// fiber density × k², each kept in its accepted range (ranges open below start at
+    /// [`EDIT_FLOOR`]). Drives and product inputs are scaled too.
+    #[must_use]
+    pub fn scaled(&self, k: f64) -> Self {
+        let mut s = self.clone();
+        s.source = scale_source(&self.source, k);
+        s
+    }
+}
+
+fn scale(x: f32, k: f64, range: Range) -> f32 {
+    range.clamp(f64::from(x) * k, EDIT_FLOOR) as f32
+}
+
+fn scale_source(source: &Source, k: f64) -> Source {
+    let mut s = source.clone();
+    match &mut s {
+        Source::Gabor {
+            frequency,
+            bandwidth,
+            orientation_field,
+            frequency_field,
+            ..
+        } => {
+            let f = scale(*frequency, k, ranges::GABOR_FREQUENCY);
+            // The kernel shrinks with the period: the bandwidth follows the frequency.
+            let k = f64::from(f) / f64::from(*frequency);
+            *frequency = f;
+            *bandwidth = scale(*bandwidth, k, ranges::BANDWIDTH);
+            for d in [orientation_field, frequency_field].into_iter().flatten() {
+                *d.noise = d.noise.scaled(k);
+            }
+        }
+        Source::Fbm(p) | Source::Curl { potential: p, .. } => {
+            p.frequency = scale(p.frequency, k, ranges::FREQUENCY);
+        }
+        Source::Worley { frequency, .. } => *frequency = scale(*frequency, k, ranges::FREQUENCY),
+        Source::White { .. } => {}
+        Source::Fibers(p) => {
+            p.length = scale(p.length, 1.0 / k, ranges::FIBER_LENGTH);
+            p.width = scale(p.width, 1.0 / k, ranges::FIBER_WIDTH);
+            p.density = scale(p.density, k * k, ranges::FIBER_DENSITY);
+        }
+        Source::Product(inputs) => {
+            for input in inputs {
+                *input = input.scaled(k);
+            }
+        }
+    }
+    s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::NOISE_TYPES;
+
+    #[test]
+    fn every_type_starts_valid_and_names_itself() {
+        for &t in NOISE_TYPES.iter().filter(|t| **t != "product") {
+            let source = Source::starting(t, 9).unwrap_or_else(|| panic!("{t}"));
+            assert_eq!(source.type_name(), t);
+            assert_eq!(source.seed(), 9);
+            let spec = NoiseSpec::plain(source);
+            let back = NoiseSpec::from_value(&spec.to_value()).expect("valid");
+            assert_eq!(back, spec, "{t}");
+        }
+        assert!(Source::starting("product", 0).is_none());
+    }
+
+    #[test]
+    fn scaling_moves_frequency_and_kernel_together_within_range() {
+        let gabor = NoiseSpec::plain(Source::Gabor {
+            kind: GaborKind::Anisotropic,
+            frequency: 0.05,
+            orientation: 0.0,
+            bandwidth: 0.04,
+            impulses: 64.0,
+            seed: 1,
+            orientation_field: None,
+            frequency_field: None,
+        });
+        let Source::Gabor {
+            frequency,
+            bandwidth,
+            ..
+        } = gabor.scaled(4.0).source
+        else {
+            panic!("still Gabor")
+        };
+        assert!((frequency - 0.2).abs() < 1e-6 && (bandwidth - 0.16).abs() < 1e-6);
+        // 0.05 × 16 is past the Nyquist limit: clamped to 0.5, the kernel by the same 10×.
+        let Source::Gabor {
+            frequency,
+            bandwidth,
+            ..
+        } = gabor.scaled(16.0).source
+        else {
+            panic!("still Gabor")
+        };
+        assert!((frequency - 0.5).abs() < 1e-6 && (bandwidth - 0.4).abs() < 1e-6);
+        let paper = NoiseSpec::plain(Source::starting("paper", 0).expect("paper"));
+        let Source::Fibers(p) = paper.scaled(2.0).source else {
+            panic!("fibers")
+        };
+        assert!((p.length - 10.0).abs() < 1e-6 && (p.density - 1.2).abs() < 1e-6);
+        for &t in NOISE_TYPES.iter().filter(|t| **t != "product") {
+            for k in [1.0 / 64.0, 0.5, 8.0, 512.0] {
+                let s = NoiseSpec::plain(Source::starting(t, 0).expect("type")).scaled(k);
+                assert!(NoiseSpec::from_value(&s.to_value()).is_ok(), "{t} × {k}");
+            }
+        }
+    }
+}
