@@ -4,7 +4,9 @@
 // taken after its first 2 s, once the preview has settled on its sample count.
 // What is asserted (counts, never times): a drag draws only live-preview frames (no
 // exact frame, no tile, no new preview cache), at least ten of them. The frame rates
-// of hovering and dragging are printed for docs/BENCHMARKS.md.
+// of hovering and dragging are printed for docs/BENCHMARKS.md. Fast paint
+// (src/fast_paint/) is on here because the adapter is software; `?fast_paint=off` turns
+// it off (no panel copies).
 // `make test` runs it on WebGPU with Chromium's default GPU compositing; with
 // PERF_SETUPS=all it also runs WebGL2 and WebGPU with --disable-gpu-compositing (how
 // Chromium runs where it cannot use the GPU), and with PERF_SECONDS=8 it measures for
@@ -65,7 +67,7 @@ for (const { name, backend, flags } of SETUPS) {
       const hoverFps = await wiggle(page, x, y, SECONDS * 1000);
       const before = await work(page);
       await page.mouse.down();
-      // The first 2 s: the preview settles on its sample count (src/preview_quality.rs
+      // The first 2 s: the preview settles on its sample count (src/fast_paint/preview_quality.rs
       // decides after 10 frames); the next SECONDS are the drag's steady rate.
       const settleFps = await wiggle(page, x, y, 2_000);
       const dragFps = await wiggle(page, x, y, SECONDS * 1000);
@@ -78,6 +80,25 @@ for (const { name, backend, flags } of SETUPS) {
       assert.ok(during.preview - before.preview >= 10, `only ${during.preview - before.preview} preview frames were drawn`);
       assert.deepEqual(errors, []);
       await context.close();
+    });
+
+    test('fast paint runs on the software adapter, and ?fast_paint=off switches it off', async () => {
+      const copies = {};
+      for (const flag of ['', '&fast_paint=off']) {
+        const { page, context, errors } = await openPage(browser, site, flag, { width: 800, height: 600 });
+        const s = await sheet(page);
+        await page.keyboard.press('3');
+        // Hovering over the sheet changes only the overlay: the panels stay the same.
+        await wiggle(page, s.x + 40, s.y + 40, 1_000);
+        copies[flag || 'auto'] = { hook: await attr(page, 'data-fast-paint'), panel: (await work(page)).panel_copies };
+        assert.deepEqual(errors, []);
+        await context.close();
+      }
+      console.log(`fast paint on ${name}: ${JSON.stringify(copies)}`);
+      assert.equal(copies.auto.hook, 'on (software adapter)');
+      assert.ok(copies.auto.panel > 0, 'the unchanged panels were not copied from the cache');
+      assert.equal(copies['&fast_paint=off'].hook, 'off');
+      assert.equal(copies['&fast_paint=off'].panel, 0, 'switched off, the panel cache still ran');
     });
   });
 }

@@ -96,6 +96,12 @@ impl MarblingApp {
         app.editor.pristine = true;
         app.renderer.lost = lost;
         app.renderer.gpu_errors = gpu_errors;
+        let adapter = cc
+            .wgpu_render_state
+            .as_ref()
+            .map(|rs| rs.adapter.get_info());
+        let switch = crate::fast_paint::Switch::from_flag(platform::query("fast_paint").as_deref());
+        app.renderer.fast_paint = crate::fast_paint::FastPaint::new(switch, adapter.as_ref());
         autosave::flush_on_page_hide();
         if let Some(parked) = recovery::take_parked() {
             app.unpark(parked);
@@ -574,11 +580,12 @@ impl MarblingApp {
             .unwrap_or_default();
         let preview_samples = self
             .renderer
-            .preview_quality
-            .antialias(self.prefs.antialias)
+            .fast_paint
+            .preview_antialias(self.prefs.antialias)
             .samples()
             .len()
             .min(marbling_gpu::params::MAX_PREVIEW_SAMPLES);
+        let (panel_copies, panel_renders) = self.renderer.fast_paint.panel_counts();
         let error = self
             .panels
             .message
@@ -637,10 +644,11 @@ impl MarblingApp {
                     work.preview,
                     work.caches,
                     preview_samples,
-                    self.panels.panel_cache.copies,
-                    self.panels.panel_cache.renders
+                    panel_copies,
+                    panel_renders
                 )),
             ),
+            ("data-fast-paint", Some(self.renderer.fast_paint.hook())),
             ("data-controls", Some(controls)),
             ("data-exporting", exporting),
             ("data-mode", Some(self.editor.mode.name().to_owned())),
@@ -720,7 +728,7 @@ impl eframe::App for MarblingApp {
         // fills cost nothing while the panels are unchanged: they are part of the panels'
         // cached texture.
         let layer = ui.layer_id();
-        let shape_count = || crate::layer_shapes::count(&ctx, layer);
+        let shape_count = || crate::fast_paint::FastPaint::mark(&ctx, layer);
         let panel_start = shape_count();
         // Phones and tablets get their own arrangement (src/layout.rs); the gallery
         // takes the whole of a narrow screen (its cards open designs; "Back to the
@@ -764,7 +772,7 @@ impl eframe::App for MarblingApp {
             .show_separator_line(false)
             .show(ui, |ui| self.status_bar(ui));
         let clear_color = eframe::App::clear_color(self, &ctx.global_style().visuals);
-        self.panels.panel_cache.substitute(
+        self.renderer.fast_paint.panels(
             &ctx,
             frame.wgpu_render_state().map(Into::into),
             layer,

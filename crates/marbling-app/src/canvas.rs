@@ -3,8 +3,8 @@
 
 use crate::app::{ActiveGesture, MarblingApp};
 use crate::canvas_gpu::{CanvasCallback, CanvasPlacement, FrameRequest, StandIn};
+use crate::fast_paint::FastPaint;
 use crate::overlay;
-use crate::overlay_gpu;
 use crate::tools::{Gesture, ToolKind, ops_for};
 use crate::view::ViewState;
 use eframe::egui_wgpu;
@@ -66,8 +66,8 @@ impl MarblingApp {
             );
         }
         // The sheet's outline and the tool overlay: untextured shapes, drawn by the
-        // flat-mesh pipeline (`overlay_gpu.rs`) where there is a wgpu renderer.
-        let overlay_start = crate::layer_shapes::count(ui.ctx(), painter.layer_id());
+        // flat-mesh pipeline (src/fast_paint/flat_overlay.rs) when fast paint is on.
+        let overlay_start = FastPaint::mark(ui.ctx(), painter.layer_id());
         painter.rect_stroke(
             sheet,
             0.0,
@@ -101,8 +101,8 @@ impl MarblingApp {
         } else if self.editor.mode == crate::mode::Mode::Marbling {
             overlay::draw(&painter, rect, &view, self, design_pointer);
         }
-        let overlay_end = crate::layer_shapes::count(ui.ctx(), painter.layer_id());
-        overlay_gpu::substitute(
+        let overlay_end = FastPaint::mark(ui.ctx(), painter.layer_id());
+        self.renderer.fast_paint.overlay(
             ui.ctx(),
             frame.wgpu_render_state().map(|rs| rs.target_format),
             painter.layer_id(),
@@ -312,12 +312,12 @@ impl MarblingApp {
         let antialias = if single.is_some() {
             let dt = f64::from(ui.input(|i| i.unstable_dt));
             let samples = self.prefs.antialias.samples().len();
-            self.renderer.preview_quality.record(dt, samples);
+            self.renderer.fast_paint.preview_frame(dt, samples);
             self.renderer
-                .preview_quality
-                .antialias(self.prefs.antialias)
+                .fast_paint
+                .preview_antialias(self.prefs.antialias)
         } else {
-            self.renderer.preview_quality.end_drag();
+            self.renderer.fast_paint.end_drag();
             self.prefs.antialias
         };
         let request = FrameRequest {

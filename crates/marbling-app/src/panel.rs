@@ -624,7 +624,7 @@ impl MarblingApp {
                 self.editor.shown.op_count(),
                 self.renderer.backend
             ));
-            if self.renderer.preview_quality.reduced() {
+            if self.renderer.fast_paint.preview_reduced() {
                 ui.label("· preview 1 sample/px").on_hover_text(
                     "Frames came slower than 30 per second while dragging, so the live \
                      preview takes one sample per pixel; released ops are still rendered \

@@ -150,8 +150,8 @@ pub struct Renderer {
     pub gpu_errors: GpuErrors,
     /// True once the state is parked for the renderer's restart.
     pub parked: bool,
-    /// Samples per pixel of the live preview, from how fast its frames come.
-    pub preview_quality: crate::preview_quality::PreviewQuality,
+    /// The software-GPU shortcuts and their switch (src/fast_paint/).
+    pub fast_paint: crate::fast_paint::FastPaint,
     /// A PNG export in progress and the file name it will get.
     pub export: Option<(PngExport, String)>,
     /// When the user last acted on the page (egui's clock, seconds): the canvas refines
@@ -169,7 +169,7 @@ impl Renderer {
             lost: LostFlag::default(),
             gpu_errors: GpuErrors::default(),
             parked: false,
-            preview_quality: Default::default(),
+            fast_paint: Default::default(),
             export: None,
             last_input_s: 0.0,
         }
@@ -205,16 +205,12 @@ pub struct Panels {
     /// Thumbnails of recent designs, by share fragment (made on first show; `None`: too
     /// large to draw one quickly, or unreadable).
     pub recent_thumbnails: HashMap<String, Option<egui::TextureHandle>>,
-    /// The side panel's last rendering, shown while the panel does not change.
-    pub panel_cache: crate::panel_cache::PanelCache,
     /// The size of a new sheet, design pixels.
     pub new_size: [u32; 2],
     /// The size Export PNG renders at.
     pub export_size: ExportSize,
     /// The player being filmed (src/recorder.rs).
     pub recorder: Option<crate::recorder::Recorder>,
-    /// The explain view's geometry and what it was computed for (shown design's key,
-    /// settings).
     /// The portrait layout's bottom sheet: its tab, and whether it is open.
     pub sheet_tab: crate::layout::SheetTab,
     pub sheet_open: bool,
@@ -222,6 +218,8 @@ pub struct Panels {
     pub rail_panel_open: bool,
     /// The layout of the last frame (for `data-layout`).
     pub layout: crate::layout::Layout,
+    /// The explain view's geometry and what it was computed for (shown design's key,
+    /// settings).
     pub explain_cache: Option<(
         (u64, crate::player::Explain),
         Arc<crate::player::ExplainGeometry>,
@@ -236,7 +234,6 @@ impl Default for Panels {
             gallery: None,
             gallery_texture: None,
             recent_thumbnails: HashMap::new(),
-            panel_cache: Default::default(),
             new_size: NEW_SIZE,
             export_size: ExportSize::Screen,
             recorder: None,

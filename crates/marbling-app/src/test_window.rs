@@ -1,7 +1,7 @@
 //! For unit tests: an egui context drawn by egui's wgpu renderer into a texture the way
 //! eframe draws a window (lavapipe or any adapter; `MARBLING_SKIP_GPU=1` skips).
 
-use crate::panel_cache::PanelGpu;
+use crate::fast_paint::panel_cache::PanelGpu;
 use eframe::egui_wgpu;
 use egui::Rect;
 use egui::mutex::RwLock;
@@ -95,7 +95,7 @@ impl Window {
         let mut encoder = device.create_command_encoder(&Default::default());
         let [w, h] = self.size;
         let target = RenderTarget::new(device, w, h, FORMAT);
-        let prepared = crate::panel_cache::record_egui(
+        let prepared = crate::fast_paint::panel_cache::record_egui(
             (device, queue),
             &mut renderer,
             &mut encoder,

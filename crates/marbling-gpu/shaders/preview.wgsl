@@ -12,7 +12,7 @@
 //
 // Two fragment entry points: `fs_main` takes `sample_count` samples per pixel (the
 // user's antialiasing); `fs_one_sample` takes one at the pixel's centre, with no loop and
-// no branch, which is what slow devices get (crates/marbling-app/src/preview_quality.rs).
+// no branch, which is what slow devices get (crates/marbling-app/src/fast_paint/preview_quality.rs).
 // SwiftShader runs loops and branches in a general, masked form for every pixel: the
 // straight-line entry point draws a tine-drag frame about 8 ms faster there.
 

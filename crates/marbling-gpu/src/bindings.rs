@@ -1,13 +1,10 @@
-//! What the pipelines share in binding their resources: layout entries for a uniform
+//! What the pipelines (these and the app's) share in binding their resources: layout entries for a uniform
 //! block of a host struct and a 2D float texture, a uniform buffer for a host struct,
 //! and a pipeline layout of one bind group.
 
 /// Entry `binding`: a uniform buffer holding one `T` (its size is the minimum binding
 /// size), seen by `visibility`.
-pub(crate) fn uniform<T>(
-    binding: u32,
-    visibility: wgpu::ShaderStages,
-) -> wgpu::BindGroupLayoutEntry {
+pub fn uniform<T>(binding: u32, visibility: wgpu::ShaderStages) -> wgpu::BindGroupLayoutEntry {
     wgpu::BindGroupLayoutEntry {
         binding,
         visibility,
@@ -22,7 +19,7 @@ pub(crate) fn uniform<T>(
 
 /// Entry `binding`: a 2D float texture (`filterable` when a filtering sampler reads it),
 /// seen by `visibility`.
-pub(crate) fn texture_2d(
+pub fn texture_2d(
     binding: u32,
     visibility: wgpu::ShaderStages,
     filterable: bool,
@@ -40,7 +37,7 @@ pub(crate) fn texture_2d(
 }
 
 /// A uniform buffer sized for one `T`, written with `Queue::write_buffer`.
-pub(crate) fn uniform_buffer<T>(device: &wgpu::Device, label: &str) -> wgpu::Buffer {
+pub fn uniform_buffer<T>(device: &wgpu::Device, label: &str) -> wgpu::Buffer {
     device.create_buffer(&wgpu::BufferDescriptor {
         label: Some(label),
         size: std::mem::size_of::<T>() as u64,
@@ -50,7 +47,7 @@ pub(crate) fn uniform_buffer<T>(device: &wgpu::Device, label: &str) -> wgpu::Buf
 }
 
 /// A pipeline layout of the one bind group `layout` (group 0), no immediates.
-pub(crate) fn pipeline_layout(
+pub fn pipeline_layout(
     device: &wgpu::Device,
     label: &str,
     layout: &wgpu::BindGroupLayout,

@@ -53,18 +53,15 @@
 //! - [`PreviewRenderer`] + [`PreviewCache`]: live-editing frames (a cached committed
 //!   design plus one pending op), an approximation shown only while dragging; one
 //!   pipeline per [`PreviewKind`] of pending op.
-//! - [`FlatMeshRenderer`]: untextured coloured triangles (the app's tool overlay) in
-//!   another pass, cheaper on software GPUs than egui's general shader.
 //! - [`Presenter`] + [`PresentSource`]: a rendered texture shown 1:1 within the scissor
 //!   rectangle of another pass (the app's canvas and cached panels).
 
-mod bindings;
+pub mod bindings;
 mod compute;
 mod context;
 pub mod encode;
 mod error;
 mod exact;
-mod flat_mesh;
 mod fullscreen;
 #[cfg(not(target_arch = "wasm32"))]
 mod headless;
@@ -82,7 +79,6 @@ pub use compute::ComputeExact;
 pub use context::GpuContext;
 pub use error::GpuError;
 pub use exact::{ExactRenderer, PreparedDesign, View};
-pub use flat_mesh::{FlatMeshRenderer, FlatVertex};
 #[cfg(not(target_arch = "wasm32"))]
 pub use headless::{DEFAULT_TILE_SIDE, GpuRenderer, OUTPUT_FORMAT};
 pub use prefix::DesignPrefix;

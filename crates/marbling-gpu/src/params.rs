@@ -177,14 +177,3 @@ pub struct PresentParams {
     /// Padding to 16 bytes.
     pub _pad: [f32; 2],
 }
-
-/// Parameters of the flat-mesh pass ([`crate::FlatMeshRenderer`]).
-/// Keep in sync with `struct FlatMeshParams` in shaders/flat_mesh.wgsl.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
-pub struct FlatMeshParams {
-    /// The target's size in points.
-    pub screen_size_points: [f32; 2],
-    /// Padding to 16 bytes.
-    pub _pad: [f32; 2],
-}

@@ -135,14 +135,6 @@ pub fn preview_wgsl(kind: PreviewKind, srgb_target: bool) -> String {
     [PREVIEW_WGSL, &kind.pending_back(), &encoded_to_target].join("\n")
 }
 
-/// Untextured coloured triangles (the app's tool overlay): `shaders/common.wgsl` +
-/// `shaders/flat_mesh.wgsl`.
-pub const FLAT_MESH_WGSL: &str = concat!(
-    include_str!("../shaders/common.wgsl"),
-    "\n",
-    include_str!("../shaders/flat_mesh.wgsl")
-);
-
 /// Showing a rendered texture 1:1 in a pass: `shaders/common.wgsl` + `shaders/present.wgsl`.
 pub const PRESENT_WGSL: &str = concat!(
     include_str!("../shaders/common.wgsl"),
@@ -175,7 +167,6 @@ pub fn all() -> Vec<(String, String)> {
         }
     }
     out.push(("present".to_owned(), PRESENT_WGSL.to_owned()));
-    out.push(("flat_mesh".to_owned(), FLAT_MESH_WGSL.to_owned()));
     out
 }
 

@@ -2,8 +2,8 @@
 //! as naga computes for the shaders (keep src/params.rs and shaders/*.wgsl in sync).
 
 use marbling_gpu::PreviewKind;
-use marbling_gpu::params::{FlatMeshParams, PresentParams, PreviewParams, RenderParams};
-use marbling_gpu::shaders::{FLAT_MESH_WGSL, PRESENT_WGSL, preview_wgsl, render_wgsl};
+use marbling_gpu::params::{PresentParams, PreviewParams, RenderParams};
+use marbling_gpu::shaders::{PRESENT_WGSL, preview_wgsl, render_wgsl};
 use marbling_gpu::surface::{LayerParams, SurfaceParams};
 use std::mem::{offset_of, size_of};
 
@@ -64,22 +64,6 @@ fn present_params_match_wgsl() {
             ("_pad", offset_of!(PresentParams, _pad)),
         ],
         size_of::<PresentParams>(),
-    );
-}
-
-#[test]
-fn flat_mesh_params_match_wgsl() {
-    check(
-        FLAT_MESH_WGSL,
-        "FlatMeshParams",
-        &[
-            (
-                "screen_size_points",
-                offset_of!(FlatMeshParams, screen_size_points),
-            ),
-            ("_pad", offset_of!(FlatMeshParams, _pad)),
-        ],
-        size_of::<FlatMeshParams>(),
     );
 }
 
@@ -146,7 +130,6 @@ fn structs_nest_within_webgl2_limits() {
         ),
         ("preview.wgsl", preview.as_str()),
         ("present.wgsl", PRESENT_WGSL),
-        ("flat_mesh.wgsl", FLAT_MESH_WGSL),
     ] {
         let module = naga::front::wgsl::parse_str(source).expect("parses");
         for (handle, ty) in module.types.iter() {

@@ -21,8 +21,6 @@ fn every_shader_parses_and_validates() {
             &["vs_main", "fs_main", "fs_one_sample"]
         } else if name == "present" {
             &["vs_main", "fs_copy", "fs_decode"]
-        } else if name == "flat_mesh" {
-            &["vs_main", "fs_main", "fs_linear"]
         } else {
             &["vs_main", "fs_main"]
         };

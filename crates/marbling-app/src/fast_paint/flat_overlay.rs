@@ -6,14 +6,14 @@
 //! dithering; a software GPU (SwiftShader) runs all of them for every pixel, so these
 //! few thousand pixels cost it milliseconds a frame (docs/BENCHMARKS.md).
 //! [`substitute`] tessellates the shapes as egui would and hands the triangles to
-//! [`marbling_gpu::FlatMeshRenderer`] in a paint callback: the same triangles, colours
+//! [`FlatMeshRenderer`] in a paint callback: the same triangles, colours
 //! and blending, without the texture lookup and without egui's dithering.
 
-use crate::layer_shapes;
+use super::flat_mesh::{FlatMeshRenderer, FlatVertex};
+use super::layer_shapes;
 use eframe::egui_wgpu;
 use egui::epaint::{Primitive, Shape, WHITE_UV};
 use egui::{LayerId, Rect};
-use marbling_gpu::{FlatMeshRenderer, FlatVertex};
 use std::ops::Range;
 
 /// The triangles of the replaced shapes, drawn by one callback.
@@ -149,8 +149,8 @@ impl egui_wgpu::CallbackTrait for FlatShapes {
 
 #[cfg(test)]
 mod tests {
+    use super::layer_shapes::count as shape_count;
     use super::*;
-    use crate::layer_shapes::count as shape_count;
     use crate::test_window::{FORMAT, Window, differing};
     use egui::{Color32, Pos2, Stroke};
 

@@ -1,13 +1,31 @@
-//! Untextured coloured triangles drawn inside someone else's render pass: the app's tool
-//! overlay (lines and circles that egui tessellated), which egui would draw with its
-//! general textured shader. On software GPUs (SwiftShader) that shader costs
-//! milliseconds a frame even for a few thousand pixels, because every branch of it runs
-//! for every pixel; `shaders/flat_mesh.wgsl` is straight-line code (docs/BENCHMARKS.md).
+//! Untextured coloured triangles drawn inside egui's render pass: the tool overlay
+//! (lines and circles that egui tessellated), which egui would draw with its general
+//! textured shader. On software GPUs (SwiftShader) that shader costs milliseconds a frame
+//! even for a few thousand pixels, because every branch of it runs for every pixel;
+//! `flat_mesh.wgsl` is straight-line code (docs/BENCHMARKS.md).
 
-use crate::bindings;
-use crate::params::FlatMeshParams;
-use crate::shaders::FLAT_MESH_WGSL;
+use marbling_gpu::bindings;
 use std::ops::Range;
+
+/// `marbling-gpu`'s shared WGSL functions (`srgb_to_linear`) + `flat_mesh.wgsl`.
+pub fn flat_mesh_wgsl() -> String {
+    [
+        marbling_gpu::shaders::COMMON,
+        include_str!("flat_mesh.wgsl"),
+    ]
+    .join("\n")
+}
+
+/// Parameters of the flat-mesh pass. Keep in sync with `struct FlatMeshParams` in
+/// flat_mesh.wgsl (checked by a test below).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
+pub struct FlatMeshParams {
+    /// The target's size in points.
+    pub screen_size_points: [f32; 2],
+    /// Padding to 16 bytes.
+    pub _pad: [f32; 2],
+}
 
 /// One vertex, laid out as egui's `epaint::Vertex`.
 #[repr(C)]
@@ -37,7 +55,7 @@ impl FlatMeshRenderer {
     pub fn new(device: &wgpu::Device, format: wgpu::TextureFormat) -> Self {
         let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
             label: Some("marbling flat_mesh.wgsl"),
-            source: wgpu::ShaderSource::Wgsl(FLAT_MESH_WGSL.into()),
+            source: wgpu::ShaderSource::Wgsl(flat_mesh_wgsl().into()),
         });
         let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("marbling flat mesh"),
@@ -179,5 +197,39 @@ fn write_growing(
     }
     if let Some(b) = buffer {
         queue.write_buffer(b, 0, bytes);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::mem::{offset_of, size_of};
+
+    #[test]
+    fn the_shader_validates_and_its_uniform_matches_the_host_struct() {
+        let module = marbling_testkit::wgsl::validate("flat_mesh", &flat_mesh_wgsl());
+        let entry: Vec<&str> = module
+            .entry_points
+            .iter()
+            .map(|e| e.name.as_str())
+            .collect();
+        assert_eq!(entry, ["vs_main", "fs_main", "fs_linear"]);
+        marbling_testkit::wgsl::check_uniform(
+            &module,
+            "FlatMeshParams",
+            &[
+                (
+                    "screen_size_points",
+                    offset_of!(FlatMeshParams, screen_size_points),
+                ),
+                ("_pad", offset_of!(FlatMeshParams, _pad)),
+            ],
+            size_of::<FlatMeshParams>(),
+        );
+        assert_eq!(
+            size_of::<FlatVertex>(),
+            20,
+            "egui's epaint::Vertex is 20 bytes"
+        );
     }
 }

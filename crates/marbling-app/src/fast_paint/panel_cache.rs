@@ -16,7 +16,7 @@
 //! would draw. It assumes eframe's default render options, which `main.rs` uses: no MSAA
 //! and no depth buffer.
 
-use crate::layer_shapes;
+use super::layer_shapes;
 use eframe::egui_wgpu;
 use egui::epaint::{ClippedShape, Shape};
 use egui::{LayerId, Rect};
@@ -39,7 +39,9 @@ struct Snapshot {
 
 /// What rendering the panel takes from eframe's wgpu set-up.
 pub struct PanelGpu<'a> {
+    /// The device egui draws with.
     pub device: &'a wgpu::Device,
+    /// Its queue.
     pub queue: &'a wgpu::Queue,
     /// The window surface's format, which egui's renderer draws in.
     pub target_format: wgpu::TextureFormat,
@@ -69,8 +71,9 @@ pub struct PanelCache {
     /// The window size the last copy was painted into (from its callback), pixels, with
     /// egui's estimate of it at the time (see [`PanelCache::window_size`]).
     painted_size: Arc<Mutex<Option<PaintedSize>>>,
-    /// Frames drawn from the texture, and renders into it (for tests and `data-gpu-work`).
+    /// Frames drawn from the texture (for tests and `data-gpu-work`).
     pub copies: u64,
+    /// Renders into the texture.
     pub renders: u64,
 }
 

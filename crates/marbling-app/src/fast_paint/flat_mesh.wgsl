@@ -4,9 +4,10 @@
 // premultiplied sRGB-encoded bytes. The colour is written as it is (`fs_main`, …Unorm
 // targets) or decoded to linear light (`fs_linear`, …UnormSrgb targets). Straight-line
 // code: on a software GPU egui's general shader, whose every branch runs for every
-// pixel, costs far more per pixel (docs/BENCHMARKS.md). `common.wgsl` is prepended.
+// pixel, costs far more per pixel (docs/BENCHMARKS.md). marbling-gpu's `common.wgsl` is
+// prepended.
 
-// Keep in sync with `FlatMeshParams` in src/params.rs (checked by tests/layout.rs).
+// Keep in sync with `FlatMeshParams` in flat_mesh.rs (checked by its test).
 struct FlatMeshParams {
     // The target's size in points (egui's screen).
     screen_size_points: vec2<f32>,
