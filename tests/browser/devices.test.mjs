@@ -115,7 +115,7 @@ test('a phone: bottom sheet, 44-px targets, tap, drag, pinch, pan, a second fing
   const canvasShare = (c.canvas.w * c.canvas.h) / (PHONE.width * PHONE.height);
   console.log(`phone: the canvas takes ${(100 * canvasShare).toFixed(1)} % of the viewport with the sheet open`);
   assert.ok(canvasShare >= 0.55, `canvas ${(100 * canvasShare).toFixed(1)} % of the viewport`);
-  for (const name of ['sheet-tools', 'sheet-ink', 'sheet-history', 'sheet-files', 'sheet-noise', 'sheet-toggle', 'tool-drop', 'tool-rake']) {
+  for (const name of ['sheet-tools', 'sheet-ink', 'sheet-history', 'sheet-files', 'sheet-noise', 'sheet-toggle', 'tool-drop', 'tool-comb']) {
     assert.ok(c[name], `no ${name} in data-controls`);
     assert.ok(c[name].h >= 44 && c[name].w >= 44, `${name} is ${c[name].w}×${c[name].h} CSS px`);
   }
@@ -142,7 +142,7 @@ test('a phone: bottom sheet, 44-px targets, tap, drag, pinch, pan, a second fing
   await waitOps(page, n + 1);
 
   // One finger drags a comb.
-  await tap('tool-rake');
+  await tap('tool-comb');
   const from = at(0.16, 0.25);
   const to = at(0.84, 0.75);
   await touch(cdp, 'touchStart', [from]);

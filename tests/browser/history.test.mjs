@@ -70,7 +70,7 @@ describe('history on webgl2', () => {
   test('a spray stroke and a 9-tine rake are one undo each, and their previews follow the drag', async () => {
     // A small window: every drag frame of a multi-op gesture is an exact render.
     const context = await browser.newContext({ viewport: { width: 900, height: 640 }, deviceScaleFactor: 1, acceptDownloads: true });
-    await context.addInitScript((p) => localStorage.setItem('marbling.prefs.v1', p), prefs('spray', { rake_tines: 9, spray_density: 2 }));
+    await context.addInitScript((p) => localStorage.setItem('marbling.prefs.v1', p), prefs('spray', { comb_tines: 9, spray_density: 2 }));
     const t0 = Date.now();
     const log = (what) => console.log(`history: ${what} after ${((Date.now() - t0) / 1000).toFixed(1)} s`);
     const page = await context.newPage();

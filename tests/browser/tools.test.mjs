@@ -29,7 +29,7 @@ const PREFS = JSON.stringify({
   settings: {
     drop_radius: 9, drop_growth: 0, drop_pattern: 'grid', pattern_rows: 3, pattern_columns: 4,
     pattern_spacing: 40, cycle_colors: true, stylus_wake: 4, stylus_tips: 3, stylus_spacing: 25,
-    rake_tines: 5, rake_spacing: 30, jiggle_wavelength: 90, jiggle_along: 6, jiggle_across: 10,
+    comb_tines: 5, comb_spacing: 30, jiggle_wavelength: 90, jiggle_along: 6, jiggle_across: 10,
   },
 });
 
@@ -101,7 +101,7 @@ describe('v3 tools on webgl2', () => {
       await drag(pts);
     });
     await step('comb', async () => {
-      await clickControl(page, 'tool-rake');
+      await clickControl(page, 'tool-comb');
       await drag([p(150, 30), p(150, 60), p(150, 90), p(150, 110)]);
     });
     await step('stylus', async () => {

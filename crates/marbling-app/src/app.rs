@@ -10,7 +10,7 @@ use crate::mode::Mode;
 use crate::platform;
 use crate::prefs::Prefs;
 use crate::recovery::{self, LostFlag, ParkedState};
-use crate::state::{Editor, Hooks, Panels, Renderer, Session};
+use crate::state::{Editor, Hooks, Panels, Rendering, Session};
 use crate::tools::{Gesture, ToolKind, ToolSettings};
 use crate::{History, PALETTES};
 use marbling_core::{Antialias, Design, DesignError, Rgb8, decode_share, share_fragment};
@@ -46,7 +46,7 @@ pub struct MarblingApp {
     /// Autosave, recent designs and what is owed to storage.
     pub(crate) session: Session,
     /// The GPU renderer's side.
-    pub(crate) renderer: Renderer,
+    pub(crate) rendering: Rendering,
     /// The automation hooks.
     pub(crate) hooks: Hooks,
     /// The panels' own state.
@@ -94,14 +94,14 @@ impl MarblingApp {
         let mut app = Self::with_design(fallback, backend, gpu);
         app.panels.gallery_texture = gallery_texture;
         app.editor.pristine = true;
-        app.renderer.lost = lost;
-        app.renderer.gpu_errors = gpu_errors;
+        app.rendering.lost = lost;
+        app.rendering.gpu_errors = gpu_errors;
         let adapter = cc
             .wgpu_render_state
             .as_ref()
             .map(|rs| rs.adapter.get_info());
         let switch = crate::fast_paint::Switch::from_flag(platform::query("fast_paint").as_deref());
-        app.renderer.fast_paint = crate::fast_paint::FastPaint::new(switch, adapter.as_ref());
+        app.rendering.fast_paint = crate::fast_paint::FastPaint::new(switch, adapter.as_ref());
         autosave::flush_on_page_hide();
         if let Some(parked) = recovery::take_parked() {
             app.unpark(parked);
@@ -163,7 +163,7 @@ impl MarblingApp {
                 antialias: Antialias::Rgss,
             },
             session: Session::default(),
-            renderer: Renderer::new(backend, gpu),
+            rendering: Rendering::new(backend, gpu),
             hooks: Hooks::default(),
             panels: Panels::default(),
         }
@@ -187,11 +187,11 @@ impl MarblingApp {
     /// Reacts to a lost GPU device once: parks the editing state for the restarted
     /// renderer (web) or says how to go on (native, where the autosave keeps the work).
     fn check_device_lost(&mut self) {
-        if !self.renderer.lost.is_raised() || self.renderer.parked {
+        if !self.rendering.lost.is_raised() || self.rendering.parked {
             return;
         }
-        self.renderer.parked = true;
-        self.renderer.export = None;
+        self.rendering.parked = true;
+        self.rendering.export = None;
         // Written in this frame, whatever the debounce says.
         self.session.autosave_pending = true;
         self.session.last_autosave_ms = f64::NEG_INFINITY;
@@ -342,7 +342,7 @@ impl MarblingApp {
                 let name = export_file_name(design, export.size(), "png");
                 let (w, h) = export.size();
                 self.info(format!("exporting {w}×{h} PNG…"));
-                self.renderer.export = Some((export, name));
+                self.rendering.export = Some((export, name));
             }
             Err(e) => self.error(format!("Export PNG: {e}")),
         }
@@ -350,7 +350,7 @@ impl MarblingApp {
 
     /// Moves a running PNG export on by one tile; hands the file over when complete.
     fn advance_export(&mut self, frame: &eframe::Frame, ctx: &egui::Context) {
-        let Some((mut export, name)) = self.renderer.export.take() else {
+        let Some((mut export, name)) = self.rendering.export.take() else {
             return;
         };
         let Some(rs) = frame.wgpu_render_state() else {
@@ -359,7 +359,7 @@ impl MarblingApp {
         };
         match export.step(&rs.device, &rs.queue) {
             Ok(ExportStep::Working { .. }) => {
-                self.renderer.export = Some((export, name));
+                self.rendering.export = Some((export, name));
                 ctx.request_repaint();
             }
             Ok(ExportStep::Finished(image)) => match image.to_png() {
@@ -524,7 +524,7 @@ impl MarblingApp {
         // Recorded: the exact frame of this design and view is in the canvas texture's
         // commands. Ready: the GPU has also finished it (the queue's work-done callback).
         let (recorded, finished) = {
-            let st = self.renderer.status.lock().ok();
+            let st = self.rendering.status.lock().ok();
             let drawn = st.as_ref().and_then(|s| {
                 s.drawn
                     .as_ref()
@@ -534,7 +534,7 @@ impl MarblingApp {
                 s.exact_done.load(std::sync::atomic::Ordering::SeqCst) == s.work.exact
             });
             (
-                self.renderer.gpu
+                self.rendering.gpu
                     && !self.editor.landing
                     && self.editor.active.is_none()
                     && self.editor.playback.is_none_or(|p| !p.playing)
@@ -549,16 +549,16 @@ impl MarblingApp {
             ctx.request_repaint_after(std::time::Duration::from_millis(100));
         }
         let progress = self
-            .renderer
+            .rendering
             .status
             .lock()
             .ok()
             .and_then(|s| s.progress)
-            .filter(|_| self.renderer.gpu && self.editor.active.is_none() && !ready)
+            .filter(|_| self.rendering.gpu && self.editor.active.is_none() && !ready)
             // Rounded down: 1 only when done (and then the hook is gone).
             .map(|p| format!("{:.3}", (p * 1000.0).floor() / 1000.0));
         let (preview_ready, work) = self
-            .renderer
+            .rendering
             .status
             .lock()
             .ok()
@@ -579,13 +579,13 @@ impl MarblingApp {
             })
             .unwrap_or_default();
         let preview_samples = self
-            .renderer
+            .rendering
             .fast_paint
             .preview_antialias(self.prefs.antialias)
             .samples()
             .len()
             .min(marbling_gpu::params::MAX_PREVIEW_SAMPLES);
-        let (panel_copies, panel_renders) = self.renderer.fast_paint.panel_counts();
+        let (panel_copies, panel_renders) = self.rendering.fast_paint.panel_counts();
         let error = self
             .panels
             .message
@@ -619,14 +619,14 @@ impl MarblingApp {
             .collect::<Vec<_>>()
             .join(";");
         let exporting = self
-            .renderer
+            .rendering
             .export
             .as_ref()
             .map(|(e, _)| format!("{}x{}", e.size().0, e.size().1));
         let wanted: Vec<(&'static str, Option<String>)> = vec![
             ("data-ready", ready.then(|| "1".to_owned())),
             ("data-progress", progress),
-            ("data-backend", Some(self.renderer.backend.clone())),
+            ("data-backend", Some(self.rendering.backend.clone())),
             ("data-ops", Some(self.editor.shown.op_count().to_string())),
             ("data-error", error),
             ("data-view", view),
@@ -648,7 +648,7 @@ impl MarblingApp {
                     panel_renders
                 )),
             ),
-            ("data-fast-paint", Some(self.renderer.fast_paint.hook())),
+            ("data-fast-paint", Some(self.rendering.fast_paint.hook())),
             ("data-controls", Some(controls)),
             ("data-exporting", exporting),
             ("data-mode", Some(self.editor.mode.name().to_owned())),
@@ -772,7 +772,7 @@ impl eframe::App for MarblingApp {
             .show_separator_line(false)
             .show(ui, |ui| self.status_bar(ui));
         let clear_color = eframe::App::clear_color(self, &ctx.global_style().visuals);
-        self.renderer.fast_paint.panels(
+        self.rendering.fast_paint.panels(
             &ctx,
             frame.wgpu_render_state().map(Into::into),
             layer,
@@ -798,7 +798,7 @@ impl eframe::App for MarblingApp {
                 }
             });
         if let Some(e) = self
-            .renderer
+            .rendering
             .status
             .lock()
             .ok()
@@ -807,7 +807,7 @@ impl eframe::App for MarblingApp {
         {
             self.error(e);
         }
-        for e in self.renderer.gpu_errors.take() {
+        for e in self.rendering.gpu_errors.take() {
             self.error(e);
         }
         self.autosave(frame, &ctx);

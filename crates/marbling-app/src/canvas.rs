@@ -4,7 +4,7 @@
 use crate::app::{ActiveGesture, MarblingApp};
 use crate::canvas_gpu::{CanvasCallback, CanvasPlacement, FrameRequest, StandIn};
 use crate::fast_paint::FastPaint;
-use crate::overlay;
+use crate::footprint;
 use crate::tools::{Gesture, ToolKind, ops_for};
 use crate::view::ViewState;
 use eframe::egui_wgpu;
@@ -52,7 +52,7 @@ impl MarblingApp {
             rect.min + Vec2::new(br[0] as f32, br[1] as f32),
         );
         let placement = CanvasPlacement::new(rect, sheet, ppp);
-        if self.renderer.gpu {
+        if self.rendering.gpu {
             self.paint_design(ui, frame, rect, placement, &view);
         } else {
             let [r, g, b] = crate::canvas_gpu::SURROUND;
@@ -85,7 +85,7 @@ impl MarblingApp {
         if let Some(p) = self.editor.playback {
             // The player draws the step's tool moving, and the explain view.
             if let Some(g) = self.explain_geometry() {
-                crate::player_overlay::draw_explain(
+                crate::player_drawing::draw_explain(
                     &painter.with_clip_rect(sheet),
                     rect,
                     &view,
@@ -96,13 +96,13 @@ impl MarblingApp {
             }
             let design = self.editor.history.design();
             if let Some((op, e)) = p.easing_op(design, &design.step_bounds()) {
-                crate::player_overlay::draw_tool(&painter, rect, &view, op, e, (w, h));
+                crate::player_drawing::draw_tool(&painter, rect, &view, op, e, (w, h));
             }
         } else if self.editor.mode == crate::mode::Mode::Marbling {
-            overlay::draw(&painter, rect, &view, self, design_pointer);
+            footprint::draw(&painter, rect, &view, self, design_pointer);
         }
         let overlay_end = FastPaint::mark(ui.ctx(), painter.layer_id());
-        self.renderer.fast_paint.overlay(
+        self.rendering.fast_paint.overlay(
             ui.ctx(),
             frame.wgpu_render_state().map(|rs| rs.target_format),
             painter.layer_id(),
@@ -312,12 +312,12 @@ impl MarblingApp {
         let antialias = if single.is_some() {
             let dt = f64::from(ui.input(|i| i.unstable_dt));
             let samples = self.prefs.antialias.samples().len();
-            self.renderer.fast_paint.preview_frame(dt, samples);
-            self.renderer
+            self.rendering.fast_paint.preview_frame(dt, samples);
+            self.rendering
                 .fast_paint
                 .preview_antialias(self.prefs.antialias)
         } else {
-            self.renderer.fast_paint.end_drag();
+            self.rendering.fast_paint.end_drag();
             self.prefs.antialias
         };
         let request = FrameRequest {
@@ -341,14 +341,14 @@ impl MarblingApp {
         let acting =
             ui.input(|i| !i.events.is_empty() || i.pointer.any_down() || i.pointer.is_moving());
         if acting {
-            self.renderer.last_input_s = ui.input(|i| i.time);
+            self.rendering.last_input_s = ui.input(|i| i.time);
         }
-        let idle = ui.input(|i| i.time) - self.renderer.last_input_s > IDLE_AFTER_S;
+        let idle = ui.input(|i| i.time) - self.rendering.last_input_s > IDLE_AFTER_S;
         let callback = CanvasCallback {
             shown,
             request,
             placement,
-            status: self.renderer.status.clone(),
+            status: self.rendering.status.clone(),
             ctx: ui.ctx().clone(),
             active: !idle,
         };

@@ -58,7 +58,7 @@ impl MarblingApp {
     pub(crate) fn landing(&mut self, ui: &mut egui::Ui) {
         let view = self.panels.gallery.get_or_insert_with(GalleryView::load);
         let (drawn, total) = view.progress();
-        if drawn < total && self.renderer.gpu {
+        if drawn < total && self.rendering.gpu {
             // One thumbnail a frame, drawn in egui's prepare step.
             ui.painter().add(egui_wgpu::Callback::new_paint_callback(
                 ui.max_rect(),

@@ -151,13 +151,13 @@ impl MarblingApp {
             Err(e) => e.to_string(),
         };
         ui.horizontal_wrapped(|ui| {
-            if let Some((export, _)) = &self.renderer.export {
+            if let Some((export, _)) = &self.rendering.export {
                 let (w, h) = export.size();
                 ui.label(format!("rendering {w} × {h}…"));
                 let cancel = ui.button("Cancel");
                 self.control("export-cancel", &cancel);
                 if cancel.clicked() {
-                    self.renderer.export = None;
+                    self.rendering.export = None;
                     self.info("export cancelled");
                 }
             } else {
@@ -323,16 +323,16 @@ impl MarblingApp {
                         .logarithmic(true),
                 );
             }
-            ToolKind::Rake => {
+            ToolKind::Comb => {
                 ui.label("Drag: parallel tines along the drag.");
-                ui.add(Slider::new(&mut s.rake_tines, 0..=64).text("tines (0 = whole sheet)"));
+                ui.add(Slider::new(&mut s.comb_tines, 0..=64).text("tines (0 = whole sheet)"));
                 ui.add(
-                    Slider::new(&mut s.rake_spacing, 2.0..=400.0)
+                    Slider::new(&mut s.comb_spacing, 2.0..=400.0)
                         .text("spacing")
                         .logarithmic(true),
                 );
                 ui.add(
-                    Slider::new(&mut s.rake_lambda, 0.5..=200.0)
+                    Slider::new(&mut s.comb_lambda, 0.5..=200.0)
                         .text("sharpness λ")
                         .logarithmic(true),
                 );
@@ -622,9 +622,9 @@ impl MarblingApp {
             ui.label(format!(
                 "{w}×{h} · {} ops · {}",
                 self.editor.shown.op_count(),
-                self.renderer.backend
+                self.rendering.backend
             ));
-            if self.renderer.fast_paint.preview_reduced() {
+            if self.rendering.fast_paint.preview_reduced() {
                 ui.label("· preview 1 sample/px").on_hover_text(
                     "Frames came slower than 30 per second while dragging, so the live \
                      preview takes one sample per pixel; released ops are still rendered \

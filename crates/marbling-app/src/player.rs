@@ -1,11 +1,11 @@
 //! The step player's bar under the canvas: step back, play/pause, step forward, a
 //! timeline with a tick per step (click or drag to scrub), speed, the step's caption,
 //! and the explain view (the step's formulas with their numbers, the deformation grid,
-//! arrows and the area probe, drawn by src/player_overlay.rs).
+//! arrows and the area probe, drawn by src/player_drawing.rs).
 
 use crate::action::Action;
 use crate::app::MarblingApp;
-use crate::player_overlay;
+use crate::player_drawing;
 use egui::{Color32, RichText, Sense, Slider, Stroke, vec2};
 use marbling_core::{Design, Point};
 
@@ -232,8 +232,8 @@ impl MarblingApp {
             );
             self.control("player-cumulative", &c);
             if let Some(g) = self.explain_geometry() {
-                let a0 = player_overlay::polygon_area(&g.probe.0);
-                let a1 = player_overlay::polygon_area(&g.probe.1);
+                let a0 = player_drawing::polygon_area(&g.probe.0);
+                let a1 = player_drawing::polygon_area(&g.probe.1);
                 ui.label(format!(
                     "probe area: {a0:.0} px² before, {a1:.0} px² after (×{:.3}){}",
                     a1 / a0,
@@ -302,7 +302,7 @@ impl MarblingApp {
         while work(step) > EXPLAIN_WORK && step < long {
             step *= 1.5;
         }
-        let grid = player_overlay::grid_lines(&ops, size, step);
+        let grid = player_drawing::grid_lines(&ops, size, step);
         let mut arrows = Vec::new();
         let coarse = step * 2.0;
         let mut y = coarse / 2.0;
@@ -310,13 +310,13 @@ impl MarblingApp {
             let mut x = coarse / 2.0;
             while x < f64::from(size.0) {
                 let a = Point::new(x, y);
-                arrows.push((a, player_overlay::push(&ops, a)));
+                arrows.push((a, player_drawing::push(&ops, a)));
                 x += coarse;
             }
             y += coarse;
         }
         let (c, r) = self.editor.explain.probe_circle(design);
-        let probe = player_overlay::probe(&ops, c, r);
+        let probe = player_drawing::probe(&ops, c, r);
         Some(ExplainGeometry {
             grid,
             arrows,

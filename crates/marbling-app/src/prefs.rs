@@ -49,7 +49,7 @@ impl Prefs {
     pub fn decode(text: &str, defaults: Prefs) -> Result<Prefs, String> {
         let s: Stored = serde_json::from_str(text).map_err(|e| format!("preferences: {e}"))?;
         let mut settings = s.settings;
-        settings.rake_tines = settings.rake_tines.min(64);
+        settings.comb_tines = settings.comb_tines.min(64);
         Ok(Prefs {
             tool: s.tool,
             settings,
@@ -77,8 +77,8 @@ mod tests {
             antialias: Antialias::Rgss,
         };
         let mut p = defaults;
-        p.tool = ToolKind::Rake;
-        p.settings.rake_tines = 9;
+        p.tool = ToolKind::Comb;
+        p.settings.comb_tines = 9;
         p.palette = 2;
         p.antialias = Antialias::Grid4;
         assert_eq!(Prefs::decode(&p.encode(), defaults).expect("a value"), p);
@@ -89,6 +89,13 @@ mod tests {
         assert_eq!(
             (q.ink, q.antialias),
             (Rgb8::new(255, 0, 0), Antialias::Rgss)
+        );
+        // Preferences saved before the comb tool had its name still load.
+        let old = r##"{"tool":"rake","settings":{"rake_tines":7,"rake_spacing":12.0},"palette":0,"ink":"#000000","antialias":"rgss"}"##;
+        let o = Prefs::decode(old, defaults).expect("a value");
+        assert_eq!(
+            (o.tool, o.settings.comb_tines, o.settings.comb_spacing),
+            (ToolKind::Comb, 7, 12.0)
         );
         assert!(
             Prefs::decode("{", defaults)

@@ -128,7 +128,7 @@ mod tests {
         park(ParkedState {
             history: history.clone(),
             prefs: crate::prefs::Prefs {
-                tool: ToolKind::Rake,
+                tool: ToolKind::Comb,
                 settings: ToolSettings::default(),
                 palette: 2,
                 ink: Rgb8::new(9, 9, 9),
@@ -154,7 +154,7 @@ mod tests {
         assert!(!give_up());
         let parked = take_parked().expect("parked");
         assert_eq!(parked.history, history);
-        assert_eq!(parked.prefs.tool, ToolKind::Rake);
+        assert_eq!(parked.prefs.tool, ToolKind::Comb);
         assert!(take_parked().is_none());
     }
 

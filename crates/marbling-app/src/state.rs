@@ -1,6 +1,6 @@
 //! The playground's state, in parts that change for different reasons (as the egui demo
 //! structures its apps): the document being edited ([`Editor`]), what is kept in the
-//! page's storage ([`Session`]), the GPU renderer's side ([`Renderer`]), the automation
+//! page's storage ([`Session`]), the GPU renderer's side ([`Rendering`]), the automation
 //! hooks ([`Hooks`]) and the panels' own state ([`Panels`]); the tool preferences are
 //! [`crate::prefs::Prefs`]. Everything that changes the document goes through
 //! `MarblingApp::apply` (src/action.rs).
@@ -137,7 +137,7 @@ impl Default for Session {
 
 /// The GPU renderer's side: what the canvas reports back, device loss and errors, the
 /// live preview's quality, a PNG export in progress.
-pub struct Renderer {
+pub struct Rendering {
     /// Shared with the canvas's paint callback.
     pub status: Arc<Mutex<CanvasStatus>>,
     /// `webgpu`, `webgl2`, or the native backend's name.
@@ -159,7 +159,7 @@ pub struct Renderer {
     pub last_input_s: f64,
 }
 
-impl Renderer {
+impl Rendering {
     /// A renderer on `backend` (`gpu`: whether a wgpu render state exists).
     pub fn new(backend: String, gpu: bool) -> Self {
         Self {

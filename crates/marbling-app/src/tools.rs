@@ -20,8 +20,9 @@ pub enum ToolKind {
     Spray,
     /// Drag A→B: one tine through A along B − A.
     Tine,
-    /// Drag A→B: parallel tines.
-    Rake,
+    /// Drag A→B: parallel tines, endless (a rake op) or a finite comb.
+    #[serde(alias = "rake")]
+    Comb,
     /// Drag A→B: a wave whose motion direction is B − A.
     Wavy,
     /// Press at the centre, drag around it: a circular comb.
@@ -44,7 +45,7 @@ impl ToolKind {
         ToolKind::Drop,
         ToolKind::Spray,
         ToolKind::Tine,
-        ToolKind::Rake,
+        ToolKind::Comb,
         ToolKind::Stylus,
         ToolKind::Wavy,
         ToolKind::Jiggle,
@@ -60,7 +61,7 @@ impl ToolKind {
             ToolKind::Drop => "drop",
             ToolKind::Spray => "spray",
             ToolKind::Tine => "tine",
-            ToolKind::Rake => "rake",
+            ToolKind::Comb => "comb",
             ToolKind::Wavy => "wavy",
             ToolKind::Circular => "circular",
             ToolKind::Vortex => "vortex",
@@ -77,7 +78,7 @@ impl ToolKind {
             ToolKind::Drop => "Drop",
             ToolKind::Spray => "Spray",
             ToolKind::Tine => "Tine",
-            ToolKind::Rake => "Comb",
+            ToolKind::Comb => "Comb",
             ToolKind::Wavy => "Wavy",
             ToolKind::Circular => "Circular",
             ToolKind::Vortex => "Vortex",
@@ -124,12 +125,15 @@ pub struct ToolSettings {
     pub spray_spread: f64,
     /// Tine sharpness λ (small = a sharp tine that only moves ink close to it).
     pub tine_lambda: f64,
-    /// Rake: number of tines (0 = tines across the whole sheet).
-    pub rake_tines: u32,
-    /// Rake: distance between tines.
-    pub rake_spacing: f64,
-    /// Rake sharpness λ.
-    pub rake_lambda: f64,
+    /// Comb: number of tines (0 = endless tines across the whole sheet, a rake op).
+    #[serde(alias = "rake_tines")]
+    pub comb_tines: u32,
+    /// Comb: distance between tines.
+    #[serde(alias = "rake_spacing")]
+    pub comb_spacing: f64,
+    /// Comb sharpness λ.
+    #[serde(alias = "rake_lambda")]
+    pub comb_lambda: f64,
     /// Wavy comb amplitude.
     pub wavy_amplitude: f64,
     /// Wavy comb wavelength.
@@ -185,9 +189,9 @@ impl Default for ToolSettings {
             spray_max_radius: 5.0,
             spray_spread: 25.0,
             tine_lambda: 8.0,
-            rake_tines: 0,
-            rake_spacing: 40.0,
-            rake_lambda: 6.0,
+            comb_tines: 0,
+            comb_spacing: 40.0,
+            comb_lambda: 6.0,
             wavy_amplitude: 15.0,
             wavy_wavelength: 120.0,
             wavy_phase: 0.0,
@@ -381,23 +385,23 @@ fn unrounded_ops(
             alpha: len,
             lambda: s.tine_lambda,
         })],
-        ToolKind::Rake if s.rake_tines == 0 => vec![Op::Rake(Rake {
+        ToolKind::Comb if s.comb_tines == 0 => vec![Op::Rake(Rake {
             origin: a,
             direction: drag,
-            spacing: s.rake_spacing,
+            spacing: s.comb_spacing,
             alpha: len,
-            lambda: s.rake_lambda,
+            lambda: s.comb_lambda,
         })],
-        ToolKind::Rake => {
-            let half = f64::from(s.rake_tines - 1) / 2.0;
+        ToolKind::Comb => {
+            let half = f64::from(s.comb_tines - 1) / 2.0;
             vec![Op::Comb(Comb {
                 origin: a,
                 direction: drag,
-                tines: (0..s.rake_tines)
-                    .map(|i| (f64::from(i) - half) * s.rake_spacing)
+                tines: (0..s.comb_tines)
+                    .map(|i| (f64::from(i) - half) * s.comb_spacing)
                     .collect(),
                 alpha: len,
-                lambda: s.rake_lambda,
+                lambda: s.comb_lambda,
             })]
         }
         ToolKind::Wavy => vec![Op::Wavy(Wavy {
@@ -550,7 +554,7 @@ mod tests {
     fn a_rake_is_a_whole_sheet_rake_or_that_many_tines() {
         let mut s = ToolSettings::default();
         let ops = ops_for(
-            ToolKind::Rake,
+            ToolKind::Comb,
             &s,
             &drag((0.0, 0.0), (0.0, 50.0)),
             &[INK],
@@ -564,10 +568,10 @@ mod tests {
                 ..
             })]
         ));
-        s.rake_tines = 3;
+        s.comb_tines = 3;
         // A comb of that many tines is one op (one record of tine offsets on the GPU).
         let ops = ops_for(
-            ToolKind::Rake,
+            ToolKind::Comb,
             &s,
             &drag((100.0, 0.0), (100.0, 50.0)),
             &[INK],

@@ -48,7 +48,7 @@ pub fn render_vector(design: &Design, opts: &RenderOptions, tolerance: f64) -> R
         marbling_vector::trace_with_progress(design, &trace_opts, &|d, t| progress.update(d, t));
     progress.finish();
     let blend = marbling_vector::Blend::Linear(opts.antialias);
-    Ok(marbling_vector::preview(&traced?, opts.scale, blend)?)
+    Ok(marbling_vector::rasterize(&traced?, opts.scale, blend)?)
 }
 
 /// Renders `design` with `backend` (vector at `tolerance`), reporting progress.

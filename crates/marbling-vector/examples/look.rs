@@ -6,7 +6,7 @@
 use marbling_core::compare::{compare, diff_strip};
 use marbling_core::synth::{Mix, random_design};
 use marbling_core::{Antialias, RenderOptions, render};
-use marbling_vector::{Blend, TraceOptions, preview, to_svg, trace};
+use marbling_vector::{Blend, TraceOptions, rasterize, to_svg, trace};
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let args: Vec<String> = std::env::args().skip(1).collect();
@@ -30,7 +30,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let t0 = std::time::Instant::now();
     let vector = trace(&design, &opts)?;
     println!("trace {:.3} s", t0.elapsed().as_secs_f64());
-    let actual = preview(&vector, 1.0, Blend::default())?;
+    let actual = rasterize(&vector, 1.0, Blend::default())?;
     let aa = match std::env::var("REF_AA").as_deref() {
         Ok("grid4") => Antialias::Grid4,
         _ => Antialias::Rgss,

@@ -10,7 +10,7 @@
 
 use crate::cellhash::CellMap;
 use crate::curve::Curve;
-use crate::refine::distance_to_segment;
+use crate::reference::distance_to_segment;
 use crate::ring::{Node, area2_and_perimeter};
 use kurbo::Point;
 

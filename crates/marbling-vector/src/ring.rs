@@ -4,7 +4,7 @@
 
 use crate::canvas::Canvas;
 use crate::curve::Curve;
-use crate::refine::distance_to_segment;
+use crate::reference::distance_to_segment;
 use kurbo::Point;
 use marbling_core::CompiledOp;
 

@@ -3,7 +3,7 @@
 
 use crate::Canvas;
 use crate::guard::Guard;
-use crate::refine::distance_to_segment;
+use crate::reference::distance_to_segment;
 use kurbo::Point;
 
 /// Replaces every run of consecutive vertices lying in one common half-plane beyond

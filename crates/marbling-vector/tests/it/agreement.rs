@@ -10,7 +10,7 @@
 use marbling_core::compare::compare;
 use marbling_core::synth::{Mix, random_design};
 use marbling_core::{Antialias, RenderOptions, render};
-use marbling_vector::{Blend, TraceOptions, preview, trace};
+use marbling_vector::{Blend, TraceOptions, rasterize, trace};
 use std::time::Instant;
 
 /// Pixels differing by more than this (of 255) count as mismatches.
@@ -30,7 +30,7 @@ fn traced_against_reference(
     marbling_core::compare::ImageDiff,
 ) {
     let vector = trace(design, opts).expect("traceable");
-    let actual = preview(&vector, opts.scale, Blend::Linear(Antialias::Rgss)).expect("preview");
+    let actual = rasterize(&vector, opts.scale, Blend::Linear(Antialias::Rgss)).expect("preview");
     let expected = render(
         design,
         &RenderOptions {

@@ -3,7 +3,7 @@
 use marbling_core::compare::compare;
 use marbling_core::synth::{Mix, random_design};
 use marbling_core::{Antialias, RenderOptions, render};
-use marbling_vector::{Blend, TraceOptions, preview, trace};
+use marbling_vector::{Blend, TraceOptions, rasterize, trace};
 
 #[test]
 fn perturbed_vector_render_fails_the_budget() {
@@ -11,7 +11,7 @@ fn perturbed_vector_render_fails_the_budget() {
     let opts = TraceOptions::default();
     let mut vector = trace(&design, &opts).expect("traceable");
     let reference = render(&design, &RenderOptions::default()).expect("render");
-    let good = preview(&vector, 1.0, Blend::Linear(Antialias::Rgss)).expect("preview");
+    let good = rasterize(&vector, 1.0, Blend::Linear(Antialias::Rgss)).expect("preview");
     let ok = compare(&reference, &good, 48).expect("same size");
     assert!(
         ok.fraction() <= 0.01,
@@ -24,7 +24,7 @@ fn perturbed_vector_render_fails_the_budget() {
             p.x += 3.0;
         }
     }
-    let bad = preview(&vector, 1.0, Blend::Linear(Antialias::Rgss)).expect("preview");
+    let bad = rasterize(&vector, 1.0, Blend::Linear(Antialias::Rgss)).expect("preview");
     let d = compare(&reference, &bad, 48).expect("same size");
     println!(
         "unperturbed {:.3} %, shifted {:.3} %",

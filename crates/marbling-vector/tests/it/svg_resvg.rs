@@ -4,7 +4,7 @@
 use marbling_core::RgbaImage;
 use marbling_core::compare::compare;
 use marbling_core::synth::{Mix, random_design};
-use marbling_vector::{Blend, TraceOptions, preview, to_svg, trace};
+use marbling_vector::{Blend, TraceOptions, rasterize, to_svg, trace};
 use resvg::{tiny_skia, usvg};
 
 fn rasterise(svg: &str) -> RgbaImage {
@@ -51,7 +51,7 @@ fn resvg_render_of_svg_matches_preview() {
         // Background rectangle plus one path per outline.
         assert_eq!(count_paths(tree.root()), 1 + vector.outlines.len());
         let actual = rasterise(&svg);
-        let expected = preview(&vector, scale, Blend::Srgb).expect("preview");
+        let expected = rasterize(&vector, scale, Blend::Srgb).expect("preview");
         let diff = compare(&expected, &actual, 16).expect("same size");
         println!(
             "{seed} {mix:<12?} {ops:>3} {scale:>5} {:>8} {:>7} {:.3} %",

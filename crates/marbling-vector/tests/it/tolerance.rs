@@ -4,9 +4,9 @@
 use marbling_core::compare::check_snapshot;
 use marbling_core::synth::{Mix, random_design};
 use marbling_core::{CompiledOp, Design, Op};
-use marbling_vector::refine::{Refiner, distance_to_segment};
+use marbling_vector::reference::{Refiner, distance_to_segment};
 use marbling_vector::simplify::rdp_closed;
-use marbling_vector::{Blend, TraceOptions, initial_sides, preview, trace};
+use marbling_vector::{Blend, TraceOptions, initial_sides, rasterize, trace};
 
 /// Refiners for every ink op of `design` at tolerance `t` (scale 1, no off-canvas
 /// relaxation, so the bounds apply everywhere).
@@ -150,7 +150,7 @@ fn traced_outlines_keep_vertex_counts_bounded_on_a_single_drop() {
 fn golden_vector_preview() {
     let design = random_design(5, 160, 120, 80, Mix::Mixed);
     let vector = trace(&design, &TraceOptions::default()).expect("traceable");
-    let image = preview(&vector, 1.0, Blend::default()).expect("preview");
+    let image = rasterize(&vector, 1.0, Blend::default()).expect("preview");
     // The golden image itself agrees with the CPU reference (so updating it cannot
     // bless a wrong render).
     let reference =

@@ -33,7 +33,11 @@ impl Default for Blend {
 /// size and pixel convention as the CPU reference renderer (pixel (i, j) covers the
 /// design square [i/s, (i+1)/s) × [j/s, (j+1)/s)). Regions are filled in painter's
 /// order, nonzero rule, antialiased as `blend` says.
-pub fn preview(vector: &VectorDesign, scale: f64, blend: Blend) -> Result<RgbaImage, VectorError> {
+pub fn rasterize(
+    vector: &VectorDesign,
+    scale: f64,
+    blend: Blend,
+) -> Result<RgbaImage, VectorError> {
     let probe = Design::new(vector.width, vector.height, vector.background);
     let (w, h) = output_size(&probe, scale)?;
     let transform = Transform::from_scale(scale as f32, scale as f32);
@@ -57,7 +61,7 @@ pub fn preview(vector: &VectorDesign, scale: f64, blend: Blend) -> Result<RgbaIm
 /// Traces `design` at `opts` and rasterises it at `opts.scale` in linear light: the
 /// `--backend vector` render.
 pub fn render_vector(design: &Design, opts: &TraceOptions) -> Result<RgbaImage, VectorError> {
-    preview(&trace(design, opts)?, opts.scale, Blend::default())
+    rasterize(&trace(design, opts)?, opts.scale, Blend::default())
 }
 
 /// A tiny-skia path of closed subpaths through `rings` (design pixels); `None` if

@@ -3,7 +3,7 @@
 //! the explain view's geometry — a deformation grid pushed forward through the step (or
 //! through every step up to it), displacement arrows, and the area probe.
 
-use crate::overlay::{circle, line, polyline, screen};
+use crate::footprint::{circle, line, polyline, screen};
 use crate::view::ViewState;
 use egui::{Color32, Painter, Pos2, Rect, Stroke};
 use marbling_core::{Op, Point, Vec2};

@@ -146,19 +146,19 @@ pub fn draw(
                 arrow(painter, at(a), at(b));
             }
         }
-        ToolKind::Rake => {
-            let offsets: Vec<f64> = if s.rake_tines == 0 {
+        ToolKind::Comb => {
+            let offsets: Vec<f64> = if s.comb_tines == 0 {
                 // Whole-sheet rake: while dragging, every tine in view; hovering, a few.
                 let k = if dragging {
-                    ((reach / s.rake_spacing).ceil() as i64).min(300)
+                    ((reach / s.comb_spacing).ceil() as i64).min(300)
                 } else {
                     4
                 };
-                (-k..=k).map(|i| i as f64 * s.rake_spacing).collect()
+                (-k..=k).map(|i| i as f64 * s.comb_spacing).collect()
             } else {
-                let half = f64::from(s.rake_tines - 1) / 2.0;
-                (0..s.rake_tines)
-                    .map(|i| (f64::from(i) - half) * s.rake_spacing)
+                let half = f64::from(s.comb_tines - 1) / 2.0;
+                (0..s.comb_tines)
+                    .map(|i| (f64::from(i) - half) * s.comb_spacing)
                     .collect()
             };
             let len = if dragging { reach } else { 20.0 / view.zoom };
