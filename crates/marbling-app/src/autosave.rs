@@ -2,9 +2,10 @@
 //! written alternately to two storage slots so that a write cut short (a crash, a
 //! closed tab) leaves the previous copy whole; the reader takes the newest readable one.
 //!
-//! Writes are debounced by the app: at most one every [`MIN_INTERVAL_MS`], and a last
-//! one when the page is hidden or the window closes.
+//! Writes are debounced (`MarblingApp::autosave`, below): at most one every
+//! [`MIN_INTERVAL_MS`], and a last one when the page is hidden or the window closes.
 
+use crate::platform;
 use marbling_core::Design;
 use serde_json::Value;
 use std::sync::{Arc, Mutex, MutexGuard};
@@ -164,6 +165,78 @@ pub fn newest(slots: [Option<String>; 2], legacy: Option<String>) -> Found {
         found.unreadable.clear();
     }
     found
+}
+
+impl crate::app::MarblingApp {
+    /// Writes what storage is owed: waiting writes, the recent list, and the autosave
+    /// (at most one every [`MIN_INTERVAL_MS`]; the page-hide handler writes
+    /// a waiting one when the page goes away). A full storage drops the oldest recent
+    /// designs first, then says the design was not autosaved.
+    pub(crate) fn autosave(&mut self, frame: &mut eframe::Frame, ctx: &egui::Context) {
+        let prefs = self.prefs;
+        let now = platform::now_ms();
+        if self.session.stored_prefs.0 != Some(prefs)
+            && now - self.session.stored_prefs.1 >= MIN_INTERVAL_MS
+        {
+            self.session
+                .pending_writes
+                .push((crate::prefs::KEY, prefs.encode()));
+            self.session.stored_prefs = (Some(prefs), now);
+        } else if self.session.stored_prefs.0 != Some(prefs) {
+            ctx.request_repaint_after(std::time::Duration::from_secs(1));
+        }
+        for (key, value) in std::mem::take(&mut self.session.pending_writes) {
+            if let Err(e) = platform::store_string(frame, key, &value) {
+                self.error(format!("{key}: {e}"));
+            }
+        }
+        if std::mem::take(&mut self.session.recent_pending) {
+            while let Err(e) =
+                platform::store_string(frame, crate::recent::KEY, &self.session.recent.encode())
+            {
+                if !self.session.recent.drop_oldest() {
+                    self.error(format!("recent designs were not saved: {e}"));
+                    break;
+                }
+            }
+        }
+        if !self.session.autosave_pending {
+            return;
+        }
+        let wait = self.session.last_autosave_ms + MIN_INTERVAL_MS - now;
+        if wait > 0.0 {
+            let mut u = unsaved();
+            if u.design
+                .as_ref()
+                .is_none_or(|d| **d != *self.editor.history.design())
+            {
+                u.design = Some(Arc::new(self.editor.history.design().clone()));
+            }
+            ctx.request_repaint_after(std::time::Duration::from_secs_f64(wait / 1000.0));
+            return;
+        }
+        self.session.autosave_pending = false;
+        self.session.last_autosave_ms = now;
+        let mut u = unsaved();
+        u.design = None;
+        let seq = u.seq + 1;
+        let text = encode(seq, now, self.editor.history.design());
+        let mut result = platform::store_string(frame, slot(seq), &text);
+        while result.is_err() && self.session.recent.drop_oldest() {
+            let _ =
+                platform::store_string(frame, crate::recent::KEY, &self.session.recent.encode());
+            result = platform::store_string(frame, slot(seq), &text);
+        }
+        match result {
+            Ok(()) => u.seq = seq,
+            Err(e) => {
+                drop(u);
+                self.error(format!(
+                    "the design was not autosaved ({e}): use Save JSON to keep it"
+                ));
+            }
+        }
+    }
 }
 
 #[cfg(test)]

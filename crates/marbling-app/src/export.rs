@@ -1,4 +1,5 @@
-//! Export PNG: an exact render of the design at a print size on the app's own GPU
+//! Export PNG and SVG (the app's actions are at the end of the file). Export PNG: an
+//! exact render of the design at a print size on the app's own GPU
 //! device, read back tile by tile asynchronously (a browser cannot block on the GPU),
 //! one tile in flight at a time, then PNG-encoded and handed to the user. Each tile is
 //! drawn in parts over successive frames, as much a frame as keeps frames at
@@ -8,6 +9,8 @@
 //! The pixels are those of `marbling render --backend gpu` at the same scale: the same
 //! WGSL pass, sample positions and sRGB handling, so an export matches the CLI.
 
+use crate::mode::Mode;
+use crate::platform;
 use crate::refine::{FrameBudget, IDLE_FRAME_MS, Refinement, per_pixel};
 use marbling_core::{Antialias, Design, RgbaImage, output_size};
 use marbling_gpu::{ExactRenderer, PreparedDesign, RenderTarget, View, copy_to_buffer, tile_grid};
@@ -297,4 +300,69 @@ pub fn export_file_name(design: &Design, size: (u32, u32), ext: &str) -> String 
         size.0,
         size.1
     )
+}
+
+impl crate::app::MarblingApp {
+    /// Starts Export PNG of the current design at the chosen size.
+    pub(crate) fn start_png_export(&mut self, frame: &eframe::Frame) {
+        let Some(rs) = frame.wgpu_render_state() else {
+            self.error("Export PNG needs the GPU renderer, which is not available");
+            return;
+        };
+        let design: &Design = match self.editor.mode {
+            Mode::Noise => &self.editor.shown.design,
+            Mode::Marbling => self.editor.history.design(),
+        };
+        let scale = self.panels.export_size.scale(design);
+        match PngExport::start(&rs.device, &rs.queue, design, scale, self.prefs.antialias) {
+            Ok(export) => {
+                let name = export_file_name(design, export.size(), "png");
+                let (w, h) = export.size();
+                self.info(format!("exporting {w}×{h} PNG…"));
+                self.rendering.export = Some((export, name));
+            }
+            Err(e) => self.error(format!("Export PNG: {e}")),
+        }
+    }
+
+    /// Moves a running PNG export on by one tile; hands the file over when complete.
+    pub(crate) fn advance_export(&mut self, frame: &eframe::Frame, ctx: &egui::Context) {
+        let Some((mut export, name)) = self.rendering.export.take() else {
+            return;
+        };
+        let Some(rs) = frame.wgpu_render_state() else {
+            self.error("Export PNG: the GPU renderer went away");
+            return;
+        };
+        match export.step(&rs.device, &rs.queue) {
+            Ok(ExportStep::Working { .. }) => {
+                self.rendering.export = Some((export, name));
+                ctx.request_repaint();
+            }
+            Ok(ExportStep::Finished(image)) => match image.to_png() {
+                Ok(bytes) => match platform::save_file(&name, "image/png", &bytes) {
+                    Ok(()) => self.info(format!("exported {name}")),
+                    Err(e) => self.error(e),
+                },
+                Err(e) => self.error(format!("Export PNG: {e}")),
+            },
+            Err(e) => self.error(format!("Export PNG: {e}")),
+        }
+    }
+
+    /// Export SVG: the design's ink outlines traced forward (T = 1 design pixel).
+    pub(crate) fn export_svg(&mut self) {
+        let design = self.editor.history.design();
+        let opts = marbling_vector::TraceOptions::default();
+        match marbling_vector::design_to_svg(design, &opts) {
+            Ok(svg) => {
+                let name = export_file_name(design, (design.width, design.height), "svg");
+                match platform::save_file(&name, "image/svg+xml", svg.as_bytes()) {
+                    Ok(()) => self.info(format!("exported {name} ({} bytes)", svg.len())),
+                    Err(e) => self.error(e),
+                }
+            }
+            Err(e) => self.error(format!("Export SVG: {e}")),
+        }
+    }
 }

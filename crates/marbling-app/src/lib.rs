@@ -20,6 +20,7 @@ pub mod gallery;
 pub mod gallery_gpu;
 pub mod gpu_errors;
 pub mod history;
+mod hooks;
 mod labels;
 pub mod landing;
 pub mod layout;
@@ -44,6 +45,7 @@ pub mod style;
 #[cfg(test)]
 mod test_window;
 pub mod thumbnails;
+mod tool_panel;
 mod tool_rail;
 pub mod tools;
 pub mod view;

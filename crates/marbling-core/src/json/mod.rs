@@ -15,6 +15,7 @@
 //! holds it: 1 when it uses neither v2's surfaces nor v3's ops.
 
 mod read;
+mod read_surface;
 mod write;
 
 use crate::Design;

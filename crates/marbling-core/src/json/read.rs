@@ -2,7 +2,6 @@
 
 use crate::design::{CURRENT_VERSION, SUPPORTED_VERSIONS};
 use crate::ops::{OP_TYPES_V3, op_fields};
-use crate::surface::{GrainKind, NoiseBackground, NoiseLayer, Overlay, Palette};
 use crate::validate::{Checker, FieldError};
 use crate::{
     Circular, Comb, Design, Drop, DropSet, GestureSpan, Jiggle, Op, Radii, Rake, Recipe, Rgb8,
@@ -45,7 +44,7 @@ const TOP_FIELDS_V1: &[&str] = &[
 ];
 
 /// The shared path reader plus the design schema's own parts and rules.
-struct Reader {
+pub(super) struct Reader {
     json: PathReader,
     /// The document's `"version"` (v3 op types need 3).
     version: u64,
@@ -66,7 +65,7 @@ impl DerefMut for Reader {
 
 impl Reader {
     /// The schema's value rules, reporting into this reader's problems.
-    fn rules(&mut self) -> Checker<'_> {
+    pub(super) fn rules(&mut self) -> Checker<'_> {
         Checker {
             errors: &mut self.json.errors,
         }
@@ -537,96 +536,5 @@ impl Reader {
             }
         }
         ok.then_some(spans)
-    }
-
-    /// A noise spec at `path`, its problems reported under that path.
-    fn noise(&mut self, path: &str, v: Option<&Value>) -> Option<NoiseLayer> {
-        let Some(v) = v else {
-            self.push(path, "missing");
-            return None;
-        };
-        match NoiseLayer::from_value(v) {
-            Ok(n) => Some(n),
-            Err(problems) => {
-                self.errors
-                    .extend(problems.into_iter().map(|p| p.under(path)));
-                None
-            }
-        }
-    }
-
-    fn palette(&mut self, path: &str, v: Option<&Value>) -> Option<Palette> {
-        let result = match v {
-            None => Palette::named("grey"),
-            Some(Value::String(name)) => Palette::named(name),
-            Some(Value::Array(items)) => {
-                let mut stops = Vec::new();
-                for (i, it) in items.iter().enumerate() {
-                    match it.as_str().map(str::parse::<Rgb8>) {
-                        Some(Ok(c)) => stops.push(c),
-                        _ => self.push(
-                            format!("{path}[{i}]"),
-                            format!("must be a colour \"#rrggbb\", got {}", short(it)),
-                        ),
-                    }
-                }
-                if stops.len() != items.len() {
-                    return None;
-                }
-                Palette::from_stops(stops)
-            }
-            Some(other) => {
-                self.push(
-                    path,
-                    format!(
-                        "must be a palette name or an array of \"#rrggbb\", got {}",
-                        short(other)
-                    ),
-                );
-                return None;
-            }
-        };
-        result.map_err(|e| self.push(path, e.to_string())).ok()
-    }
-
-    fn noise_background(&mut self, v: &Value) -> Option<NoiseBackground> {
-        let obj = self.object("background", v, &["noise", "palette"])?;
-        let noise = self.noise("background.noise", obj.get("noise"));
-        let palette = self.palette("background.palette", obj.get("palette"));
-        Some(NoiseBackground::new(noise?, palette?))
-    }
-
-    fn overlay(&mut self, i: usize, v: &Value) -> Option<Overlay> {
-        let path = format!("overlays[{i}]");
-        let obj = self.object(&path, v, &["type", "noise", "strength"])?;
-        let kind = match obj.get("type") {
-            Some(Value::String(s)) if s == "paper-grain" => Some(GrainKind::Paper),
-            Some(Value::String(s)) if s == "pigment-grain" => Some(GrainKind::Pigment),
-            Some(other) => {
-                self.push(
-                    format!("{path}.type"),
-                    format!(
-                        "unknown overlay type {}; expected one of {}",
-                        short(other),
-                        crate::OVERLAY_TYPES.join(", ")
-                    ),
-                );
-                None
-            }
-            None => {
-                self.push(format!("{path}.type"), "missing");
-                None
-            }
-        };
-        let noise = self.noise(&format!("{path}.noise"), obj.get("noise"));
-        let strength = self.number(&path, obj, "strength");
-        if let Some(s) = strength {
-            self.rules().strength(&format!("{path}.strength"), s);
-        }
-        Some(Overlay {
-            kind: kind?,
-            noise: noise?,
-            strength: strength?,
-        })
     }
 }

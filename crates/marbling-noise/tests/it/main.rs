@@ -6,4 +6,5 @@ mod gabor;
 mod gpu;
 mod noises;
 mod snapshots;
+mod spec_errors;
 mod wgsl;
