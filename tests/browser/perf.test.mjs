@@ -12,6 +12,7 @@
 // Chromium runs where it cannot use the GPU), and with PERF_SECONDS=8 it measures for
 // as long as docs/BENCHMARKS.md's numbers did:
 //   cd tests/browser && PERF_SETUPS=all PERF_SECONDS=8 node --test perf.test.mjs
+// PERF_QUERY='&fast_paint=off' measures the drag without the software-GPU shortcuts.
 import { after, before, describe, test } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
@@ -55,7 +56,8 @@ for (const { name, backend, flags } of SETUPS) {
 
     test('dragging a tine over a 1,000-op design draws only preview frames', async () => {
       const link = execFileSync(MARBLING, ['link', design, '--base', site.url]).toString().trim();
-      const { page, context, errors } = await openPage(browser, site, link.slice(link.indexOf('#')), { width: 1024, height: 768 });
+      const query = process.env.PERF_QUERY ?? '';
+      const { page, context, errors } = await openPage(browser, site, query + link.slice(link.indexOf('#')), { width: 1024, height: 768 });
       assert.equal(await attr(page, 'data-ops'), '1000');
       // The app builds its live-preview cache in the idle frame after the exact one.
       await page.waitForFunction(() => document.body.dataset.previewReady === '1', null, { timeout: READY_MS });
@@ -73,7 +75,8 @@ for (const { name, backend, flags } of SETUPS) {
       const dragFps = await wiggle(page, x, y, SECONDS * 1000);
       const during = await work(page);
       await page.mouse.up();
-      console.log(`${name}: 1,000 ops at 1024×768 (scale ${s.scale.toFixed(3)}): hover ${hoverFps.toFixed(1)} frames/s, tine drag ${dragFps.toFixed(1)} frames/s (first 2 s: ${settleFps.toFixed(1)}), ${during.preview - before.preview} preview frames, preview ${during.preview_samples} sample(s)/px`);
+      console.log(`${name}${query}: fast paint ${await attr(page, 'data-fast-paint')}`);
+      console.log(`${name}${query}: 1,000 ops at 1024×768 (scale ${s.scale.toFixed(3)}): hover ${hoverFps.toFixed(1)} frames/s, tine drag ${dragFps.toFixed(1)} frames/s (first 2 s: ${settleFps.toFixed(1)}), ${during.preview - before.preview} preview frames, preview ${during.preview_samples} sample(s)/px`);
       assert.equal(during.exact, before.exact, 'the drag re-rendered the design exactly');
       assert.equal(during.tiles, before.tiles, 'the drag drew tiles of an exact frame or cache');
       assert.equal(during.caches, before.caches, 'the drag rebuilt the preview cache');
