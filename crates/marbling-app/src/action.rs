@@ -121,7 +121,7 @@ impl MarblingApp {
             }
             Action::NewSheet => {
                 let mut d = crate::app::blank(self.panels.new_size);
-                d.background = crate::PALETTES[self.prefs.palette].background;
+                d.background = crate::INK_SETS[self.prefs.palette].background;
                 self.replace_document(
                     d,
                     format!(

@@ -11,7 +11,7 @@ use crate::prefs::Prefs;
 use crate::recovery::{self, LostFlag, ParkedState};
 use crate::state::{Editor, Hooks, Panels, Rendering, Session};
 use crate::tools::{Gesture, ToolKind, ToolSettings};
-use crate::{History, PALETTES};
+use crate::{History, INK_SETS};
 use marbling_core::{Antialias, Design, DesignError, Rgb8, decode_share, share_fragment};
 use std::sync::Arc;
 
@@ -151,7 +151,7 @@ impl MarblingApp {
 
     /// An app showing `design` (no window needed: used by tests too).
     pub fn with_design(design: Design, backend: String, gpu: bool) -> Self {
-        let palette = PALETTES[0];
+        let palette = INK_SETS[0];
         Self {
             editor: Editor::new(design),
             prefs: Prefs {

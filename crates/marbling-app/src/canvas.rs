@@ -259,7 +259,7 @@ impl MarblingApp {
         if !self.prefs.settings.cycle_colors {
             return vec![ink];
         }
-        let palette = crate::PALETTES[self.prefs.palette.min(crate::PALETTES.len() - 1)].inks;
+        let palette = crate::INK_SETS[self.prefs.palette.min(crate::INK_SETS.len() - 1)].inks;
         match palette.iter().position(|&c| c == ink) {
             Some(i) => palette[i..].iter().chain(&palette[..i]).copied().collect(),
             None => std::iter::once(ink)

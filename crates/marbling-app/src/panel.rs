@@ -1,7 +1,7 @@
 //! The side panel (files, inks, history, recent designs; the Tool section is
 //! src/tool_panel.rs) and the status bar.
 
-use crate::PALETTES;
+use crate::INK_SETS;
 use crate::action::Action;
 use crate::app::MarblingApp;
 use crate::export::ExportSize;
@@ -182,17 +182,17 @@ impl MarblingApp {
         ui.label(RichText::new("Ink").strong());
         let before = self.prefs.palette;
         egui::ComboBox::from_label("palette")
-            .selected_text(PALETTES[self.prefs.palette].name)
+            .selected_text(INK_SETS[self.prefs.palette].name)
             .show_ui(ui, |ui| {
-                for (i, p) in PALETTES.iter().enumerate() {
+                for (i, p) in INK_SETS.iter().enumerate() {
                     ui.selectable_value(&mut self.prefs.palette, i, p.name);
                 }
             });
         if self.prefs.palette != before {
-            self.prefs.ink = PALETTES[self.prefs.palette].inks[0];
+            self.prefs.ink = INK_SETS[self.prefs.palette].inks[0];
         }
         ui.horizontal_wrapped(|ui| {
-            for &c in PALETTES[self.prefs.palette].inks {
+            for &c in INK_SETS[self.prefs.palette].inks {
                 let selected = c == self.prefs.ink;
                 let (rect, resp) =
                     ui.allocate_exact_size(egui::vec2(24.0, 24.0), egui::Sense::click());

@@ -15,7 +15,7 @@ pub struct Prefs {
     pub tool: ToolKind,
     /// Every tool's parameters.
     pub settings: ToolSettings,
-    /// Index into [`crate::PALETTES`].
+    /// Index into [`crate::INK_SETS`].
     pub palette: usize,
     /// The current ink.
     pub ink: Rgb8,
@@ -53,7 +53,7 @@ impl Prefs {
         Ok(Prefs {
             tool: s.tool,
             settings,
-            palette: s.palette.min(crate::PALETTES.len() - 1),
+            palette: s.palette.min(crate::INK_SETS.len() - 1),
             ink: s.ink.parse().unwrap_or(defaults.ink),
             antialias: Antialias::ALL
                 .into_iter()

@@ -1,10 +1,11 @@
-//! Built-in ink palettes, named after the papers they suit.
+//! Built-in ink sets (the panel's ink palettes), named after the papers they suit.
+//! Not to be confused with a noise background's colour ramp (`marbling_core::Palette`).
 
 use marbling_core::Rgb8;
 
 /// A named set of ink colours and a suggested background.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Palette {
+pub struct InkSet {
     /// Name shown in the panel.
     pub name: &'static str,
     /// Paper colour that suits the inks.
@@ -17,9 +18,9 @@ const fn c(hex: u32) -> Rgb8 {
     Rgb8::new((hex >> 16) as u8, (hex >> 8) as u8, hex as u8)
 }
 
-/// The palettes offered in the app.
-pub const PALETTES: [Palette; 5] = [
-    Palette {
+/// The ink sets offered in the app.
+pub const INK_SETS: [InkSet; 5] = [
+    InkSet {
         name: "Ottoman earth",
         background: c(0xf4ecd8),
         inks: &[
@@ -30,7 +31,7 @@ pub const PALETTES: [Palette; 5] = [
             c(0xf4f1de),
         ],
     },
-    Palette {
+    InkSet {
         name: "Indigo & saffron",
         background: c(0xf7f3e8),
         inks: &[
@@ -41,7 +42,7 @@ pub const PALETTES: [Palette; 5] = [
             c(0x98c1d9),
         ],
     },
-    Palette {
+    InkSet {
         name: "Rose",
         background: c(0xf7efe2),
         inks: &[
@@ -52,7 +53,7 @@ pub const PALETTES: [Palette; 5] = [
             c(0x355070),
         ],
     },
-    Palette {
+    InkSet {
         name: "Florentine",
         background: c(0xefe6d2),
         inks: &[
@@ -63,7 +64,7 @@ pub const PALETTES: [Palette; 5] = [
             c(0xd8c3a5),
         ],
     },
-    Palette {
+    InkSet {
         name: "Ink & paper",
         background: c(0xfafafa),
         inks: &[
