@@ -1,11 +1,11 @@
-//! `marbling noise`: evaluates a noise spec (JSON) to an 8-bit PNG, greyscale 0.5 + n/6
-//! (n at zero mean and unit variance, clamped) or coloured when the spec has a palette or
-//! blend.
+//! `marbling noise`: evaluates a noise spec (JSON) to a PNG of up to 16384² pixels, 8 or
+//! 16 bits per sample, greyscale 0.5 + n/6 (n at zero mean and unit variance, clamped; or
+//! the spec's transfer) or coloured when the spec has a palette or blend.
 
 use crate::input::{display_name, read_text};
 use anyhow::{Context, Result, bail};
 use clap::Args;
-use marbling_noise::{MAX_SIZE, NoiseSpec, Renderer, SpecError};
+use marbling_noise::{Depth, MAX_SIZE, NoiseSpec, Renderer, SpecError};
 
 /// Arguments of `marbling noise`.
 #[derive(Args)]
@@ -15,9 +15,12 @@ pub struct NoiseArgs {
     /// Output PNG path.
     #[arg(short, long)]
     output: String,
-    /// Side of the square output, pixels.
+    /// Side of the square output, pixels (a tiling spec repeats with this period).
     #[arg(long, default_value_t = 256)]
     size: u32,
+    /// Bits per sample: 8, or 16 for height maps (greyscale or RGB as the spec says).
+    #[arg(long, default_value_t = 8)]
+    depth: u8,
 }
 
 /// Reads a spec, reporting every problem prefixed with the input name.
@@ -42,48 +45,55 @@ fn read_spec(path: &str) -> Result<NoiseSpec> {
     }
 }
 
-/// Renders rows in parallel on all cores.
-fn render(renderer: &Renderer) -> Vec<[u8; 3]> {
-    let size = renderer.size();
-    let threads = std::thread::available_parallelism()
-        .map_or(1, |n| n.get())
-        .min(size as usize) as u32;
-    let chunk = size.div_ceil(threads);
-    std::thread::scope(|s| {
-        let handles: Vec<_> = (0..threads)
-            .map(|t| {
-                let rows = (t * chunk).min(size)..((t + 1) * chunk).min(size);
-                s.spawn(move || renderer.render_rows(rows))
-            })
-            .collect();
-        handles
-            .into_iter()
-            .flat_map(|h| h.join().unwrap_or_default())
-            .collect()
-    })
-}
+/// Rows rendered per thread between writes: bounds memory whatever the size.
+const ROWS_PER_THREAD: u32 = 16;
 
-fn encode(size: u32, greyscale: bool, pixels: &[[u8; 3]]) -> Result<Vec<u8>> {
-    let mut out = Vec::new();
-    {
-        let mut enc = png::Encoder::new(&mut out, size, size);
-        enc.set_color(if greyscale {
-            png::ColorType::Grayscale
-        } else {
-            png::ColorType::Rgb
+/// Renders the image band by band (rows split across all cores) and streams each band
+/// into the PNG encoder, so a 16384² export never holds the whole image.
+fn encode(renderer: &Renderer, depth: Depth, out: impl std::io::Write + 'static) -> Result<()> {
+    let size = renderer.size();
+    let mut enc = png::Encoder::new(out, size, size);
+    enc.set_color(if renderer.greyscale() {
+        png::ColorType::Grayscale
+    } else {
+        png::ColorType::Rgb
+    });
+    enc.set_depth(match depth {
+        Depth::Eight => png::BitDepth::Eight,
+        Depth::Sixteen => png::BitDepth::Sixteen,
+    });
+    let mut stream = enc
+        .write_header()
+        .context("cannot encode PNG")?
+        .into_stream_writer()
+        .context("cannot encode PNG")?;
+    let threads = std::thread::available_parallelism().map_or(1, |n| n.get()) as u32;
+    let band = threads * ROWS_PER_THREAD;
+    for start in (0..size).step_by(band as usize) {
+        let rows = start..(start + band).min(size);
+        let chunks: Vec<Vec<u8>> = std::thread::scope(|s| {
+            let handles: Vec<_> = (0..threads)
+                .map(|t| {
+                    let lo = (rows.start + t * ROWS_PER_THREAD).min(rows.end);
+                    let hi = (lo + ROWS_PER_THREAD).min(rows.end);
+                    s.spawn(move || {
+                        (lo..hi)
+                            .flat_map(|j| renderer.png_row(j, depth))
+                            .collect::<Vec<u8>>()
+                    })
+                })
+                .collect();
+            handles
+                .into_iter()
+                .map(|h| h.join().unwrap_or_default())
+                .collect()
         });
-        enc.set_depth(png::BitDepth::Eight);
-        let data: Vec<u8> = if greyscale {
-            pixels.iter().map(|p| p[0]).collect()
-        } else {
-            pixels.iter().flatten().copied().collect()
-        };
-        let mut writer = enc.write_header().context("cannot encode PNG")?;
-        writer
-            .write_image_data(&data)
-            .context("cannot encode PNG")?;
+        for chunk in chunks {
+            std::io::Write::write_all(&mut stream, &chunk).context("cannot encode PNG")?;
+        }
     }
-    Ok(out)
+    stream.finish().context("cannot encode PNG")?;
+    Ok(())
 }
 
 /// Runs `marbling noise`.
@@ -91,12 +101,15 @@ pub fn run(args: &NoiseArgs) -> Result<()> {
     if args.size == 0 || args.size > MAX_SIZE {
         bail!("--size must be in 1..={MAX_SIZE}, got {}", args.size);
     }
+    let depth = match args.depth {
+        8 => Depth::Eight,
+        16 => Depth::Sixteen,
+        d => bail!("--depth must be 8 or 16, got {d}"),
+    };
     let spec = read_spec(&args.spec)?;
     let renderer = Renderer::new(&spec, args.size)?;
-    let pixels = render(&renderer);
-    if pixels.len() != (args.size as usize).pow(2) {
-        bail!("rendering failed (a worker thread panicked)");
-    }
-    let png = encode(args.size, renderer.greyscale(), &pixels)?;
-    std::fs::write(&args.output, png).with_context(|| format!("cannot write '{}'", args.output))
+    let file = std::fs::File::create(&args.output)
+        .with_context(|| format!("cannot write '{}'", args.output))?;
+    encode(&renderer, depth, std::io::BufWriter::new(file))
+        .with_context(|| format!("cannot write '{}'", args.output))
 }

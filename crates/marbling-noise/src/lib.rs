@@ -48,7 +48,7 @@ pub use perlin::{
 };
 pub use ramp::{ColorRamp, PALETTES, Rgb, parse_hex};
 pub use render::{
-    MAX_SIZE, NoiseImage, RenderError, Renderer, noise_field, noise_to_grey, sample_grid,
+    Depth, MAX_SIZE, NoiseImage, RenderError, Renderer, noise_field, noise_to_grey, sample_grid,
 };
 pub use spec::{
     Blend, BlendBase, DecayValue, DriveSpec, FieldError, MAX_IMPULSES, NOISE_TYPES, NoiseSpec,

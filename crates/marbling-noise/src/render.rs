@@ -15,7 +15,27 @@ use crate::worley::{Metric, WorleyFeature, worley_normalised};
 use std::sync::Arc;
 
 /// Largest output side accepted by [`Renderer::new`].
-pub const MAX_SIZE: u32 = 8192;
+pub const MAX_SIZE: u32 = 16384;
+
+/// Bits per PNG sample of an export.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Depth {
+    /// 256 levels.
+    Eight,
+    /// 65,536 levels (height maps).
+    Sixteen,
+}
+
+impl Depth {
+    /// Bytes per sample.
+    #[must_use]
+    pub fn bytes(self) -> usize {
+        match self {
+            Depth::Eight => 1,
+            Depth::Sixteen => 2,
+        }
+    }
+}
 
 /// Why a spec could not be rendered.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
@@ -313,6 +333,34 @@ impl Renderer {
             greyscale: !self.spec.is_colored(),
             pixels: self.render_rows(0..self.size),
         }
+    }
+
+    /// Row `j` as PNG sample bytes: one grey sample per pixel when the output is
+    /// greyscale, else RGB; each sample 8-bit, or 16-bit big-endian (`round(v · 65535)`
+    /// of the intensity or colour component v).
+    #[must_use]
+    pub fn png_row(&self, j: u32, depth: Depth) -> Vec<u8> {
+        let grey = self.greyscale();
+        let channels = if grey { 1 } else { 3 };
+        let mut out = Vec::with_capacity(self.size as usize * channels * depth.bytes());
+        for i in 0..self.size {
+            let (x, y) = (i as f32 + 0.5, j as f32 + 0.5);
+            let c = if grey {
+                [self.intensity(x, y); 3]
+            } else {
+                self.color(x, y)
+            };
+            for &v in &c[..channels] {
+                let v = v.clamp(0.0, 1.0);
+                match depth {
+                    Depth::Eight => out.push((v * 255.0).round() as u8),
+                    Depth::Sixteen => {
+                        out.extend_from_slice(&((v * 65535.0).round() as u16).to_be_bytes());
+                    }
+                }
+            }
+        }
+        out
     }
 
     /// Side of the output, pixels.
