@@ -8,7 +8,7 @@ CARGO ?= cargo
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 MARBLING := target/release/marbling
 
-.PHONY: run dist icons test gallery setup-rust setup-gpu setup-web setup-browser fmt-check clippy unit wasm-check bench bench-gpu web browser-test noise-gallery bench-noise bench-svg
+.PHONY: run dist icons test gallery setup-rust setup-gpu setup-web setup-browser fmt-check clippy unit wasm-check bench bench-gpu web browser-test noise-gallery bench-noise bench-noise-export bench-svg
 
 TRUNK_VERSION := 0.21.14
 # Must equal the wasm-bindgen version in Cargo.lock (see crates/marbling-app/Cargo.toml).
@@ -115,6 +115,10 @@ noise-gallery: $(MARBLING)
 ## Noise throughput against fastnoise-lite, Gabor ms/megapixel (see docs/BENCHMARKS.md).
 bench-noise: setup-gpu
 	WGPU_BACKEND=vulkan $(CARGO) bench -p marbling-noise --bench noise
+
+## Export time of a 4096² noise per type, CPU and GPU (see docs/BENCHMARKS.md).
+bench-noise-export: setup-gpu
+	WGPU_BACKEND=vulkan $(CARGO) bench -p marbling-noise --bench export
 
 ## Vector export: time, vertices and SVG size (see docs/BENCHMARKS.md).
 bench-svg: $(MARBLING)

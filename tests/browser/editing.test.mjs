@@ -8,6 +8,7 @@ import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import { PNG } from 'pngjs';
+import zlib from 'node:zlib';
 import {
   BACKENDS, MARBLING, READY_MS, SHOTS, attr, clickControl, controls, crop, decode, differing, download, example,
   launch, openPage, sheet, shootSheet, waitOps, waitReady,
@@ -271,6 +272,36 @@ for (const backend of Object.keys(BACKENDS)) {
       assert.equal(saved.version, 3);
       assert.equal(saved.background.noise.type, 'perlin');
       assert.equal(saved.ops.length, n);
+      assert.deepEqual(errors, []);
+      await context.close();
+    });
+
+    // One backend is enough: links and storage do not touch the GPU.
+    test('a #n= link opens the Noise tab, a broken one keeps it, and the setup survives a reload', { skip: backend !== 'webgpu' }, async () => {
+      // Encoded as the app encodes it: raw DEFLATE, base64url without padding.
+      const spec = { type: 'worley', frequency: 0.04, feature: 'f2', metric: 'euclidean', seed: 5, palette: 'ember' };
+      const link = `#n=${zlib.deflateRawSync(Buffer.from(JSON.stringify(spec))).toString('base64url')}`;
+      const { page, context, errors } = await openPage(browser, site, link);
+      await page.waitForFunction(() => document.body.dataset.mode === 'noise' && document.body.dataset.ready === '1', null, { timeout: READY_MS });
+      const opened = JSON.parse(await attr(page, 'data-noise'));
+      for (const [k, v] of Object.entries(spec)) assert.equal(opened[k], v, `${k} of the opened spec`);
+      assert.equal(await attr(page, 'data-error'), null);
+      await page.evaluate(() => { window.location.hash = '#n=@@not-base64'; });
+      await page.waitForFunction(() => document.body.dataset.error !== undefined, null, { timeout: READY_MS });
+      assert.match(await attr(page, 'data-error'), /^share link: not valid base64url/);
+      assert.equal(await attr(page, 'data-mode'), 'noise');
+      assert.deepEqual(JSON.parse(await attr(page, 'data-noise')), opened, 'a broken link changed the noise');
+      // A reload without the link restores the setup from storage.
+      await page.waitForTimeout(1500);
+      await page.goto(`${site.url}?landing=0`);
+      await waitReady(page);
+      assert.deepEqual(JSON.parse(await attr(page, 'data-noise')), opened, 'the noise setup was not kept');
+      // The threshold transfer from the panel goes into the spec.
+      await clickControl(page, 'mode-noise');
+      await page.waitForFunction(() => document.body.dataset.mode === 'noise', null, { timeout: READY_MS });
+      await clickControl(page, 'noise-threshold');
+      await page.waitForFunction(() => JSON.parse(document.body.dataset.noise).transfer?.type === 'threshold', null, { timeout: READY_MS });
+      assert.deepEqual(JSON.parse(await attr(page, 'data-noise')).transfer, { type: 'threshold', threshold: 0, width: 0.5, invert: false });
       assert.deepEqual(errors, []);
       await context.close();
     });

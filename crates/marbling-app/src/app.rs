@@ -137,6 +137,16 @@ impl MarblingApp {
             }
         }
         app.session.stored_prefs.0 = Some(app.prefs);
+        if let Some(text) = load(crate::noise_settings::KEY) {
+            let restored = marbling_noise::NoiseSpec::from_json(&text)
+                .map_err(|e| e.to_string())
+                .and_then(|spec| app.editor.noise.with_spec(spec));
+            match restored {
+                Ok(s) => app.editor.noise = s,
+                Err(e) => log::warn!("the stored noise setup was not restored: {e}"),
+            }
+        }
+        app.session.stored_noise = Some(app.editor.noise.clone());
         if let Some(text) = load(crate::recent::KEY) {
             app.session.recent = crate::recent::Recent::decode(&text);
         }
@@ -302,6 +312,28 @@ impl MarblingApp {
             return;
         }
         self.editor.last_fragment = fragment.clone();
+        if let Some(f) = fragment
+            .as_deref()
+            .filter(|f| f.split('&').any(|p| p.starts_with("n=")))
+        {
+            let opened = marbling_core::decode_noise_share(f)
+                .map_err(|e| e.to_string())
+                .and_then(|spec| {
+                    self.editor
+                        .noise
+                        .with_spec(spec)
+                        .map_err(|e| format!("noise link: {e}"))
+                });
+            match opened {
+                Ok(s) => {
+                    self.editor.noise = s;
+                    self.set_mode(Mode::Noise);
+                    self.info("noise link opened");
+                }
+                Err(e) => self.error(first_line_of(&e)),
+            }
+            return;
+        }
         let Some(f) = fragment.filter(|f| f.split('&').any(|p| p.starts_with("d="))) else {
             return;
         };

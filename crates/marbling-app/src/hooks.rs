@@ -89,6 +89,15 @@ impl MarblingApp {
                     / self.hooks.frame_times.len() as f64
             )
         });
+        if self
+            .hooks
+            .noise_json
+            .as_ref()
+            .is_none_or(|(s, _)| *s != self.editor.noise)
+        {
+            let json = self.editor.noise.export_spec().to_value().to_string();
+            self.hooks.noise_json = Some((self.editor.noise.clone(), json));
+        }
         let controls = self
             .hooks
             .controls
@@ -138,6 +147,10 @@ impl MarblingApp {
             ("data-controls", Some(controls)),
             ("data-exporting", exporting),
             ("data-mode", Some(self.editor.mode.name().to_owned())),
+            (
+                "data-noise",
+                self.hooks.noise_json.as_ref().map(|(_, j)| j.clone()),
+            ),
             ("data-layout", Some(self.panels.layout.name().to_owned())),
             (
                 "data-focus",

@@ -9,7 +9,9 @@ use egui_plot::{Bar, BarChart, Line, Plot};
 use marbling_core::{GrainKind, NoiseBackground, NoiseLayer, Overlay, Palette};
 use marbling_noise::analysis::{Stats, histogram, radial_spectrum, stats};
 use marbling_noise::ranges::{self, Range};
-use marbling_noise::{EDIT_FLOOR, FbmParams, FiberLayout, NOISE_TYPES, NoiseSpec, Source};
+use marbling_noise::{
+    EDIT_FLOOR, FbmParams, FiberLayout, NOISE_TYPES, NoiseSpec, Source, Threshold, Transfer,
+};
 use std::ops::RangeInclusive;
 
 /// Side of the sample grid the statistics and spectrum are computed on, design pixels.
@@ -79,6 +81,7 @@ impl MarblingApp {
                 }
             });
         noise_parameters(ui, &mut s.spec);
+        let threshold = threshold_transfer(ui, &mut s.spec);
         egui::ComboBox::from_label("palette")
             .selected_text(s.palette_name())
             .show_ui(ui, |ui| {
@@ -89,6 +92,7 @@ impl MarblingApp {
         let zoom_box = ui
             .checkbox(&mut s.zoom_independent, "zoom-independent")
             .on_hover_text("Keep features 4–40 screen pixels wide while zooming (octave steps)");
+        self.control("noise-threshold", &threshold);
         self.control("noise-zoom-independent", &zoom_box);
         let factor = self.noise_zoom_factor();
         if factor != 1.0 {
@@ -148,16 +152,26 @@ impl MarblingApp {
         ui.horizontal_wrapped(|ui| {
             let link = ui
                 .button("Copy noise link")
-                .on_hover_text("A link that opens this noise as a design");
+                .on_hover_text("A link (#n=) that opens this noise in the Noise tab");
             self.control("noise-copy-link", &link);
             if link.clicked() {
                 let link = format!(
                     "{}#{}",
                     crate::platform::base_url(),
-                    marbling_core::share_fragment(&self.editor.shown.design)
+                    marbling_core::noise_fragment(&self.editor.noise.export_spec())
                 );
                 ui.ctx().copy_text(link.clone());
                 self.info(format!("noise link copied ({} characters)", link.len()));
+            }
+            let copy = ui
+                .button("Copy spec")
+                .on_hover_text("The JSON that `marbling noise SPEC -o OUT.png` renders");
+            self.control("noise-copy-spec", &copy);
+            if copy.clicked() {
+                let v = self.editor.noise.export_spec().to_value();
+                ui.ctx()
+                    .copy_text(serde_json::to_string_pretty(&v).unwrap_or_else(|_| v.to_string()));
+                self.info("noise spec copied");
             }
         });
         ui.label(RichText::new("Use on the design").strong());
@@ -253,6 +267,39 @@ impl MarblingApp {
             });
         }
     }
+}
+
+/// The spec's threshold transfer (seed 004's smoothstep of the noise): a checkbox that
+/// turns it on, with its level, width and inversion. Returns the checkbox's response.
+fn threshold_transfer(ui: &mut egui::Ui, spec: &mut NoiseSpec) -> egui::Response {
+    let mut on = matches!(spec.transfer, Some(Transfer::Threshold(_)));
+    let response = ui.checkbox(&mut on, "threshold").on_hover_text(
+        "Intensity = a smoothstep of the noise around a level (sharp-edged patches)",
+    );
+    match (on, &mut spec.transfer) {
+        (true, Some(Transfer::Threshold(t))) => {
+            // The level in noise standard deviations: ±3σ holds nearly every value.
+            ui.add(Slider::new(&mut t.threshold, -3.0..=3.0).text("level (σ)"));
+            ui.add(
+                Slider::new(
+                    &mut t.width,
+                    slider(ranges::THRESHOLD_WIDTH).start().max(0.01)..=3.0,
+                )
+                .text("edge width (σ)")
+                .logarithmic(true),
+            );
+            ui.checkbox(&mut t.invert, "invert");
+        }
+        (true, _) => {
+            spec.transfer = Some(Transfer::Threshold(Threshold {
+                threshold: 0.0,
+                width: 0.5,
+                invert: false,
+            }));
+        }
+        (false, _) => spec.transfer = None,
+    }
+    response
 }
 
 /// A slider's range for a spec range (open ranges start at [`EDIT_FLOOR`]).

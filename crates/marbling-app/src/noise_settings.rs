@@ -3,7 +3,10 @@
 //! seed 004's zoom-independent frequency rule.
 
 use marbling_core::{Design, NoiseBackground, NoiseLayer, Palette, Rgb8};
-use marbling_noise::{NoiseSpec, Source};
+use marbling_noise::{ColorRamp, NoiseSpec, Source};
+
+/// Storage key of the noise setup (the JSON of [`NoiseSettings::export_spec`]).
+pub const KEY: &str = "marbling.noise.v1";
 
 /// What the noise panel edits.
 #[derive(Clone, Debug, PartialEq)]
@@ -66,6 +69,44 @@ impl NoiseSettings {
         })
     }
 
+    /// The spec with the panel's palette in it: what *Copy spec*, the `#n=` link and the
+    /// stored setup hold, and what `marbling noise` renders as the panel shows it.
+    pub fn export_spec(&self) -> NoiseSpec {
+        NoiseSpec {
+            palette: ColorRamp::named(self.palette_name()),
+            ..self.spec.clone()
+        }
+    }
+
+    /// These settings with `spec` (from a link, a file or storage), its palette taken
+    /// for the panel's; an error naming the field when the playground cannot show it (a
+    /// palette of its own stops, tiling, a blend, a spline decay, a product).
+    pub fn with_spec(&self, mut spec: NoiseSpec) -> Result<NoiseSettings, String> {
+        let mut palette = self.palette;
+        if let Some(ramp) = spec.palette.take() {
+            let names = marbling_noise::PALETTES;
+            palette = ramp
+                .name()
+                .and_then(|n| names.iter().position(|m| *m == n))
+                .ok_or_else(|| {
+                    format!(
+                        "palette: the playground shows the named palettes ({})",
+                        names.join(", ")
+                    )
+                })?;
+        }
+        NoiseLayer::from_spec(&spec).map_err(|problems| {
+            problems
+                .first()
+                .map_or_else(|| "invalid noise".to_owned(), ToString::to_string)
+        })?;
+        Ok(NoiseSettings {
+            spec,
+            palette,
+            ..self.clone()
+        })
+    }
+
     /// The palette's name.
     pub fn palette_name(&self) -> &'static str {
         let names = marbling_noise::PALETTES;
@@ -124,6 +165,30 @@ mod tests {
             let back = Design::from_json(&d.to_json_compact()).expect("round trip");
             assert_eq!(back, d);
         }
+    }
+
+    #[test]
+    fn the_exported_spec_reads_back_as_the_same_settings() {
+        let mut s = settings("worley");
+        s.palette = 3;
+        let spec = s.export_spec();
+        assert_eq!(spec.to_value()["palette"], marbling_noise::PALETTES[3]);
+        let back = NoiseSettings::default()
+            .with_spec(NoiseSpec::from_value(&spec.to_value()).expect("valid"))
+            .expect("shown");
+        assert_eq!(back.spec, s.spec);
+        assert_eq!(back.palette, 3);
+        let shown = |json: &str| {
+            NoiseSettings::default().with_spec(NoiseSpec::from_json(json).expect("valid"))
+        };
+        let e = shown(r##"{"type":"perlin","frequency":0.1,"palette":["#000000","#123456"]}"##)
+            .expect_err("own stops");
+        assert!(
+            e.starts_with("palette: the playground shows the named palettes"),
+            "{e}"
+        );
+        let e = shown(r#"{"type":"perlin","frequency":0.1,"tile":true}"#).expect_err("tile");
+        assert!(e.starts_with("tile: "), "{e}");
     }
 
     #[test]

@@ -116,6 +116,8 @@ pub struct Session {
     pub pending_writes: Vec<(&'static str, String)>,
     /// The preferences last stored, and when.
     pub stored_prefs: (Option<Prefs>, f64),
+    /// The noise setup last stored.
+    pub stored_noise: Option<crate::noise_settings::NoiseSettings>,
     /// *Recent designs*.
     pub recent: Recent,
     /// True when the recent list must be written.
@@ -129,6 +131,7 @@ impl Default for Session {
             last_autosave_ms: f64::NEG_INFINITY,
             pending_writes: Vec::new(),
             stored_prefs: (None, f64::NEG_INFINITY),
+            stored_noise: None,
             recent: Recent::default(),
             recent_pending: false,
         }
@@ -189,6 +192,8 @@ pub struct Hooks {
     pub frames: u64,
     /// The sheet's top-left corner on the page and CSS pixels per design pixel.
     pub sheet_on_page: Option<[f64; 3]>,
+    /// The noise setup and its spec JSON (for `data-noise`, written when it changes).
+    pub noise_json: Option<(crate::noise_settings::NoiseSettings, String)>,
 }
 
 /// The panels' own state: the status line, file picks, thumbnails, the panel cache and

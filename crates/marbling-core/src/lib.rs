@@ -49,8 +49,8 @@ pub use render::{
 };
 pub use sampling::Antialias;
 pub use share::{
-    MAX_LINK_CHARS, MAX_LINK_JSON_BYTES, ShareError, decode_share, encode_share_payload,
-    encode_share_payload_fast, share_fragment,
+    MAX_LINK_CHARS, MAX_LINK_JSON_BYTES, ShareError, decode_noise_share, decode_share,
+    encode_share_payload, encode_share_payload_fast, noise_fragment, share_fragment,
 };
 pub use surface::{
     GrainKind, MAX_PALETTE_STOPS, NoiseBackground, NoiseLayer, OVERLAY_TYPES, Overlay, Palette,

@@ -1,9 +1,11 @@
 //! Share links: a design's compact JSON, compressed with raw DEFLATE (RFC 1951) and
-//! encoded base64url without padding, carried in a URL fragment as `#d=…`.
+//! encoded base64url without padding, carried in a URL fragment as `#d=…`; a noise
+//! spec's JSON (what `marbling noise` reads) the same way as `#n=…`.
 
 use crate::{Design, DesignError};
 use base64::Engine;
 use base64::engine::general_purpose::URL_SAFE_NO_PAD;
+use marbling_noise::{NoiseSpec, SpecError};
 
 /// Largest inflated design accepted from a link, bytes (100,000 ops fit easily).
 pub const MAX_LINK_JSON_BYTES: usize = 64 << 20;
@@ -34,6 +36,12 @@ pub enum ShareError {
     /// The inflated design is not a valid document.
     #[error("share link: {0}")]
     Design(DesignError),
+    /// The text has no `n=` noise spec in it.
+    #[error("noise link: no \"#n=\" noise spec in it")]
+    MissingNoise,
+    /// The inflated spec is not a valid noise spec.
+    #[error("noise link: {0}")]
+    Noise(SpecError),
 }
 
 /// The fragment payload (what follows `#d=`) for a design.
@@ -48,9 +56,47 @@ pub fn encode_share_payload_fast(design: &Design) -> String {
 }
 
 fn encode_payload(design: &Design, level: u8) -> String {
-    let json = design.to_json_compact();
-    let deflated = miniz_oxide::deflate::compress_to_vec(json.as_bytes(), level);
-    URL_SAFE_NO_PAD.encode(deflated)
+    encode_text(&design.to_json_compact(), level)
+}
+
+/// `text` deflated at `level` and encoded base64url without padding.
+fn encode_text(text: &str, level: u8) -> String {
+    URL_SAFE_NO_PAD.encode(miniz_oxide::deflate::compress_to_vec(
+        text.as_bytes(),
+        level,
+    ))
+}
+
+/// The text carried by fragment parameter `key=` of `link` (a whole link, `#…` or the
+/// fragment alone; other `&`-separated parameters are ignored); `Ok(None)` without one.
+fn decode_text(link: &str, key: &str) -> Result<Option<String>, ShareError> {
+    let fragment = link.rsplit_once('#').map_or(link, |(_, f)| f);
+    let Some(payload) = fragment
+        .split('&')
+        .find_map(|part| part.strip_prefix(key)?.strip_prefix('='))
+    else {
+        return Ok(None);
+    };
+    let deflated = URL_SAFE_NO_PAD
+        .decode(payload.trim())
+        .map_err(|e| ShareError::Base64(e.to_string()))?;
+    let json = miniz_oxide::inflate::decompress_to_vec_with_limit(&deflated, MAX_LINK_JSON_BYTES)
+        .map_err(|e| ShareError::Inflate(format!("{:?}", e.status)))?;
+    String::from_utf8(json)
+        .map(Some)
+        .map_err(|_| ShareError::Utf8)
+}
+
+/// The URL fragment for a noise spec, `n=…` (append to `#`): its JSON as
+/// [`NoiseSpec::to_value`] writes it, compressed like a design link.
+pub fn noise_fragment(spec: &NoiseSpec) -> String {
+    format!("n={}", encode_text(&spec.to_value().to_string(), LEVEL))
+}
+
+/// Reads a noise spec from a link or fragment with `n=…`.
+pub fn decode_noise_share(link: &str) -> Result<NoiseSpec, ShareError> {
+    let text = decode_text(link, "n")?.ok_or(ShareError::MissingNoise)?;
+    NoiseSpec::from_json(&text).map_err(ShareError::Noise)
 }
 
 /// The URL fragment for a design, `d=…` (append to `#`).
@@ -61,18 +107,7 @@ pub fn share_fragment(design: &Design) -> String {
 /// Reads a design from a whole link (`https://…/#d=…`), a fragment (`#d=…` or `d=…`).
 /// Other `&`-separated fragment parameters are ignored.
 pub fn decode_share(link: &str) -> Result<Design, ShareError> {
-    let fragment = link.rsplit_once('#').map_or(link, |(_, f)| f);
-    let payload = fragment
-        .split('&')
-        .find_map(|part| part.strip_prefix("d="))
-        .ok_or(ShareError::Missing)?
-        .trim();
-    let deflated = URL_SAFE_NO_PAD
-        .decode(payload)
-        .map_err(|e| ShareError::Base64(e.to_string()))?;
-    let json = miniz_oxide::inflate::decompress_to_vec_with_limit(&deflated, MAX_LINK_JSON_BYTES)
-        .map_err(|e| ShareError::Inflate(format!("{:?}", e.status)))?;
-    let text = String::from_utf8(json).map_err(|_| ShareError::Utf8)?;
+    let text = decode_text(link, "d")?.ok_or(ShareError::Missing)?;
     Design::from_json(&text).map_err(ShareError::Design)
 }
 
@@ -122,5 +157,31 @@ mod tests {
             err.to_string(),
             "share link: width: missing\nheight: missing\nbackground: missing\nops: missing"
         );
+    }
+
+    #[test]
+    fn a_noise_spec_round_trips_through_an_n_link_and_broken_ones_say_why() {
+        let spec = NoiseSpec::from_json(
+            r#"{"type":"worley","frequency":0.05,"feature":"f2","seed":4,"palette":"ocean","tile":true}"#,
+        )
+        .expect("spec");
+        let fragment = noise_fragment(&spec);
+        let payload = fragment.strip_prefix("n=").expect("n=");
+        let raw = URL_SAFE_NO_PAD.decode(payload).expect("base64url");
+        let json = miniz_oxide::inflate::decompress_to_vec(&raw).expect("raw deflate");
+        assert_eq!(
+            String::from_utf8(json).expect("utf8"),
+            spec.to_value().to_string()
+        );
+        let link = format!("http://127.0.0.1:8080/?landing=0#view=1&{fragment}");
+        assert_eq!(decode_noise_share(&link), Ok(spec));
+        assert_eq!(decode_noise_share("#d=abc"), Err(ShareError::MissingNoise));
+        assert!(matches!(
+            decode_noise_share("#n=@@"),
+            Err(ShareError::Base64(_))
+        ));
+        let bad = encode_text(r#"{"type":"perlin"}"#, 6);
+        let e = decode_noise_share(&format!("#n={bad}")).expect_err("no frequency");
+        assert_eq!(e.to_string(), "noise link: frequency: missing");
     }
 }

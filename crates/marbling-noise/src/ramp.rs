@@ -64,6 +64,15 @@ impl ColorRamp {
         Self::new(hex_list(stops))
     }
 
+    /// The name of the built-in palette this ramp is, if it is one.
+    #[must_use]
+    pub fn name(&self) -> Option<&'static str> {
+        PALETTES
+            .iter()
+            .copied()
+            .find(|n| Self::named(n).as_ref() == Some(self))
+    }
+
     /// The stops, sRGB in [0, 1], evenly spaced from t = 0 to t = 1.
     #[must_use]
     pub fn stops(&self) -> &[Rgb] {

@@ -82,6 +82,8 @@ pub const FIBER_LENGTH: Range = Range::within(1.0, 256.0);
 pub const FIBER_WIDTH: Range = Range::within(1.0, 32.0);
 /// Fibers per 100 px².
 pub const FIBER_DENSITY: Range = Range::above(0.0, 4.0);
+/// Width of a threshold transfer's smoothstep, in noise standard deviations.
+pub const THRESHOLD_WIDTH: Range = Range::above(0.0, 100.0);
 
 /// Gabor `kind` names.
 pub const GABOR_KINDS: [(&str, GaborKind); 3] = [

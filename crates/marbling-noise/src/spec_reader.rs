@@ -473,7 +473,13 @@ impl Reader {
             Some("threshold") => {
                 let obj = self.object(path, v, &["type", "threshold", "width", "invert"])?;
                 let threshold = self.bounded(path, obj, "threshold", Some(0.0), Rule::Any);
-                let width = self.bounded(path, obj, "width", Some(0.5), Rule::Above(0.0, 100.0));
+                let width = self.bounded(
+                    path,
+                    obj,
+                    "width",
+                    Some(0.5),
+                    ranges::THRESHOLD_WIDTH.into(),
+                );
                 let invert = self.boolean(path, obj, "invert");
                 Some(Transfer::Threshold(Threshold {
                     threshold: threshold? as f32,

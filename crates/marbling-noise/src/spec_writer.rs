@@ -1,6 +1,7 @@
 //! The noise spec's writer: [`NoiseSpec::to_value`] gives the JSON that
 //! [`NoiseSpec::from_value`] reads back as the same spec (every field written, defaults
-//! included; numbers in their shortest f32 form; colours as `"#rrggbb"`).
+//! included; numbers in their shortest f32 form; colours as `"#rrggbb"`, a built-in
+//! palette by its name).
 
 use crate::fbm::{Basis, FbmParams};
 use crate::fibers::{FiberLayout, FiberParams};
@@ -31,8 +32,12 @@ fn hex(c: Rgb) -> Value {
     json!(format!("#{r:02x}{g:02x}{b:02x}"))
 }
 
+/// A built-in palette by its name, any other ramp as its stops.
 fn ramp(r: &ColorRamp) -> Value {
-    Value::Array(r.stops().iter().map(|&c| hex(c)).collect())
+    r.name().map_or_else(
+        || Value::Array(r.stops().iter().map(|&c| hex(c)).collect()),
+        |name| json!(name),
+    )
 }
 
 fn fbm_fields(o: &mut Map<String, Value>, p: &FbmParams) {
