@@ -1,11 +1,15 @@
 //! `marbling noise`: evaluates a noise spec (JSON) to a PNG of up to 16384² pixels, 8 or
 //! 16 bits per sample, greyscale 0.5 + n/6 (n at zero mean and unit variance, clamped; or
-//! the spec's transfer) or coloured when the spec has a palette or blend.
+//! the spec's transfer) or coloured when the spec has a palette or blend. Data sets a
+//! spec names (`"data": "wind.png"`, a PNG or a CSV grid) are read from paths relative
+//! to the spec file; `weather` is built in.
 
 use crate::input::{display_name, read_text};
 use anyhow::{Context, Result, bail};
 use clap::Args;
-use marbling_noise::{Depth, MAX_SIZE, NoiseSpec, Renderer, SpecError};
+use marbling_noise::{DataGrid, Depth, MAX_SIZE, NoiseSpec, Renderer, SpecError};
+use std::path::Path;
+use std::sync::Arc;
 
 /// Arguments of `marbling noise`.
 #[derive(Args)]
@@ -23,12 +27,44 @@ pub struct NoiseArgs {
     depth: u8,
 }
 
-/// Reads a spec, reporting every problem prefixed with the input name.
+/// Largest data file read, bytes.
+const MAX_DATA_BYTES: u64 = 64 << 20;
+
+/// Reads the data file `name` relative to `dir`: a PNG by its signature, else a CSV grid.
+fn load_data(dir: &Path, name: &str) -> std::result::Result<Arc<DataGrid>, String> {
+    let path = dir.join(name);
+    let size = std::fs::metadata(&path)
+        .map_err(|e| format!("cannot read {}: {e}", path.display()))?
+        .len();
+    if size > MAX_DATA_BYTES {
+        return Err(format!("{size} bytes; data files are read up to {MAX_DATA_BYTES}"));
+    }
+    let bytes = std::fs::read(&path).map_err(|e| format!("cannot read {}: {e}", path.display()))?;
+    let grid = if bytes.starts_with(b"\x89PNG") {
+        DataGrid::from_png(&bytes)
+    } else {
+        let text = String::from_utf8(bytes).map_err(|_| "neither a PNG nor a CSV text".to_owned())?;
+        DataGrid::from_csv(&text, name)
+    };
+    grid.map(Arc::new).map_err(|e| e.to_string())
+}
+
+/// Reads a spec and the data it names, reporting every problem prefixed with the input
+/// name.
 fn read_spec(path: &str) -> Result<NoiseSpec> {
     let text = read_text(path)?;
     let name = display_name(path);
+    let dir = if path == "-" {
+        Path::new(".")
+    } else {
+        Path::new(path).parent().unwrap_or(Path::new("."))
+    };
     match NoiseSpec::from_json(&text) {
-        Ok(s) => Ok(s),
+        Ok(mut s) => {
+            s.attach_data(&mut |data| load_data(dir, data))
+                .map_err(|e| anyhow::anyhow!("{name}: {e}"))?;
+            Ok(s)
+        }
         Err(SpecError::Syntax {
             line,
             column,

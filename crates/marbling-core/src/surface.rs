@@ -20,8 +20,8 @@
 //!   disc that covered the sample — so it flows with the ink (seed 000: flatness vs
 //!   coherent motion). Paper grain is applied after pigment grain (the order does not
 //!   change the product).
-//! - Inside a design a noise spec may not `tile` or carry its own `palette`/`blend`
-//!   (the palette sits beside it), its `transfer` must be a threshold, and it must have
+//! - Inside a design a noise spec may not `tile`, stack `layers` or carry its own
+//!   `palette`/`blend` (the palette sits beside it), its `transfer` must be a threshold, and it must have
 //!   a WGSL form (no `product`; Gabor driving fields are perlin/value fBm), so the CPU
 //!   and the GPU renderers draw the same picture.
 
@@ -91,7 +91,10 @@ impl NoiseLayer {
                 message: message.to_owned(),
             })
         };
-        if spec.tile {
+        if !spec.layers.is_empty() {
+            no("layers", "not allowed in a design");
+        }
+        if spec.tile.is_on() {
             no("tile", "not allowed in a design (a design does not repeat)");
         }
         if spec.palette.is_some() {
@@ -103,7 +106,10 @@ impl NoiseLayer {
         if spec.blend.is_some() {
             no("blend", "not allowed in a design");
         }
-        if matches!(spec.transfer, Some(Transfer::SplineDecay(_))) {
+        if matches!(
+            spec.transfer,
+            Some(Transfer::SplineDecay(_) | Transfer::Curve(_))
+        ) {
             no(
                 "transfer",
                 "only a threshold transfer is allowed in a design",

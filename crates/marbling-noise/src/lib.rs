@@ -5,8 +5,9 @@
 //! Noises: sparse Gabor (anisotropic, isotropic, random phase; orientation and frequency
 //! optionally driven by another field), Perlin fBm, value noise, Worley (F1, F2, F2 − F1
 //! × Euclidean, Manhattan, Chebyshev), white noise, curl noise, paper and canvas fibers;
-//! tileable variants; transfer functions (thresholds, seed 004's spline decay, HSV value
-//! blend) and colour ramps; JSON specs with path-named errors.
+//! tileable variants; transfer functions (thresholds, seed 004's spline decay, curves,
+//! HSV value blend) and colour ramps; layers combined by add, multiply, max, min or mask;
+//! Gabor parameters driven by data grids (seed 004); JSON specs with path-named errors.
 //!
 //! Conventions: positions in output pixels, x right, y down; frequencies in cycles per
 //! output pixel; angles in radians from +x towards +y. Every noise is normalised to zero
@@ -15,11 +16,14 @@
 
 pub mod analysis;
 mod curl;
+mod curve;
+mod data;
 mod fbm;
 mod fibers;
 mod field;
 mod gabor;
 pub mod hash;
+mod layer;
 mod perlin;
 mod ramp;
 pub mod ranges;
@@ -28,6 +32,7 @@ mod spec;
 mod spec_edit;
 mod spec_reader;
 mod spec_writer;
+pub mod stack_gpu;
 mod transfer;
 mod value;
 pub mod wgsl;
@@ -35,6 +40,11 @@ mod white;
 mod worley;
 
 pub use curl::{Curl, CurlComponent};
+pub use curve::{Curve, CurveError, MAX_CURVE_POINTS};
+pub use data::{
+    Channel, DataError, DataGrid, DataRef, MAX_DATA_SIDE, WEATHER, WEATHER_PRESSURE, WEATHER_SIZE,
+    WEATHER_TEMPERATURE,
+};
 pub use fbm::{Basis, Fbm, FbmParams, MAX_OCTAVES, OCTAVE_SEED_STEP};
 pub use fibers::{
     FiberLayout, FiberParams, Fibers, IMPURITY_SEED, Impurities, MAX_FIBERS_PER_CELL,
@@ -42,6 +52,7 @@ pub use fibers::{
 pub use field::Field;
 pub use gabor::{Drive, GABOR_TRUNCATION, Gabor, GaborKind, GaborParams};
 pub use hash::CellRng;
+pub use layer::{COMBINES, Combine, Layer, MAX_LAYERS};
 pub use perlin::{
     GRADIENTS, PERLIN_DERIVATIVE_VARIANCE, PERLIN_VARIANCE, fade, perlin2, perlin2_periodic,
     perlin2_with_gradient,
@@ -51,8 +62,8 @@ pub use render::{
     Depth, MAX_SIZE, NoiseImage, RenderError, Renderer, noise_field, noise_to_grey, sample_grid,
 };
 pub use spec::{
-    Blend, BlendBase, DecayValue, DriveSpec, FieldError, MAX_IMPULSES, NOISE_TYPES, NoiseSpec,
-    Source, SpecError, Transfer,
+    Blend, BlendBase, DecayValue, DriveSource, DriveSpec, FieldError, MAX_IMPULSES, NOISE_TYPES,
+    NoiseSpec, Source, SpecError, Tile, Transfer,
 };
 pub use spec_edit::EDIT_FLOOR;
 pub use transfer::{

@@ -4,11 +4,13 @@
 //! turns intensity into colour.
 
 use crate::curl::{Curl, CurlComponent};
+use crate::data::DataRef;
 use crate::fbm::Fbm;
 use crate::fibers::Fibers;
 use crate::field::Field;
 use crate::gabor::{Drive, Gabor, GaborParams};
-use crate::spec::{BlendBase, DecayValue, NoiseSpec, Source, Transfer};
+use crate::layer::Combine;
+use crate::spec::{BlendBase, DecayValue, DriveSource, NoiseSpec, Source, Transfer};
 use crate::transfer::{SplineDecayTable, hsv_value_blend};
 use crate::white::white2;
 use crate::worley::{Metric, WorleyFeature, worley_normalised};
@@ -43,6 +45,9 @@ pub enum RenderError {
     /// The requested size is 0 or above [`MAX_SIZE`].
     #[error("size must be in 1..={MAX_SIZE}, got {0}")]
     Size(u32),
+    /// A data set the spec names was not attached ([`NoiseSpec::attach_data`]).
+    #[error("data '{0}' is not loaded")]
+    Data(String),
 }
 
 /// The default noise-to-intensity map: 0.5 + n/6 clamped (±3σ spans black to white).
@@ -101,11 +106,29 @@ impl Field for CurlField {
     }
 }
 
+/// A data channel as a field: its value in [0, 1] over the frame it is stretched on.
+struct DataField {
+    data: DataRef,
+    frame: [f32; 2],
+}
+
+impl Field for DataField {
+    fn sample(&self, x: f32, y: f32) -> f32 {
+        self.data.sample(x, y, self.frame)
+    }
+}
+
 /// The unit-variance field of a non-product spec at output size `size` (the size sets the
-/// tile period when the spec tiles). Products have no single noise field: `None`.
+/// tile period when the spec tiles `true`; data drives are stretched over the size²
+/// square). Products have no single noise field: `None`.
 #[must_use]
 pub fn noise_field(spec: &NoiseSpec, size: u32) -> Option<Arc<dyn Field>> {
-    let period = spec.tile.then_some(size);
+    field_in(spec, size, [size as f32; 2])
+}
+
+/// [`noise_field`] with data drives stretched over `frame` (width, height) pixels.
+fn field_in(spec: &NoiseSpec, size: u32, frame: [f32; 2]) -> Option<Arc<dyn Field>> {
+    let period = spec.tile.period(size);
     let field: Arc<dyn Field> = match &spec.source {
         Source::Gabor {
             kind,
@@ -119,13 +142,22 @@ pub fn noise_field(spec: &NoiseSpec, size: u32) -> Option<Arc<dyn Field>> {
         } => {
             let drive = |d: &Option<crate::spec::DriveSpec>| -> Option<Drive> {
                 let d = d.as_ref()?;
-                // A tiling Gabor tiles its driving fields too.
-                let noise = NoiseSpec {
-                    tile: spec.tile,
-                    ..(*d.noise).clone()
+                let field: Arc<dyn Field> = match &d.by {
+                    DriveSource::Noise(n) => {
+                        // A tiling Gabor tiles its driving fields too.
+                        let noise = NoiseSpec {
+                            tile: spec.tile,
+                            ..(**n).clone()
+                        };
+                        field_in(&noise, size, frame)?
+                    }
+                    DriveSource::Data(r) => Arc::new(DataField {
+                        data: r.clone(),
+                        frame,
+                    }),
                 };
                 Some(Drive {
-                    field: noise_field(&noise, size)?,
+                    field,
                     amount: d.amount,
                 })
             };
@@ -195,12 +227,27 @@ enum Node {
         transfer: Option<Transfer>,
     },
     Product(Vec<Node>),
+    /// A node with layers stacked on it.
+    Layered {
+        base: Box<Node>,
+        layers: Vec<LayerNode>,
+    },
+}
+
+struct LayerNode {
+    node: Node,
+    combine: Combine,
+    weight: f32,
+    mask: Option<Node>,
 }
 
 /// A spec prepared for one output size: evaluates intensity and colour per point.
 pub struct Renderer {
     root: Node,
     size: u32,
+    /// Width and height, output pixels, that data grids, `"x"` values and blend ramps
+    /// span.
+    frame: [f32; 2],
     decay: Option<SplineDecayTable>,
     spec: NoiseSpec,
 }
@@ -224,45 +271,79 @@ impl NoiseImage {
     }
 }
 
-fn build(spec: &NoiseSpec, size: u32) -> Node {
-    match &spec.source {
-        // Inputs of a tiling product tile too.
+fn build(spec: &NoiseSpec, size: u32, frame: [f32; 2]) -> Node {
+    // Inputs, layers and masks of a tiling spec tile too.
+    let inherit = |s: &NoiseSpec| NoiseSpec {
+        tile: s.tile.or(spec.tile),
+        ..s.clone()
+    };
+    let base = match &spec.source {
         Source::Product(inputs) => Node::Product(
             inputs
                 .iter()
-                .map(|s| {
-                    let s = NoiseSpec {
-                        tile: s.tile || spec.tile,
-                        ..s.clone()
-                    };
-                    build(&s, size)
-                })
+                .map(|s| build(&inherit(s), size, frame))
                 .collect(),
         ),
-        _ => match noise_field(spec, size) {
+        _ => match field_in(spec, size, frame) {
             Some(field) => Node::Noise {
                 field,
-                transfer: spec.transfer,
+                transfer: spec.transfer.clone(),
             },
             None => Node::Product(Vec::new()),
         },
+    };
+    if spec.layers.is_empty() {
+        return base;
+    }
+    Node::Layered {
+        base: Box::new(base),
+        layers: spec
+            .layers
+            .iter()
+            .map(|l| LayerNode {
+                node: build(&inherit(&l.noise), size, frame),
+                combine: l.combine,
+                weight: l.weight,
+                mask: l.mask.as_ref().map(|m| build(&inherit(m), size, frame)),
+            })
+            .collect(),
     }
 }
 
 fn uses_decay(spec: &NoiseSpec) -> bool {
     matches!(spec.transfer, Some(Transfer::SplineDecay(_)))
         || matches!(&spec.source, Source::Product(v) if v.iter().any(uses_decay))
+        || spec
+            .layers
+            .iter()
+            .any(|l| uses_decay(&l.noise) || l.mask.as_ref().is_some_and(uses_decay))
 }
 
 impl Renderer {
     /// Prepares `spec` for an output of `size`×`size` pixels.
     pub fn new(spec: &NoiseSpec, size: u32) -> Result<Self, RenderError> {
+        Self::with_frame(spec, size, [size as f32; 2])
+    }
+
+    /// Prepares `spec` for points in a `frame` (width, height, output pixels) that data
+    /// grids, `"x"` values and blend ramps span; `size` is the output size a `"tile":
+    /// true` repeats over.
+    pub fn with_frame(spec: &NoiseSpec, size: u32, frame: [f32; 2]) -> Result<Self, RenderError> {
         if size == 0 || size > MAX_SIZE {
             return Err(RenderError::Size(size));
         }
+        let mut unattached = spec.clone();
+        if let Some(r) = unattached
+            .data_refs_mut()
+            .into_iter()
+            .find(|r| r.grid.is_none())
+        {
+            return Err(RenderError::Data(r.name.clone()));
+        }
         Ok(Self {
-            root: build(spec, size),
+            root: build(spec, size, frame),
             size,
+            frame,
             decay: uses_decay(spec).then(SplineDecayTable::new),
             spec: spec.clone(),
         })
@@ -278,13 +359,25 @@ impl Renderer {
                     Some(Transfer::SplineDecay(v)) => {
                         let v = match v {
                             DecayValue::Constant(v) => *v,
-                            DecayValue::RampX => x / self.size as f32,
+                            DecayValue::RampX => x / self.frame[0],
+                            DecayValue::Data(r) => r.sample(x, y, self.frame),
                         };
                         self.decay.as_ref().map_or(0.0, |t| t.decay(v).apply(n))
                     }
+                    Some(Transfer::Curve(c)) => c.apply(n),
                 }
             }
             Node::Product(nodes) => nodes.iter().map(|n| self.node_intensity(n, x, y)).product(),
+            Node::Layered { base, layers } => {
+                layers.iter().fold(self.node_intensity(base, x, y), |c, l| {
+                    let b = self.node_intensity(&l.node, x, y);
+                    let m = l
+                        .mask
+                        .as_ref()
+                        .map_or(0.0, |m| self.node_intensity(m, x, y));
+                    l.combine.apply(c, b, m, l.weight)
+                })
+            }
         }
     }
 
@@ -301,7 +394,8 @@ impl Renderer {
         if let Some(b) = &self.spec.blend {
             let base = match &b.base {
                 BlendBase::Color(c) => *c,
-                BlendBase::Ramp(r) => r.sample(x / self.size as f32),
+                BlendBase::Ramp(r) => r.sample(x / self.frame[0]),
+                BlendBase::Data { ramp, value } => ramp.sample(value.sample(x, y, self.frame)),
             };
             hsv_value_blend(base, t, b.beta)
         } else if let Some(p) = &self.spec.palette {

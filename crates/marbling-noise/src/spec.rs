@@ -2,13 +2,16 @@
 //! the JSON path of every problem (`frequency: must be > 0, got -3`).
 //!
 //! Every spec is an object with a `type` and type-specific fields (see the crate
-//! README), plus optional `tile` (repeat every output size), `transfer`, `palette` and
-//! `blend`. Lengths are in output pixels, frequencies in cycles per output pixel,
+//! README), plus optional `tile` (repeat every output size, or every N pixels),
+//! `transfer`, `layers`, `palette` and `blend`. Lengths are in output pixels, frequencies in cycles per output pixel,
 //! angles in radians from +x towards +y (x right, y down).
 
+use crate::curve::Curve;
+use crate::data::DataRef;
 use crate::fbm::FbmParams;
 use crate::fibers::FiberParams;
 use crate::gabor::GaborKind;
+use crate::layer::Layer;
 use crate::ramp::{ColorRamp, Rgb};
 use crate::ranges;
 use crate::spec_reader::read_spec;
@@ -46,10 +49,55 @@ pub enum SpecError {
 /// How a Gabor parameter is driven by another field.
 #[derive(Clone, Debug, PartialEq)]
 pub struct DriveSpec {
-    /// The driving noise (no transfer, palette or blend).
-    pub noise: Box<NoiseSpec>,
-    /// Radians (orientation) or octaves (frequency) per unit of the noise.
+    /// The driving field.
+    pub by: DriveSource,
+    /// Radians (orientation) or octaves (frequency) per unit of the field.
     pub amount: f32,
+}
+
+/// What drives a Gabor parameter.
+#[derive(Clone, Debug, PartialEq)]
+pub enum DriveSource {
+    /// A noise (no transfer, palette or blend), unit variance: `{"noise": SPEC}`.
+    Noise(Box<NoiseSpec>),
+    /// A data channel in [0, 1]: `{"data": NAME, "channel": K}` (seed 004).
+    Data(DataRef),
+}
+
+/// Whether and how a spec repeats.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Tile {
+    /// No repetition.
+    #[default]
+    Off,
+    /// Every output size (`"tile": true`).
+    Output,
+    /// Every N output pixels (`"tile": N`).
+    Period(u32),
+}
+
+impl Tile {
+    /// The period in pixels for an output of `size`, `None` when not tiling.
+    #[must_use]
+    pub fn period(self, size: u32) -> Option<u32> {
+        match self {
+            Tile::Off => None,
+            Tile::Output => Some(size),
+            Tile::Period(p) => Some(p),
+        }
+    }
+
+    /// Whether the spec repeats.
+    #[must_use]
+    pub fn is_on(self) -> bool {
+        self != Tile::Off
+    }
+
+    /// This tiling, or `outer`'s when this one is off (inputs inherit their spec's).
+    #[must_use]
+    pub fn or(self, outer: Tile) -> Tile {
+        if self.is_on() { self } else { outer }
+    }
 }
 
 /// The noise a spec evaluates.
@@ -106,21 +154,25 @@ pub enum Source {
 }
 
 /// Intensity transfer of a spec.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub enum Transfer {
     /// Smoothstep threshold.
     Threshold(Threshold),
     /// Seed 004's spline decay with mean intensity `value`.
     SplineDecay(DecayValue),
+    /// A monotone cubic remap of the default intensity through control points.
+    Curve(Curve),
 }
 
 /// The value v a spline decay tracks.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub enum DecayValue {
     /// The same v everywhere.
     Constant(f32),
     /// v rising from 0 at the left edge to 1 at the right edge (a legend strip).
     RampX,
+    /// v read from a data channel (seed 004: the attribute shown by the frequency).
+    Data(DataRef),
 }
 
 /// Seed 004's HSV value blend of the intensity into a base colour.
@@ -139,6 +191,13 @@ pub enum BlendBase {
     Color(Rgb),
     /// A ramp across the image, left to right.
     Ramp(ColorRamp),
+    /// A ramp sampled at a data channel's value (seed 004's colour-coded attribute).
+    Data {
+        /// The colours.
+        ramp: ColorRamp,
+        /// The channel.
+        value: DataRef,
+    },
 }
 
 /// A parsed noise spec.
@@ -146,10 +205,12 @@ pub enum BlendBase {
 pub struct NoiseSpec {
     /// What is evaluated.
     pub source: Source,
-    /// Whether the result tiles with period equal to the output size.
-    pub tile: bool,
+    /// Whether and how the result repeats.
+    pub tile: Tile,
     /// Noise → intensity; default 0.5 + n/6 clamped.
     pub transfer: Option<Transfer>,
+    /// More noises combined with this one's intensity, bottom to top.
+    pub layers: Vec<Layer>,
     /// Intensity → colour.
     pub palette: Option<ColorRamp>,
     /// Intensity blended into a base colour's HSV value.
@@ -172,9 +233,81 @@ impl NoiseSpec {
         read_spec(value).map_err(SpecError::Invalid)
     }
 
+    /// Every data reference of the spec (drives, transfers, blend, layers), to attach
+    /// their grids.
+    pub fn data_refs_mut(&mut self) -> Vec<&mut DataRef> {
+        let mut out = Vec::new();
+        collect_refs(self, &mut out);
+        out
+    }
+
+    /// Attaches every data grid the spec names and has not attached yet, from `load`
+    /// (given the name); the first failure as a problem at its path.
+    pub fn attach_data(
+        &mut self,
+        load: &mut dyn FnMut(&str) -> Result<std::sync::Arc<crate::DataGrid>, String>,
+    ) -> Result<(), FieldError> {
+        for r in self.data_refs_mut() {
+            if r.grid.is_none() {
+                let grid = load(&r.name).map_err(|message| FieldError {
+                    path: "data".into(),
+                    message: format!("'{}': {message}", r.name),
+                })?;
+                r.grid = Some(grid);
+            }
+            let n = r.grid.as_ref().map_or(0, |g| g.channels.len());
+            if r.channel > n {
+                return Err(FieldError {
+                    path: "channel".into(),
+                    message: format!("'{}' has {n} channels, got channel {}", r.name, r.channel),
+                });
+            }
+        }
+        Ok(())
+    }
+
     /// Whether the output is coloured (palette or blend) rather than greyscale.
     #[must_use]
     pub fn is_colored(&self) -> bool {
         self.palette.is_some() || self.blend.is_some()
+    }
+}
+
+fn collect_refs<'a>(spec: &'a mut NoiseSpec, out: &mut Vec<&'a mut DataRef>) {
+    match &mut spec.source {
+        Source::Gabor {
+            orientation_field,
+            frequency_field,
+            ..
+        } => {
+            for d in [orientation_field, frequency_field].into_iter().flatten() {
+                match &mut d.by {
+                    DriveSource::Data(r) => out.push(r),
+                    DriveSource::Noise(n) => collect_refs(n, out),
+                }
+            }
+        }
+        Source::Product(inputs) => {
+            for i in inputs {
+                collect_refs(i, out);
+            }
+        }
+        _ => {}
+    }
+    if let Some(Transfer::SplineDecay(DecayValue::Data(r))) = &mut spec.transfer {
+        out.push(r);
+    }
+    if let Some(Blend {
+        base: BlendBase::Data { value, .. },
+        ..
+    }) = &mut spec.blend
+    {
+        out.push(value);
+    }
+    for l in &mut spec.layers {
+        collect_refs(&mut l.noise, out);
+        if let Some(m) = &mut l.mask {
+            collect_refs(m, out);
+        }
     }
 }

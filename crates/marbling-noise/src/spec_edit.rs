@@ -129,8 +129,9 @@ impl NoiseSpec {
     pub fn plain(source: Source) -> Self {
         Self {
             source,
-            tile: false,
+            tile: crate::Tile::Off,
             transfer: None,
+            layers: Vec::new(),
             palette: None,
             blend: None,
         }
@@ -143,6 +144,12 @@ impl NoiseSpec {
     pub fn scaled(&self, k: f64) -> Self {
         let mut s = self.clone();
         s.source = scale_source(&self.source, k);
+        for l in &mut s.layers {
+            l.noise = l.noise.scaled(k);
+            if let Some(m) = &mut l.mask {
+                *m = m.scaled(k);
+            }
+        }
         s
     }
 }
@@ -167,7 +174,10 @@ fn scale_source(source: &Source, k: f64) -> Source {
             *frequency = f;
             *bandwidth = scale(*bandwidth, k, ranges::BANDWIDTH);
             for d in [orientation_field, frequency_field].into_iter().flatten() {
-                *d.noise = d.noise.scaled(k);
+                // Data stays where it is: it is stretched over the frame, not scaled.
+                if let crate::DriveSource::Noise(n) = &mut d.by {
+                    **n = n.scaled(k);
+                }
             }
         }
         Source::Fbm(p) | Source::Curl { potential: p, .. } => {

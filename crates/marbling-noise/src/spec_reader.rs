@@ -1,13 +1,17 @@
 //! Reading a noise spec from JSON (the grammar is in the crate README), each problem
 //! reported with its path by the shared [`marbling_json::PathReader`].
 
+use crate::curve::Curve;
+use crate::data::DataRef;
 use crate::fbm::{Basis, FbmParams};
 use crate::fibers::{FiberLayout, FiberParams, Impurities};
 use crate::gabor::GaborKind;
+use crate::layer::{COMBINES, Combine, Layer, MAX_LAYERS};
 use crate::ramp::{ColorRamp, PALETTES, parse_hex};
 use crate::ranges;
 use crate::spec::{
-    Blend, BlendBase, DecayValue, DriveSpec, FieldError, NOISE_TYPES, NoiseSpec, Source, Transfer,
+    Blend, BlendBase, DecayValue, DriveSource, DriveSpec, FieldError, NOISE_TYPES, NoiseSpec,
+    Source, Tile, Transfer,
 };
 use crate::transfer::Threshold;
 use crate::{CurlComponent, Metric, WorleyFeature};
@@ -31,6 +35,8 @@ enum Role {
     Top,
     ProductInput,
     Drive,
+    /// An entry of `layers`, or a layer's `mask`.
+    Layer,
 }
 
 fn fields_of(kind: &str) -> Option<&'static [&'static str]> {
@@ -179,8 +185,11 @@ impl Reader {
         let mut allowed: Vec<&str> = vec!["type"];
         allowed.extend_from_slice(own);
         match role {
-            Role::Top => allowed.extend_from_slice(&["tile", "transfer", "palette", "blend"]),
+            Role::Top => {
+                allowed.extend_from_slice(&["tile", "transfer", "layers", "palette", "blend"]);
+            }
             Role::ProductInput => allowed.push("transfer"),
+            Role::Layer => allowed.extend_from_slice(&["transfer", "combine", "weight", "mask"]),
             Role::Drive => {}
         }
         if kind == "product" {
@@ -195,7 +204,11 @@ impl Reader {
         }
         self.object(path, v, &allowed)?;
         let source = self.source(path, obj, kind);
-        let tile = self.boolean(path, obj, "tile");
+        let tile = self.tile(path, obj);
+        let layers = match obj.get("layers") {
+            None => Some(Vec::new()),
+            Some(v) => self.layers(&join(path, "layers"), v),
+        };
         let transfer = obj
             .get("transfer")
             .map(|t| self.transfer(&join(path, "transfer"), t));
@@ -215,6 +228,7 @@ impl Reader {
             source: source?,
             tile: tile?,
             transfer: transfer.map_or(Some(None), |t| t.map(Some))?,
+            layers: layers?,
             palette: palette.map_or(Some(None), |p| p.map(Some))?,
             blend: blend.map_or(Some(None), |b| b.map(Some))?,
         })
@@ -252,19 +266,138 @@ impl Reader {
         })
     }
 
-    fn drive(&mut self, path: &str, v: &Value) -> Option<DriveSpec> {
-        let obj = self.object(path, v, &["noise", "amount"])?;
-        let amount = self.bounded(path, obj, "amount", None, Rule::Any);
-        let noise = match obj.get("noise") {
-            Some(n) => self.spec(&join(path, "noise"), n, Role::Drive),
-            None => {
-                self.push(join(path, "noise"), "missing");
+    /// `tile`: absent or false (off), true (every output size) or a whole number of
+    /// pixels.
+    fn tile(&mut self, path: &str, obj: &Map<String, Value>) -> Option<Tile> {
+        match obj.get("tile") {
+            None | Some(Value::Bool(false)) => Some(Tile::Off),
+            Some(Value::Bool(true)) => Some(Tile::Output),
+            Some(v) => match v.as_u64() {
+                Some(n) if (1..=u64::from(crate::MAX_SIZE)).contains(&n) => {
+                    Some(Tile::Period(n as u32))
+                }
+                _ => {
+                    self.push(
+                        join(path, "tile"),
+                        format!(
+                            "must be true, false or a period in pixels (1 to {}), got {}",
+                            crate::MAX_SIZE,
+                            short(v)
+                        ),
+                    );
+                    None
+                }
+            },
+        }
+    }
+
+    /// `{"data": NAME, "channel": K}` fields of `obj` (other fields are the caller's).
+    fn data_ref(&mut self, path: &str, obj: &Map<String, Value>) -> Option<DataRef> {
+        let name = match obj.get("data") {
+            Some(Value::String(s)) if !s.is_empty() => Some(s.clone()),
+            other => {
+                self.push(
+                    join(path, "data"),
+                    format!(
+                        "must be a data set name (\"{}\") or a PNG/CSV file, got {}",
+                        crate::WEATHER,
+                        other.map_or_else(|| "nothing".to_string(), short)
+                    ),
+                );
                 None
             }
         };
+        let channel = self.bounded(path, obj, "channel", Some(1.0), Rule::Within(1.0, 3.0));
+        if channel.is_some_and(|c| c.fract() != 0.0) {
+            self.push(join(path, "channel"), "must be 1, 2 or 3");
+            return None;
+        }
+        Some(DataRef::new(&name?, channel? as usize))
+    }
+
+    fn drive(&mut self, path: &str, v: &Value) -> Option<DriveSpec> {
+        let data = v.get("data").is_some();
+        let fields: &[&str] = if data {
+            &["data", "channel", "amount"]
+        } else {
+            &["noise", "amount"]
+        };
+        let obj = self.object(path, v, fields)?;
+        let amount = self.bounded(path, obj, "amount", None, Rule::Any);
+        let by = if data {
+            self.data_ref(path, obj).map(DriveSource::Data)
+        } else {
+            match obj.get("noise") {
+                Some(n) => self
+                    .spec(&join(path, "noise"), n, Role::Drive)
+                    .map(|s| DriveSource::Noise(Box::new(s))),
+                None => {
+                    self.push(join(path, "noise"), "missing (or give \"data\")");
+                    None
+                }
+            }
+        };
         Some(DriveSpec {
-            noise: Box::new(noise?),
+            by: by?,
             amount: amount? as f32,
+        })
+    }
+
+    fn layers(&mut self, path: &str, v: &Value) -> Option<Vec<Layer>> {
+        let Some(items) = v.as_array().filter(|a| (1..=MAX_LAYERS).contains(&a.len())) else {
+            self.push(
+                path,
+                format!(
+                    "must be an array of 1 to {MAX_LAYERS} layers, got {}",
+                    short(v)
+                ),
+            );
+            return None;
+        };
+        let parsed: Vec<Option<Layer>> = items
+            .iter()
+            .enumerate()
+            .map(|(i, item)| self.layer(&format!("{path}[{i}]"), item))
+            .collect();
+        parsed.into_iter().collect()
+    }
+
+    fn layer(&mut self, path: &str, v: &Value) -> Option<Layer> {
+        let noise = self.spec(path, v, Role::Layer);
+        let obj = v.as_object()?;
+        let combine = match obj.get("combine") {
+            None => {
+                self.push(
+                    join(path, "combine"),
+                    format!("missing; expected one of {}", combine_names()),
+                );
+                None
+            }
+            Some(_) => self.choice(path, obj, "combine", Combine::Add, &COMBINES),
+        };
+        let weight = self.bounded(path, obj, "weight", Some(1.0), Rule::Within(0.0, 1.0));
+        let mask = match (combine, obj.get("mask")) {
+            (Some(Combine::Mask), Some(m)) => {
+                self.spec(&join(path, "mask"), m, Role::Layer).map(Some)
+            }
+            (Some(Combine::Mask), None) => {
+                self.push(
+                    join(path, "mask"),
+                    "missing: combine \"mask\" needs a mask noise",
+                );
+                None
+            }
+            (Some(_), Some(_)) => {
+                self.push(join(path, "mask"), "only read with combine \"mask\"");
+                None
+            }
+            (_, _) => Some(None),
+        };
+        Some(Layer {
+            noise: noise?,
+            combine: combine?,
+            weight: weight? as f32,
+            mask: mask?,
         })
     }
 
@@ -487,11 +620,58 @@ impl Reader {
                     invert: invert?,
                 }))
             }
+            Some("curve") => {
+                let obj = self.object(path, v, &["type", "points"])?;
+                let p = join(path, "points");
+                let points: Option<Vec<[f32; 2]>> =
+                    obj.get("points").and_then(Value::as_array).map(|a| {
+                        a.iter()
+                            .filter_map(|pt| match pt.as_array().map(Vec::as_slice) {
+                                Some([x, y]) => Some([x.as_f64()? as f32, y.as_f64()? as f32]),
+                                _ => None,
+                            })
+                            .collect()
+                    });
+                let count = obj.get("points").and_then(Value::as_array).map(Vec::len);
+                match points {
+                    Some(points) if Some(points.len()) == count => match Curve::new(points) {
+                        Ok(c) => Some(Transfer::Curve(c)),
+                        Err(e) => {
+                            let m = e.to_string();
+                            match m.strip_prefix('[') {
+                                Some(rest) => {
+                                    let (i, m) = rest.split_once("]: ").unwrap_or((rest, ""));
+                                    self.push(format!("{p}[{i}]"), m);
+                                }
+                                None => self.push(p, m),
+                            }
+                            None
+                        }
+                    },
+                    _ => {
+                        self.push(
+                            p,
+                            format!(
+                                "must be an array of [x, y] number pairs, got {}",
+                                obj.get("points")
+                                    .map_or_else(|| "nothing".to_string(), short)
+                            ),
+                        );
+                        None
+                    }
+                }
+            }
             Some("spline-decay") => {
                 let obj = self.object(path, v, &["type", "value"])?;
                 match obj.get("value") {
                     Some(Value::String(s)) if s == "x" => {
                         Some(Transfer::SplineDecay(DecayValue::RampX))
+                    }
+                    Some(o @ Value::Object(_)) => {
+                        let vp = join(path, "value");
+                        let inner = self.object(&vp, o, &["data", "channel"])?;
+                        self.data_ref(&vp, inner)
+                            .map(|r| Transfer::SplineDecay(DecayValue::Data(r)))
                     }
                     Some(Value::Number(_)) => {
                         let x = self.bounded(path, obj, "value", None, Rule::Within(0.0, 1.0));
@@ -500,7 +680,10 @@ impl Reader {
                     Some(other) => {
                         self.push(
                             join(path, "value"),
-                            format!("must be a number in [0, 1] or \"x\", got {}", short(other)),
+                            format!(
+                                "must be a number in [0, 1], \"x\" or {{\"data\", \"channel\"}}, got {}",
+                                short(other)
+                            ),
                         );
                         None
                     }
@@ -516,7 +699,7 @@ impl Reader {
                     Some(_) => self.push(
                         join(path, "type"),
                         format!(
-                            "must be one of threshold, spline-decay, got {}",
+                            "must be one of threshold, spline-decay, curve, got {}",
                             v.get("type").map_or_else(|| "nothing".to_string(), short)
                         ),
                     ),
@@ -570,8 +753,28 @@ impl Reader {
     }
 
     fn blend(&mut self, path: &str, v: &Value) -> Option<Blend> {
-        let obj = self.object(path, v, &["beta", "color", "palette"])?;
+        let obj = self.object(path, v, &["beta", "color", "palette", "value"])?;
         let beta = self.bounded(path, obj, "beta", Some(0.6), Rule::Within(0.0, 1.0));
+        if let Some(value) = obj.get("value") {
+            let vp = join(path, "value");
+            let Some(p) = obj.get("palette") else {
+                self.push(
+                    join(path, "palette"),
+                    "missing: a data \"value\" picks a colour of a palette",
+                );
+                return None;
+            };
+            let ramp = self.palette(&join(path, "palette"), p);
+            let inner = self.object(&vp, value, &["data", "channel"])?;
+            let value = self.data_ref(&vp, inner);
+            return Some(Blend {
+                beta: beta? as f32,
+                base: BlendBase::Data {
+                    ramp: ramp?,
+                    value: value?,
+                },
+            });
+        }
         let base = match (obj.get("color"), obj.get("palette")) {
             (Some(c), None) => match c.as_str().and_then(parse_hex) {
                 Some(rgb) => Some(BlendBase::Color(rgb)),
@@ -594,4 +797,12 @@ impl Reader {
             base: base?,
         })
     }
+}
+
+fn combine_names() -> String {
+    COMBINES
+        .iter()
+        .map(|(n, _)| *n)
+        .collect::<Vec<_>>()
+        .join(", ")
 }

@@ -3,11 +3,15 @@
 //! included; numbers in their shortest f32 form; colours as `"#rrggbb"`, a built-in
 //! palette by its name).
 
+use crate::data::DataRef;
 use crate::fbm::{Basis, FbmParams};
 use crate::fibers::{FiberLayout, FiberParams};
+use crate::layer::Layer;
 use crate::ramp::{ColorRamp, Rgb};
 use crate::ranges;
-use crate::spec::{BlendBase, DecayValue, DriveSpec, NoiseSpec, Source, Transfer};
+use crate::spec::{
+    BlendBase, DecayValue, DriveSource, DriveSpec, NoiseSpec, Source, Tile, Transfer,
+};
 use serde_json::{Map, Value, json};
 
 /// An f32 as the JSON number of its shortest decimal form (0.1f32 → 0.1).
@@ -48,8 +52,52 @@ fn fbm_fields(o: &mut Map<String, Value>, p: &FbmParams) {
     o.insert("seed".into(), json!(p.seed));
 }
 
+fn data_ref(r: &DataRef) -> Value {
+    json!({ "data": r.name, "channel": r.channel })
+}
+
 fn drive(d: &DriveSpec) -> Value {
-    json!({ "noise": d.noise.to_value(), "amount": num(d.amount) })
+    match &d.by {
+        DriveSource::Noise(n) => json!({ "noise": n.to_value(), "amount": num(d.amount) }),
+        DriveSource::Data(r) => {
+            json!({ "data": r.name, "channel": r.channel, "amount": num(d.amount) })
+        }
+    }
+}
+
+fn transfer(t: &Transfer) -> Value {
+    match t {
+        Transfer::Threshold(t) => json!({
+            "type": "threshold",
+            "threshold": num(t.threshold),
+            "width": num(t.width),
+            "invert": t.invert
+        }),
+        Transfer::SplineDecay(v) => {
+            let value = match v {
+                DecayValue::Constant(x) => num(*x),
+                DecayValue::RampX => json!("x"),
+                DecayValue::Data(r) => data_ref(r),
+            };
+            json!({ "type": "spline-decay", "value": value })
+        }
+        Transfer::Curve(c) => json!({
+            "type": "curve",
+            "points": c.points().iter().map(|p| json!([num(p[0]), num(p[1])])).collect::<Vec<_>>()
+        }),
+    }
+}
+
+fn layer(l: &Layer) -> Value {
+    let mut v = l.noise.to_value();
+    if let Some(o) = v.as_object_mut() {
+        o.insert("combine".into(), json!(l.combine.name()));
+        o.insert("weight".into(), num(l.weight));
+        if let Some(m) = &l.mask {
+            o.insert("mask".into(), m.to_value());
+        }
+    }
+    v
 }
 
 fn fibers(o: &mut Map<String, Value>, p: &FiberParams) {
@@ -147,27 +195,23 @@ impl NoiseSpec {
                 );
             }
         }
-        if self.tile {
-            o.insert("tile".into(), json!(true));
+        match self.tile {
+            Tile::Off => {}
+            Tile::Output => {
+                o.insert("tile".into(), json!(true));
+            }
+            Tile::Period(p) => {
+                o.insert("tile".into(), json!(p));
+            }
         }
-        match &self.transfer {
-            Some(Transfer::Threshold(t)) => {
-                o.insert(
-                    "transfer".into(),
-                    json!({ "type": "threshold", "threshold": num(t.threshold), "width": num(t.width), "invert": t.invert }),
-                );
-            }
-            Some(Transfer::SplineDecay(v)) => {
-                let value = match v {
-                    DecayValue::Constant(x) => num(*x),
-                    DecayValue::RampX => json!("x"),
-                };
-                o.insert(
-                    "transfer".into(),
-                    json!({ "type": "spline-decay", "value": value }),
-                );
-            }
-            None => {}
+        if let Some(t) = &self.transfer {
+            o.insert("transfer".into(), transfer(t));
+        }
+        if !self.layers.is_empty() {
+            o.insert(
+                "layers".into(),
+                Value::Array(self.layers.iter().map(layer).collect()),
+            );
         }
         if let Some(p) = &self.palette {
             o.insert("palette".into(), ramp(p));
@@ -178,6 +222,10 @@ impl NoiseSpec {
             match &b.base {
                 BlendBase::Color(c) => blend.insert("color".into(), hex(*c)),
                 BlendBase::Ramp(r) => blend.insert("palette".into(), ramp(r)),
+                BlendBase::Data { ramp: r, value } => {
+                    blend.insert("palette".into(), ramp(r));
+                    blend.insert("value".into(), data_ref(value))
+                }
             };
             o.insert("blend".into(), Value::Object(blend));
         }
@@ -220,6 +268,8 @@ mod tests {
             r##"{"type":"gabor","kind":"random-phase","frequency":0.08,"orientation":0.5,"bandwidth":0.03,"impulses":32,"seed":5,"orientation_field":{"noise":{"type":"value","frequency":0.01,"seed":2},"amount":2},"frequency_field":{"noise":{"type":"perlin","frequency":0.02,"octaves":3,"seed":4},"amount":-0.5},"transfer":{"type":"spline-decay","value":0.3},"blend":{"beta":0.4,"color":"#336699"}}"##,
             r##"{"type":"curl","frequency":0.02,"octaves":4,"lacunarity":3,"persistence":0.4,"seed":8,"component":"y","blend":{"beta":0.7,"palette":["#112233","#445566","#778899"]}}"##,
             r##"{"type":"worley","frequency":0.05,"feature":"f2-f1","metric":"chebyshev","seed":6,"transfer":{"type":"spline-decay","value":"x"}}"##,
+            r##"{"type":"perlin","frequency":0.03,"tile":16,"transfer":{"type":"curve","points":[[0,0.1],[0.4,0.2],[1,0.9]]},"layers":[{"type":"worley","frequency":0.1,"combine":"multiply","weight":0.5},{"type":"white","seed":3,"combine":"mask","mask":{"type":"value","frequency":0.05,"transfer":{"type":"threshold","threshold":0.2,"width":0.1,"invert":false}}}]}"##,
+            r##"{"type":"gabor","kind":"random-phase","frequency":0.05,"bandwidth":0.05,"frequency_field":{"data":"weather","channel":1,"amount":3.3},"orientation_field":{"data":"weather","channel":2,"amount":3.14159},"transfer":{"type":"spline-decay","value":{"data":"weather","channel":1}},"blend":{"beta":0.6,"palette":"viridis","value":{"data":"weather","channel":3}}}"##,
         ];
         for text in specs {
             let spec = NoiseSpec::from_json(text).expect("valid");

@@ -6,7 +6,7 @@ use crate::fbm::{Basis, FbmParams};
 use crate::fibers::{FiberLayout, FiberParams, Fibers};
 use crate::gabor::{Gabor, GaborParams};
 use crate::render::lattice_for_period;
-use crate::spec::{DriveSpec, NoiseSpec, Source};
+use crate::spec::{DriveSource, DriveSpec, NoiseSpec, Source};
 use bytemuck::{Pod, Zeroable};
 
 /// `hash.wgsl`: pcg_hash, lattice_hash, cell_hash, unit_f32, the cell stream, Poisson.
@@ -31,6 +31,8 @@ pub const FIBERS: &str = include_str!("../shaders/fibers.wgsl");
 pub const TRANSFER: &str = include_str!("../shaders/transfer.wgsl");
 /// `noise.wgsl`: NoiseUniform and the dispatcher sample_noise.
 pub const NOISE: &str = include_str!("../shaders/noise.wgsl");
+/// `layers.wgsl`: combine_layer, NoiseStack and stack_intensity.
+pub const LAYERS: &str = include_str!("../shaders/layers.wgsl");
 
 /// Every shader file by name, in dependency order.
 pub const FILES: &[(&str, &str)] = &[
@@ -45,6 +47,7 @@ pub const FILES: &[(&str, &str)] = &[
     ("fibers", FIBERS),
     ("transfer", TRANSFER),
     ("noise", NOISE),
+    ("layers", LAYERS),
 ];
 
 /// The files a module needs, itself last.
@@ -64,6 +67,10 @@ pub fn dependencies(name: &str) -> Option<&'static [&'static str]> {
         "noise" => &[
             "hash", "perlin", "value", "fbm", "worley", "white", "curl", "gabor", "fibers",
             "transfer", "noise",
+        ],
+        "layers" => &[
+            "hash", "perlin", "value", "fbm", "worley", "white", "curl", "gabor", "fibers",
+            "transfer", "noise", "layers",
         ],
         _ => return None,
     })
@@ -254,7 +261,8 @@ pub enum GpuUnsupported {
     /// Products combine intensities; evaluate their inputs separately.
     #[error("a product has no single noise uniform; evaluate its inputs")]
     Product,
-    /// The WGSL Gabor drives orientation/frequency with fBm only.
+    /// The WGSL Gabor drives orientation/frequency with fBm only (no other noise, no
+    /// data).
     #[error("{0}: the WGSL Gabor accepts only a perlin or value fBm as driving field")]
     Drive(&'static str),
 }
@@ -263,7 +271,9 @@ pub enum GpuUnsupported {
 /// it: a product has none, and the WGSL Gabor takes only an fBm as a driving field.
 pub fn wgsl_form(spec: &NoiseSpec) -> Result<(), GpuUnsupported> {
     let drive = |d: &Option<DriveSpec>, what: &'static str| match d {
-        Some(d) if !matches!(d.noise.source, Source::Fbm(_)) => Err(GpuUnsupported::Drive(what)),
+        Some(d) if !matches!(&d.by, DriveSource::Noise(n) if matches!(n.source, Source::Fbm(_))) => {
+            Err(GpuUnsupported::Drive(what))
+        }
         _ => Ok(()),
     };
     match &spec.source {
@@ -287,9 +297,12 @@ fn drive_fbm(
 ) -> Result<(FbmGpu, f32, bool), GpuUnsupported> {
     match d {
         None => Ok((FbmGpu::default(), 0.0, false)),
-        Some(d) => match &d.noise.source {
-            Source::Fbm(p) => Ok((FbmGpu::from(&FbmParams { period, ..*p }), d.amount, true)),
-            _ => Err(GpuUnsupported::Drive(what)),
+        Some(d) => match &d.by {
+            DriveSource::Noise(n) => match &n.source {
+                Source::Fbm(p) => Ok((FbmGpu::from(&FbmParams { period, ..*p }), d.amount, true)),
+                _ => Err(GpuUnsupported::Drive(what)),
+            },
+            DriveSource::Data(_) => Err(GpuUnsupported::Drive(what)),
         },
     }
 }
@@ -363,7 +376,7 @@ impl NoiseGpu {
     /// The uniform for the noise of `spec` at output size `size` (transfer, palette and
     /// blend are applied separately).
     pub fn from_spec(spec: &NoiseSpec, size: u32) -> Result<Self, GpuUnsupported> {
-        let period = spec.tile.then_some(size);
+        let period = spec.tile.period(size);
         let mut u = Self::default();
         match &spec.source {
             Source::Gabor {

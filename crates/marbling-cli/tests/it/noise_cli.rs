@@ -256,3 +256,47 @@ fn tileable_exports_continue_across_opposite_edges() {
         "untiled: seam {seam:.0} vs interior {inner:.0}"
     );
 }
+
+/// Seed 004 from the command line: a spec whose drives, decay and colour read a CSV grid
+/// and a PNG beside it; a missing or corrupt data file is named.
+#[test]
+fn data_driven_specs_read_their_data_beside_the_spec() {
+    std::fs::write(temp("speed.csv"), "0,1,2\n3,4,5\n").expect("csv");
+    let png = {
+        let mut bytes = Vec::new();
+        let mut enc = png::Encoder::new(&mut bytes, 2, 2);
+        enc.set_color(png::ColorType::Rgb);
+        enc.write_header()
+            .expect("header")
+            .write_image_data(&[0, 64, 255, 30, 90, 0, 200, 10, 128, 255, 255, 60])
+            .expect("data");
+        bytes
+    };
+    std::fs::write(temp("fields.png"), png).expect("png");
+    let spec = spec_file(
+        "driven.json",
+        r#"{"type":"gabor","kind":"random-phase","frequency":0.05,"bandwidth":0.05,"impulses":16,
+            "frequency_field":{"data":"speed.csv","channel":1,"amount":2},
+            "orientation_field":{"data":"fields.png","channel":2,"amount":3.14},
+            "transfer":{"type":"spline-decay","value":{"data":"speed.csv","channel":1}},
+            "blend":{"beta":0.6,"palette":"viridis","value":{"data":"fields.png","channel":3}}}"#,
+    );
+    let out = temp("driven.png");
+    let o = run(
+        &["noise", &spec, "-o", &out.to_string_lossy(), "--size", "48"],
+        None,
+    );
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let (w, _, color, data) = png_info(&out);
+    assert_eq!((w, color), (48, png::ColorType::Rgb));
+    assert!(data.iter().max() > data.iter().min());
+
+    let e = failure(r#"{"type":"gabor","frequency":0.05,"bandwidth":0.05,"frequency_field":{"data":"nowhere.png","amount":1}}"#);
+    assert!(e.contains("SPEC: data: 'nowhere.png': cannot read"), "{e}");
+    std::fs::write(temp("broken.csv"), "1,2\nthree,4\n").expect("csv");
+    let e = failure(r#"{"type":"gabor","frequency":0.05,"bandwidth":0.05,"frequency_field":{"data":"broken.csv","amount":1}}"#);
+    assert!(
+        e.contains("SPEC: data: 'broken.csv': line 2: 'three' is not a finite number"),
+        "{e}"
+    );
+}

@@ -82,3 +82,59 @@ fn cpu_matches_wgsl() {
         "a perturbed GPU image passed the comparison"
     );
 }
+
+/// Layered specs, every combine mode, with thresholds and a tiling stack.
+const STACKS: &[&str] = &[
+    r#"{"type":"perlin","frequency":0.02,"octaves":3,"seed":4,
+        "layers":[{"type":"worley","frequency":0.05,"seed":1,"combine":"add"},
+                  {"type":"value","frequency":0.04,"seed":2,"combine":"multiply","weight":0.7}]}"#,
+    r#"{"type":"worley","frequency":0.04,"feature":"f2-f1","seed":3,
+        "transfer":{"type":"threshold","threshold":0.0,"width":0.5,"invert":false},
+        "layers":[{"type":"perlin","frequency":0.03,"seed":5,"combine":"max"},
+                  {"type":"white","seed":6,"combine":"min","weight":0.3}]}"#,
+    r#"{"type":"perlin","frequency":0.02,"seed":7,"tile":true,
+        "layers":[{"type":"gabor","frequency":0.08,"orientation":0.5,"bandwidth":0.05,"impulses":16,"seed":8,
+                   "combine":"mask","mask":{"type":"perlin","frequency":0.01,"seed":9,
+                   "transfer":{"type":"threshold","threshold":0.0,"width":0.2,"invert":true}}}]}"#,
+];
+
+#[test]
+fn layer_stacks_cpu_match_wgsl() {
+    use marbling_noise::Renderer;
+    use marbling_noise::stack_gpu::NoiseStackGpu;
+    let Some(gpu) = marbling_testkit::gpu_or_skip(GpuNoise::new()) else {
+        return;
+    };
+    const N: u32 = 128;
+    let level = |v: f32| (v * 255.0).round() as i32;
+    let compare = |spec: &NoiseSpec, u: &NoiseStackGpu| {
+        let cpu = Renderer::new(spec, N).expect("size");
+        let (wgsl, _) = gpu.run_stack(u, N);
+        let mut differing = 0;
+        for (k, g) in wgsl.iter().enumerate() {
+            let (i, j) = (k as u32 % N, k as u32 / N);
+            let c = cpu.intensity(i as f32 + 0.5, j as f32 + 0.5);
+            if (level(c) - level(*g)).abs() > 4 {
+                differing += 1;
+            }
+        }
+        f64::from(differing) / f64::from(N * N)
+    };
+    let mut report = String::new();
+    for text in STACKS {
+        let spec = NoiseSpec::from_json(text).expect("valid spec");
+        let u = NoiseStackGpu::from_spec(&spec, N).expect("GPU form");
+        let f = compare(&spec, &u);
+        report.push_str(&format!("{:.3} % differ > 4/255\n", 100.0 * f));
+        assert!(f <= 0.01, "{report}{text}");
+    }
+    println!("{report}");
+    // The comparison can fail: another combine mode on the GPU side differs.
+    let spec = NoiseSpec::from_json(STACKS[0]).expect("valid spec");
+    let mut u = NoiseStackGpu::from_spec(&spec, N).expect("GPU form");
+    u.layers[1].combine = marbling_noise::Combine::Max.index();
+    assert!(
+        compare(&spec, &u) > 0.05,
+        "a changed stack passed the comparison"
+    );
+}

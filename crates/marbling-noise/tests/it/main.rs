@@ -2,6 +2,7 @@
 //! file): each module is one area, named as its file.
 
 mod common;
+mod data_gabor;
 mod gabor;
 mod gpu;
 mod noises;

@@ -192,3 +192,25 @@ fn cross_hatch_is_the_product_of_two_hatchings() {
         assert!((rp.intensity(x, y) - expected).abs() < 1e-6);
     }
 }
+
+/// `"tile": N` repeats every N pixels whatever the output size.
+#[test]
+fn a_tile_period_in_pixels_repeats_at_any_size() {
+    for text in [
+        r#"{"type":"perlin","frequency":0.03,"octaves":3,"seed":2,"tile":48}"#,
+        r#"{"type":"worley","frequency":0.05,"seed":2,"tile":48}"#,
+        r#"{"type":"gabor","frequency":0.1,"bandwidth":0.08,"impulses":16,"seed":2,"tile":48}"#,
+    ] {
+        let s = spec(text);
+        let r = marbling_noise::Renderer::new(&s, 200).expect("size");
+        for (x, y) in [(3.5, 7.5), (20.25, 40.0), (47.0, 1.0)] {
+            let a = r.intensity(x, y);
+            for (dx, dy) in [(48.0, 0.0), (0.0, 96.0), (144.0, 48.0)] {
+                let b = r.intensity(x + dx, y + dy);
+                assert!((a - b).abs() < 1e-4, "{text}: ({x}, {y}) + ({dx}, {dy}): {a} vs {b}");
+            }
+        }
+        // Not every shift repeats: the comparison can fail.
+        assert!((r.intensity(3.5, 7.5) - r.intensity(27.5, 7.5)).abs() > 1e-4, "{text}");
+    }
+}

@@ -59,3 +59,42 @@ fn path_named_errors() {
         Err(SpecError::Syntax { line: 1, .. })
     ));
 }
+
+#[test]
+fn layers_tiles_curves_and_data_name_their_problems() {
+    let p = r#"{"type":"perlin","frequency":0.1,"#;
+    assert_eq!(
+        errors(&format!(r#"{p}"layers":[{{"type":"white"}}]}}"#)),
+        ["layers[0].combine: missing; expected one of add, multiply, max, min, mask"]
+    );
+    assert_eq!(
+        errors(&format!(r#"{p}"layers":[{{"type":"white","combine":"mask"}}]}}"#)),
+        [r#"layers[0].mask: missing: combine "mask" needs a mask noise"#]
+    );
+    assert_eq!(
+        errors(&format!(r#"{p}"layers":[{{"type":"white","combine":"max","weight":2}}]}}"#)),
+        ["layers[0].weight: must be ≤ 1, got 2"]
+    );
+    assert!(
+        errors(&format!(r#"{p}"layers":[]}}"#))[0]
+            .starts_with("layers: must be an array of 1 to 4 layers")
+    );
+    assert_eq!(
+        errors(&format!(r#"{p}"tile":0}}"#)),
+        ["tile: must be true, false or a period in pixels (1 to 16384), got 0"]
+    );
+    assert_eq!(
+        errors(&format!(
+            r#"{p}"transfer":{{"type":"curve","points":[[0,0],[0.5,0.2],[0.4,1]]}}}}"#
+        )),
+        ["transfer.points[2]: x must be greater than the previous point's"]
+    );
+    assert_eq!(
+        errors(
+            r#"{"type":"gabor","frequency":0.05,"bandwidth":0.05,"frequency_field":{"data":"weather","channel":4,"amount":1}}"#
+        ),
+        ["frequency_field.channel: must be ≤ 3, got 4"]
+    );
+    let s = NoiseSpec::from_json(&format!(r#"{p}"tile":64}}"#)).expect("valid");
+    assert_eq!(s.tile, marbling_noise::Tile::Period(64));
+}

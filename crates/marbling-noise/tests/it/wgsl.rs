@@ -1,6 +1,7 @@
 //! Every WGSL module parses and validates with naga (no GPU needed), and the host
 //! uniform structs match the WGSL struct layouts.
 
+use marbling_noise::stack_gpu::{NoiseStackGpu, StackLayerGpu, StackTransferGpu};
 use marbling_noise::wgsl::{self, FbmGpu, FiberGridGpu, FibersGpu, GaborGpu, NoiseGpu};
 use std::mem::{offset_of, size_of};
 
@@ -61,5 +62,24 @@ fn host_structs_match_wgsl_layout() {
         fields!(NoiseGpu: noise_type, seed, feature, metric, period, frequency, fbm, gabor,
             gabor_orientation_drive, gabor_frequency_drive, fibers, fiber_grid, speck_grid),
         size_of::<NoiseGpu>(),
+    );
+    let m = module("layers");
+    check_struct(
+        &m,
+        "StackTransfer",
+        fields!(StackTransferGpu: threshold, width, transfer),
+        size_of::<StackTransferGpu>(),
+    );
+    check_struct(
+        &m,
+        "StackLayer",
+        fields!(StackLayerGpu: combine, weight),
+        size_of::<StackLayerGpu>(),
+    );
+    check_uniform(
+        &m,
+        "NoiseStack",
+        fields!(NoiseStackGpu: layer_count, noises, transfers, layers),
+        size_of::<NoiseStackGpu>(),
     );
 }

@@ -1,9 +1,10 @@
-//! A minimal wgpu compute harness: evaluates `sample_noise` (noise.wgsl) at every pixel
-//! centre of an N×N grid and reads the values back. Used by the CPU≡WGSL test and the
-//! GPU benchmark.
+//! A minimal wgpu compute harness: evaluates `sample_noise` (noise.wgsl) or a layer
+//! stack's `stack_intensity` (layers.wgsl) at every pixel centre of an N×N grid and
+//! reads the values back. Used by the CPU≡WGSL tests and the GPU benchmark.
 
 #![allow(dead_code)]
 
+use marbling_noise::stack_gpu::NoiseStackGpu;
 use marbling_noise::wgsl::{self, NoiseGpu};
 use std::time::{Duration, Instant};
 
@@ -21,11 +22,49 @@ fn main(@builtin(global_invocation_id) id: vec3<u32>) {
 }
 ";
 
+const STACK_ENTRY: &str = r"
+@group(0) @binding(0) var<uniform> u: NoiseStack;
+@group(0) @binding(1) var<storage, read_write> out: array<f32>;
+@group(0) @binding(2) var<uniform> dims: vec4<u32>;
+
+@compute @workgroup_size(8, 8)
+fn main(@builtin(global_invocation_id) id: vec3<u32>) {
+    if id.x >= dims.x || id.y >= dims.x {
+        return;
+    }
+    out[id.y * dims.x + id.x] = stack_intensity(vec2<f32>(f32(id.x) + 0.5, f32(id.y) + 0.5), u);
+}
+";
+
+fn pipeline(
+    device: &wgpu::Device,
+    name: &str,
+    entry: &str,
+) -> Result<wgpu::ComputePipeline, String> {
+    let mut src = wgsl::module(name).ok_or("no such module")?;
+    src.push_str(entry);
+    let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+        label: Some(name),
+        source: wgpu::ShaderSource::Wgsl(src.into()),
+    });
+    Ok(
+        device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
+            label: Some(name),
+            layout: None,
+            module: &module,
+            entry_point: Some("main"),
+            compilation_options: Default::default(),
+            cache: None,
+        }),
+    )
+}
+
 /// A device with the noise pipeline.
 pub struct GpuNoise {
     device: wgpu::Device,
     queue: wgpu::Queue,
     pipeline: wgpu::ComputePipeline,
+    stack: wgpu::ComputePipeline,
     /// Adapter name and backend.
     pub adapter: String,
 }
@@ -44,24 +83,13 @@ impl GpuNoise {
         let (device, queue) =
             pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor::default()))
                 .map_err(|e| format!("no device: {e}"))?;
-        let mut src = wgsl::module("noise").ok_or("no noise module")?;
-        src.push_str(ENTRY);
-        let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
-            label: Some("noise"),
-            source: wgpu::ShaderSource::Wgsl(src.into()),
-        });
-        let pipeline = device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
-            label: Some("noise"),
-            layout: None,
-            module: &module,
-            entry_point: Some("main"),
-            compilation_options: Default::default(),
-            cache: None,
-        });
+        let pipeline = pipeline(&device, "noise", ENTRY)?;
+        let stack = self::pipeline(&device, "layers", STACK_ENTRY)?;
         Ok(Self {
             device,
             queue,
             pipeline,
+            stack,
             adapter: format!("{} ({:?})", info.name, info.backend),
         })
     }
@@ -69,11 +97,25 @@ impl GpuNoise {
     /// The noise of `u` at the N×N pixel centres, row-major, and the GPU time (submit to
     /// completion, excluding readback copy mapping).
     pub fn run(&self, u: &NoiseGpu, size: u32) -> (Vec<f32>, Duration) {
+        self.dispatch(&self.pipeline, bytemuck::bytes_of(u), size)
+    }
+
+    /// The stack's intensity at the N×N pixel centres, row-major, and the GPU time.
+    pub fn run_stack(&self, u: &NoiseStackGpu, size: u32) -> (Vec<f32>, Duration) {
+        self.dispatch(&self.stack, bytemuck::bytes_of(u), size)
+    }
+
+    fn dispatch(
+        &self,
+        pipeline: &wgpu::ComputePipeline,
+        uniform: &[u8],
+        size: u32,
+    ) -> (Vec<f32>, Duration) {
         use wgpu::util::DeviceExt;
         let d = &self.device;
         let uniform = d.create_buffer_init(&wgpu::util::BufferInitDescriptor {
             label: Some("uniform"),
-            contents: bytemuck::bytes_of(u),
+            contents: uniform,
             usage: wgpu::BufferUsages::UNIFORM,
         });
         let dims = d.create_buffer_init(&wgpu::util::BufferInitDescriptor {
@@ -96,7 +138,7 @@ impl GpuNoise {
         });
         let bind = d.create_bind_group(&wgpu::BindGroupDescriptor {
             label: None,
-            layout: &self.pipeline.get_bind_group_layout(0),
+            layout: &pipeline.get_bind_group_layout(0),
             entries: &[
                 wgpu::BindGroupEntry {
                     binding: 0,
@@ -115,7 +157,7 @@ impl GpuNoise {
         let mut enc = d.create_command_encoder(&Default::default());
         {
             let mut pass = enc.begin_compute_pass(&Default::default());
-            pass.set_pipeline(&self.pipeline);
+            pass.set_pipeline(pipeline);
             pass.set_bind_group(0, &bind, &[]);
             pass.dispatch_workgroups(size.div_ceil(8), size.div_ceil(8), 1);
         }
