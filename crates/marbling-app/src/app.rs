@@ -140,7 +140,7 @@ impl MarblingApp {
         if let Some(text) = load(crate::noise_settings::KEY) {
             let restored = marbling_noise::NoiseSpec::from_json(&text)
                 .map_err(|e| e.to_string())
-                .and_then(|spec| app.editor.noise.with_spec(spec));
+                .and_then(|spec| app.editor.noise.with_spec(spec, &app.editor.noise_data));
             match restored {
                 Ok(s) => app.editor.noise = s,
                 Err(e) => log::warn!("the stored noise setup was not restored: {e}"),
@@ -321,7 +321,7 @@ impl MarblingApp {
                 .and_then(|spec| {
                     self.editor
                         .noise
-                        .with_spec(spec)
+                        .with_spec(spec, &self.editor.noise_data)
                         .map_err(|e| format!("noise link: {e}"))
                 });
             match opened {
@@ -440,6 +440,7 @@ impl eframe::App for MarblingApp {
         }
         self.check_device_lost();
         self.poll_picked_file();
+        self.poll_picked_data();
         self.check_fragment();
         self.handle_shortcuts(&ctx);
         self.advance_playback(&ctx);

@@ -65,6 +65,9 @@ impl MarblingApp {
                 Color32::WHITE,
             );
         }
+        if self.editor.mode == crate::mode::Mode::Noise {
+            self.paint_noise_preview(ui, &painter, sheet);
+        }
         // The sheet's outline and the tool overlay: untextured shapes, drawn by the
         // flat-mesh pipeline (src/fast_paint/flat_overlay.rs) when fast paint is on.
         let overlay_start = FastPaint::mark(ui.ctx(), painter.layer_id());

@@ -151,6 +151,7 @@ impl MarblingApp {
                 "data-noise",
                 self.hooks.noise_json.as_ref().map(|(_, j)| j.clone()),
             ),
+            ("data-noise-preview", Some(self.noise_preview_hook())),
             ("data-layout", Some(self.panels.layout.name().to_owned())),
             (
                 "data-focus",

@@ -9,9 +9,7 @@ use egui_plot::{Bar, BarChart, Line, Plot};
 use marbling_core::{GrainKind, NoiseBackground, NoiseLayer, Overlay, Palette};
 use marbling_noise::analysis::{Stats, histogram, radial_spectrum, stats};
 use marbling_noise::ranges::{self, Range};
-use marbling_noise::{
-    EDIT_FLOOR, FbmParams, FiberLayout, NOISE_TYPES, NoiseSpec, Source, Threshold, Transfer,
-};
+use marbling_noise::{EDIT_FLOOR, FbmParams, FiberLayout, NOISE_TYPES, NoiseSpec, Source};
 use std::ops::RangeInclusive;
 
 /// Side of the sample grid the statistics and spectrum are computed on, design pixels.
@@ -81,7 +79,11 @@ impl MarblingApp {
                 }
             });
         noise_parameters(ui, &mut s.spec);
-        let threshold = threshold_transfer(ui, &mut s.spec);
+        let mut controls = crate::noise_controls::transfer_section(ui, &mut s.spec);
+        controls.extend(crate::noise_controls::tile_section(ui, s));
+        controls.extend(crate::noise_controls::blend_section(ui, &mut s.spec));
+        controls.extend(crate::noise_controls::cross_hatch(ui, &mut s.spec));
+        controls.extend(crate::noise_controls::layers_section(ui, &mut s.spec));
         egui::ComboBox::from_label("palette")
             .selected_text(s.palette_name())
             .show_ui(ui, |ui| {
@@ -92,8 +94,11 @@ impl MarblingApp {
         let zoom_box = ui
             .checkbox(&mut s.zoom_independent, "zoom-independent")
             .on_hover_text("Keep features 4–40 screen pixels wide while zooming (octave steps)");
-        self.control("noise-threshold", &threshold);
+        for (name, response) in &controls {
+            self.control(*name, response);
+        }
         self.control("noise-zoom-independent", &zoom_box);
+        self.noise_data_section(ui);
         let factor = self.noise_zoom_factor();
         if factor != 1.0 {
             ui.label(RichText::new(format!("frequency × {factor} at this zoom")).weak());
@@ -269,41 +274,8 @@ impl MarblingApp {
     }
 }
 
-/// The spec's threshold transfer (seed 004's smoothstep of the noise): a checkbox that
-/// turns it on, with its level, width and inversion. Returns the checkbox's response.
-fn threshold_transfer(ui: &mut egui::Ui, spec: &mut NoiseSpec) -> egui::Response {
-    let mut on = matches!(spec.transfer, Some(Transfer::Threshold(_)));
-    let response = ui.checkbox(&mut on, "threshold").on_hover_text(
-        "Intensity = a smoothstep of the noise around a level (sharp-edged patches)",
-    );
-    match (on, &mut spec.transfer) {
-        (true, Some(Transfer::Threshold(t))) => {
-            // The level in noise standard deviations: ±3σ holds nearly every value.
-            ui.add(Slider::new(&mut t.threshold, -3.0..=3.0).text("level (σ)"));
-            ui.add(
-                Slider::new(
-                    &mut t.width,
-                    slider(ranges::THRESHOLD_WIDTH).start().max(0.01)..=3.0,
-                )
-                .text("edge width (σ)")
-                .logarithmic(true),
-            );
-            ui.checkbox(&mut t.invert, "invert");
-        }
-        (true, _) => {
-            spec.transfer = Some(Transfer::Threshold(Threshold {
-                threshold: 0.0,
-                width: 0.5,
-                invert: false,
-            }));
-        }
-        (false, _) => spec.transfer = None,
-    }
-    response
-}
-
 /// A slider's range for a spec range (open ranges start at [`EDIT_FLOOR`]).
-fn slider(r: Range) -> RangeInclusive<f32> {
+pub(crate) fn slider(r: Range) -> RangeInclusive<f32> {
     let s = r.slider(EDIT_FLOOR);
     (*s.start() as f32)..=(*s.end() as f32)
 }
@@ -336,7 +308,7 @@ fn fbm(ui: &mut egui::Ui, p: &mut FbmParams) {
 
 /// The sliders of the spec's noise: each edits one field of the typed spec, within the
 /// range the spec parser accepts (`marbling_noise::ranges`).
-fn noise_parameters(ui: &mut egui::Ui, spec: &mut NoiseSpec) {
+pub(crate) fn noise_parameters(ui: &mut egui::Ui, spec: &mut NoiseSpec) {
     match &mut spec.source {
         Source::Gabor {
             kind,
@@ -401,7 +373,22 @@ fn noise_parameters(ui: &mut egui::Ui, spec: &mut NoiseSpec) {
             }
         }
         Source::Product(inputs) => {
-            ui.label(format!("product of {} noises (set in JSON)", inputs.len()));
+            ui.label(format!(
+                "product of {} noises (cross-hatching)",
+                inputs.len()
+            ));
+            for (i, input) in inputs.iter_mut().enumerate() {
+                egui::CollapsingHeader::new(format!(
+                    "input {}: {}",
+                    i + 1,
+                    input.source.type_name()
+                ))
+                .id_salt(("product-input", i))
+                .show(ui, |ui| {
+                    noise_parameters(ui, input);
+                    crate::noise_controls::threshold_only(ui, input);
+                });
+            }
         }
     }
     if let Some(seed) = spec.source.seed_mut() {

@@ -1,9 +1,11 @@
 //! The noise playground's state: the typed noise spec its sliders edit (ranges, names
 //! and starting values all come from `marbling-noise`), the palette it is shown in, and
-//! seed 004's zoom-independent frequency rule.
+//! seed 004's zoom-independent frequency rules (octave steps for any noise, the paper's
+//! continuous rule for a data-driven Gabor).
 
+use crate::noise_data::NoiseData;
 use marbling_core::{Design, NoiseBackground, NoiseLayer, Palette, Rgb8};
-use marbling_noise::{ColorRamp, NoiseSpec, Source};
+use marbling_noise::{BlendBase, ColorRamp, NoiseSpec, SEED004_FEATURE, Source, Tile, Transfer};
 
 /// Storage key of the noise setup (the JSON of [`NoiseSettings::export_spec`]).
 pub const KEY: &str = "marbling.noise.v1";
@@ -19,6 +21,8 @@ pub struct NoiseSettings {
     pub zoom_independent: bool,
     /// Strength of the grain overlays made from this noise, [0, 1].
     pub grain_strength: f64,
+    /// Show a tiling spec as 2×2 copies of one tile (to check the seams).
+    pub show_tiles: bool,
 }
 
 impl Default for NoiseSettings {
@@ -30,6 +34,7 @@ impl Default for NoiseSettings {
             palette: 5,
             zoom_independent: false,
             grain_strength: 0.3,
+            show_tiles: true,
         }
     }
 }
@@ -40,9 +45,58 @@ impl NoiseSettings {
     /// frequency.
     pub fn zoom_factor(&self, zoom: f64) -> f64 {
         match self.spec.source.feature_frequency() {
+            // Seed 004's eq. 3: F₀ = Z/S exactly, not in octave steps.
+            Some(f) if self.zoom_independent && self.spec.has_data_frequency() => {
+                zoom / f64::from(SEED004_FEATURE[1]) / f
+            }
             Some(f) if self.zoom_independent => zoom_octave_factor(f, zoom),
             _ => 1.0,
         }
+    }
+
+    /// The spec shown at zoom factor `factor` ([`NoiseSettings::zoom_factor`]): seed
+    /// 004's frequency rule for a data-driven Gabor, else every frequency scaled.
+    pub fn shown_spec(&self, factor: f64) -> NoiseSpec {
+        if factor == 1.0 {
+            self.export_spec()
+        } else if self.zoom_independent && self.spec.has_data_frequency() {
+            let f = self.spec.source.feature_frequency().unwrap_or(0.025) * factor;
+            NoiseSettings {
+                spec: self.spec.seed004(f as f32),
+                ..self.clone()
+            }
+            .export_spec()
+        } else {
+            NoiseSettings {
+                spec: self.spec.scaled(factor),
+                ..self.clone()
+            }
+            .export_spec()
+        }
+    }
+
+    /// The part of `spec` a design's noise background can hold (no tiling, layers,
+    /// curve or spline transfer, palette, blend or data): what the GPU canvas draws
+    /// under the preview of the rest.
+    pub fn base_of(spec: &NoiseSpec) -> NoiseSpec {
+        let mut base = NoiseSpec::plain(match &spec.source {
+            Source::Product(inputs) => inputs
+                .first()
+                .map_or_else(|| spec.source.clone(), |i| i.source.clone()),
+            s => s.without_data(),
+        });
+        if let Some(t @ Transfer::Threshold(_)) = &spec.transfer {
+            base.transfer = Some(t.clone());
+        }
+        base
+    }
+
+    /// Whether the spec has more than a design's noise background can show (the canvas
+    /// then shows a preview of the whole spec over it).
+    pub fn needs_preview(&self) -> bool {
+        let mut plain = self.spec.clone();
+        plain.palette = None;
+        Self::base_of(&self.spec) != plain
     }
 
     /// Switches to a noise of type `type_name` at its starting values, keeping the seed.
@@ -52,17 +106,11 @@ impl NoiseSettings {
         }
     }
 
-    /// The noise layer of the spec scaled by `factor` (see [`NoiseSettings::zoom_factor`]),
-    /// or the first problem found.
+    /// The noise layer of the spec's base ([`NoiseSettings::base_of`]) at zoom factor
+    /// `factor` (see [`NoiseSettings::zoom_factor`]), or the first problem found.
     pub fn layer(&self, factor: f64) -> Result<NoiseLayer, String> {
-        let scaled;
-        let spec = if factor == 1.0 {
-            &self.spec
-        } else {
-            scaled = self.spec.scaled(factor);
-            &scaled
-        };
-        NoiseLayer::from_spec(spec).map_err(|problems| {
+        let spec = Self::base_of(&self.shown_spec(factor));
+        NoiseLayer::from_spec(&spec).map_err(|problems| {
             problems
                 .first()
                 .map_or_else(|| "invalid noise".to_owned(), ToString::to_string)
@@ -71,40 +119,67 @@ impl NoiseSettings {
 
     /// The spec with the panel's palette in it: what *Copy spec*, the `#n=` link and the
     /// stored setup hold, and what `marbling noise` renders as the panel shows it.
+    /// A blend colours with the panel's palette in place of `palette`.
     pub fn export_spec(&self) -> NoiseSpec {
-        NoiseSpec {
-            palette: ColorRamp::named(self.palette_name()),
-            ..self.spec.clone()
+        let mut spec = self.spec.clone();
+        let ramp = ColorRamp::named(self.palette_name());
+        match (&mut spec.blend, ramp) {
+            (Some(b), Some(r)) => {
+                match &mut b.base {
+                    BlendBase::Ramp(x) | BlendBase::Data { ramp: x, .. } => *x = r,
+                    BlendBase::Color(_) => {}
+                }
+                spec.palette = None;
+            }
+            (None, r) => spec.palette = r,
+            (Some(_), None) => {}
         }
+        spec
     }
 
     /// These settings with `spec` (from a link, a file or storage), its palette taken
-    /// for the panel's; an error naming the field when the playground cannot show it (a
-    /// palette of its own stops, tiling, a blend, a spline decay, a product).
-    pub fn with_spec(&self, mut spec: NoiseSpec) -> Result<NoiseSettings, String> {
-        let mut palette = self.palette;
-        if let Some(ramp) = spec.palette.take() {
-            let names = marbling_noise::PALETTES;
-            palette = ramp
-                .name()
+    /// for the panel's and its data attached from `data`; an error naming the field
+    /// when the playground cannot show it (a palette of its own stops, data not loaded).
+    pub fn with_spec(
+        &self,
+        mut spec: NoiseSpec,
+        data: &NoiseData,
+    ) -> Result<NoiseSettings, String> {
+        let names = marbling_noise::PALETTES;
+        let index = |ramp: &ColorRamp, field: &str| {
+            ramp.name()
                 .and_then(|n| names.iter().position(|m| *m == n))
                 .ok_or_else(|| {
                     format!(
-                        "palette: the playground shows the named palettes ({})",
+                        "{field}: the playground shows the named palettes ({})",
                         names.join(", ")
                     )
-                })?;
+                })
+        };
+        let mut palette = self.palette;
+        if let Some(ramp) = spec.palette.take() {
+            palette = index(&ramp, "palette")?;
         }
-        NoiseLayer::from_spec(&spec).map_err(|problems| {
-            problems
-                .first()
-                .map_or_else(|| "invalid noise".to_owned(), ToString::to_string)
-        })?;
+        if let Some(b) = &spec.blend {
+            match &b.base {
+                BlendBase::Ramp(r) | BlendBase::Data { ramp: r, .. } => {
+                    palette = index(r, "blend.palette")?;
+                }
+                BlendBase::Color(_) => {}
+            }
+        }
+        data.attach(&mut spec)?;
+        marbling_noise::Renderer::new(&spec, 1).map_err(|e| e.to_string())?;
         Ok(NoiseSettings {
             spec,
             palette,
             ..self.clone()
         })
+    }
+
+    /// Turns tiling on with `period` pixels, or off.
+    pub fn set_tile(&mut self, period: Option<u32>) {
+        self.spec.tile = period.map_or(Tile::Off, Tile::Period);
     }
 
     /// The palette's name.
@@ -174,12 +249,18 @@ mod tests {
         let spec = s.export_spec();
         assert_eq!(spec.to_value()["palette"], marbling_noise::PALETTES[3]);
         let back = NoiseSettings::default()
-            .with_spec(NoiseSpec::from_value(&spec.to_value()).expect("valid"))
+            .with_spec(
+                NoiseSpec::from_value(&spec.to_value()).expect("valid"),
+                &NoiseData::default(),
+            )
             .expect("shown");
         assert_eq!(back.spec, s.spec);
         assert_eq!(back.palette, 3);
         let shown = |json: &str| {
-            NoiseSettings::default().with_spec(NoiseSpec::from_json(json).expect("valid"))
+            NoiseSettings::default().with_spec(
+                NoiseSpec::from_json(json).expect("valid"),
+                &NoiseData::default(),
+            )
         };
         let e = shown(r##"{"type":"perlin","frequency":0.1,"palette":["#000000","#123456"]}"##)
             .expect_err("own stops");
@@ -187,8 +268,16 @@ mod tests {
             e.starts_with("palette: the playground shows the named palettes"),
             "{e}"
         );
-        let e = shown(r#"{"type":"perlin","frequency":0.1,"tile":true}"#).expect_err("tile");
-        assert!(e.starts_with("tile: "), "{e}");
+        // What a design's background cannot hold is shown by the preview, not refused.
+        let tiled = shown(r#"{"type":"perlin","frequency":0.1,"tile":64}"#).expect("tile");
+        assert!(tiled.needs_preview());
+        assert!(!NoiseSettings::default().needs_preview());
+        let e = shown(r#"{"type":"gabor","frequency":0.1,"bandwidth":0.1,"frequency_field":{"data":"x.csv","amount":1}}"#)
+            .expect_err("not loaded");
+        assert_eq!(
+            e,
+            "data: 'x.csv': is not loaded: load it in the Data section first"
+        );
     }
 
     #[test]

@@ -66,7 +66,11 @@ impl MarblingApp {
             let open = ui.button("Open…").on_hover_text("Open a design JSON file");
             self.control("open", &open);
             if open.clicked() {
-                platform::pick_file(self.panels.pick.clone(), ui.ctx().clone());
+                platform::pick_file(
+                    self.panels.pick.clone(),
+                    platform::DESIGN_FILE,
+                    ui.ctx().clone(),
+                );
             }
             let save = ui.button("Save JSON");
             self.control("save-json", &save);

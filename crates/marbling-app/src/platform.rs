@@ -8,12 +8,19 @@ pub type PickedFile = Result<(String, Vec<u8>), String>;
 /// Where an asynchronous file pick delivers its result.
 pub type PickSlot = std::sync::Arc<std::sync::Mutex<Option<PickedFile>>>;
 
+/// What a file dialog offers: a filter name and its extensions.
+pub type FileKind = (&'static str, &'static [&'static str]);
+/// A design JSON.
+pub const DESIGN_FILE: FileKind = ("design", &["json"]);
+/// A data grid for the noise playground.
+pub const DATA_FILE: FileKind = ("data (PNG or CSV)", &["png", "csv", "txt"]);
+
 /// The id of the page's `<canvas>` the app draws into.
 pub const CANVAS_ID: &str = "marbling_canvas";
 
 #[cfg(target_arch = "wasm32")]
 mod imp {
-    use super::{PickSlot, PickedFile};
+    use super::{FileKind, PickSlot, PickedFile};
     use wasm_bindgen::JsCast;
 
     fn window() -> Option<web_sys::Window> {
@@ -171,11 +178,12 @@ mod imp {
         Ok(())
     }
 
-    /// Asks the user for a file; the result arrives in `slot` later.
-    pub fn pick_file(slot: PickSlot, ctx: egui::Context) {
+    /// Asks the user for a file of `kind` (a filter name and its extensions); the result
+    /// arrives in `slot` later.
+    pub fn pick_file(slot: PickSlot, kind: FileKind, ctx: egui::Context) {
         wasm_bindgen_futures::spawn_local(async move {
             let picked = rfd::AsyncFileDialog::new()
-                .add_filter("design", &["json"])
+                .add_filter(kind.0, kind.1)
                 .pick_file()
                 .await;
             if let Some(file) = picked {
@@ -246,7 +254,7 @@ mod imp {
 
 #[cfg(not(target_arch = "wasm32"))]
 mod imp {
-    use super::PickSlot;
+    use super::{FileKind, PickSlot};
 
     /// A share link given on the command line (`marbling-app 'http://…#d=…'`).
     pub fn fragment() -> Option<String> {
@@ -315,10 +323,11 @@ mod imp {
         std::fs::write(&path, bytes).map_err(|e| format!("cannot write '{}': {e}", path.display()))
     }
 
-    /// Asks the user for a file; the result arrives in `slot` at once.
-    pub fn pick_file(slot: PickSlot, _ctx: egui::Context) {
+    /// Asks the user for a file of `kind` (a filter name and its extensions); the result
+    /// arrives in `slot` at once.
+    pub fn pick_file(slot: PickSlot, kind: FileKind, _ctx: egui::Context) {
         let Some(path) = rfd::FileDialog::new()
-            .add_filter("design", &["json"])
+            .add_filter(kind.0, kind.1)
             .pick_file()
         else {
             return;

@@ -74,6 +74,10 @@ pub struct Editor {
     /// The noise layer of the shown settings, made once per change of them (parsing a
     /// spec builds its CPU field); `None` until asked for.
     pub noise_layer: Option<Result<marbling_core::NoiseLayer, String>>,
+    /// The data sets loaded for data-driven noise.
+    pub noise_data: crate::noise_data::NoiseData,
+    /// The CPU picture of what the noise background cannot show.
+    pub noise_preview: Option<crate::noise_preview::NoisePreview>,
 }
 
 impl Editor {
@@ -102,6 +106,8 @@ impl Editor {
             noise_shown: None,
             noise_analysis: None,
             noise_layer: None,
+            noise_data: crate::noise_data::NoiseData::default(),
+            noise_preview: None,
         }
     }
 }
@@ -203,6 +209,8 @@ pub struct Panels {
     pub message: Option<Message>,
     /// Where an asynchronous file pick delivers.
     pub pick: PickSlot,
+    /// Where a data file pick (noise playground) delivers.
+    pub data_pick: PickSlot,
     /// The gallery's designs and thumbnails (src/landing.rs), read on first show.
     pub gallery: Option<crate::landing::GalleryView>,
     /// The GPU thumbnail atlas (src/gallery_gpu.rs) as egui knows it.
@@ -236,6 +244,7 @@ impl Default for Panels {
         Self {
             message: None,
             pick: PickSlot::default(),
+            data_pick: PickSlot::default(),
             gallery: None,
             gallery_texture: None,
             recent_thumbnails: HashMap::new(),

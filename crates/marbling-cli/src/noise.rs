@@ -37,13 +37,16 @@ fn load_data(dir: &Path, name: &str) -> std::result::Result<Arc<DataGrid>, Strin
         .map_err(|e| format!("cannot read {}: {e}", path.display()))?
         .len();
     if size > MAX_DATA_BYTES {
-        return Err(format!("{size} bytes; data files are read up to {MAX_DATA_BYTES}"));
+        return Err(format!(
+            "{size} bytes; data files are read up to {MAX_DATA_BYTES}"
+        ));
     }
     let bytes = std::fs::read(&path).map_err(|e| format!("cannot read {}: {e}", path.display()))?;
     let grid = if bytes.starts_with(b"\x89PNG") {
         DataGrid::from_png(&bytes)
     } else {
-        let text = String::from_utf8(bytes).map_err(|_| "neither a PNG nor a CSV text".to_owned())?;
+        let text =
+            String::from_utf8(bytes).map_err(|_| "neither a PNG nor a CSV text".to_owned())?;
         DataGrid::from_csv(&text, name)
     };
     grid.map(Arc::new).map_err(|e| e.to_string())

@@ -65,7 +65,7 @@ pub use spec::{
     Blend, BlendBase, DecayValue, DriveSource, DriveSpec, FieldError, MAX_IMPULSES, NOISE_TYPES,
     NoiseSpec, Source, SpecError, Tile, Transfer,
 };
-pub use spec_edit::EDIT_FLOOR;
+pub use spec_edit::{EDIT_FLOOR, SEED004_FEATURE};
 pub use transfer::{
     SplineDecay, SplineDecayTable, Threshold, hsv_to_rgb, hsv_value_blend, rgb_to_hsv, smoothstep,
 };

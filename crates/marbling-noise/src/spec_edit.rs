@@ -1,12 +1,17 @@
 //! Changing a spec in code, as an editor does: the starting values of each noise type,
 //! the type's name, the seed, and the spec rescaled for a zoom (seed 004's
-//! zoom-independent rule multiplies every frequency by a power of two).
+//! zoom-independent rule: every frequency × a power of two, or for a data-driven Gabor
+//! the paper's continuous frequency control), and seed 004's weather example.
 
+use crate::data::DataRef;
 use crate::fbm::{Basis, FbmParams};
 use crate::fibers::{FiberLayout, FiberParams};
 use crate::gabor::GaborKind;
+use crate::ramp::ColorRamp;
 use crate::ranges::{self, Range};
-use crate::spec::{NoiseSpec, Source};
+use crate::spec::{
+    Blend, BlendBase, DecayValue, DriveSource, DriveSpec, NoiseSpec, Source, Transfer,
+};
 use crate::{CurlComponent, Metric, WorleyFeature};
 
 /// The smallest value an editor gives a parameter whose range is open below.
@@ -123,7 +128,116 @@ impl Source {
     }
 }
 
+/// Seed 004's screen-space feature sizes s and S, pixels: the range the human visual
+/// system reads best.
+pub const SEED004_FEATURE: [f32; 2] = [4.0, 40.0];
+
+/// √(−ln t/π) for the Gabor truncation t: a = this / G makes a kernel span G pixels.
+fn kernel_span() -> f32 {
+    (-crate::GABOR_TRUNCATION.ln() / std::f32::consts::PI).sqrt()
+}
+
+impl Source {
+    /// The source with data drives removed (a noise drive is kept).
+    #[must_use]
+    pub fn without_data(&self) -> Source {
+        let mut s = self.clone();
+        if let Source::Gabor {
+            orientation_field,
+            frequency_field,
+            ..
+        } = &mut s
+        {
+            for d in [orientation_field, frequency_field] {
+                if d.as_ref()
+                    .is_some_and(|d| matches!(d.by, DriveSource::Data(_)))
+                {
+                    *d = None;
+                }
+            }
+        }
+        s
+    }
+}
+
 impl NoiseSpec {
+    /// Whether a data channel drives the Gabor frequency (seed 004's first attribute).
+    #[must_use]
+    pub fn has_data_frequency(&self) -> bool {
+        matches!(
+            &self.source,
+            Source::Gabor {
+                frequency_field: Some(DriveSpec {
+                    by: DriveSource::Data(_),
+                    ..
+                }),
+                ..
+            }
+        )
+    }
+
+    /// Seed 004's frequency control (eq. 3–5) with F₀ = `f0` (= Z/S at zoom Z): the
+    /// frequency drive spans log₂(S/s) octaves, so features run from S/Z (v = 0) down to
+    /// s/Z (v = 1) design pixels, and the bandwidth makes a kernel span one
+    /// period at v = 0. Specs without a data frequency drive are returned unchanged.
+    #[must_use]
+    pub fn seed004(&self, f0: f32) -> NoiseSpec {
+        let mut s = self.clone();
+        if !self.has_data_frequency() {
+            return s;
+        }
+        if let Source::Gabor {
+            frequency,
+            bandwidth,
+            frequency_field: Some(d),
+            ..
+        } = &mut s.source
+        {
+            let [small, large] = SEED004_FEATURE;
+            *frequency = ranges::GABOR_FREQUENCY.clamp(f64::from(f0), EDIT_FLOOR) as f32;
+            *bandwidth =
+                ranges::BANDWIDTH.clamp(f64::from(kernel_span() * *frequency), EDIT_FLOOR) as f32;
+            d.amount = (large / small).log2();
+        }
+        s
+    }
+
+    /// Seed 004's weather figure with the built-in `weather` data: random-phase Gabor
+    /// whose frequency and mean intensity (spline decay) show the temperature, whose
+    /// orientation shows the wind direction, HSV-blended (β = 0.6) into `palette` at the
+    /// pressure. Features span 40 to 4 pixels at zoom 1.
+    #[must_use]
+    pub fn weather_example(palette: ColorRamp, seed: u32) -> NoiseSpec {
+        let data = |channel| DataRef::new(crate::WEATHER, channel);
+        let drive = |channel, amount| {
+            Some(DriveSpec {
+                by: DriveSource::Data(data(channel)),
+                amount,
+            })
+        };
+        let gabor = NoiseSpec {
+            transfer: Some(Transfer::SplineDecay(DecayValue::Data(data(1)))),
+            blend: Some(Blend {
+                beta: 0.6,
+                base: BlendBase::Data {
+                    ramp: palette,
+                    value: data(3),
+                },
+            }),
+            ..NoiseSpec::plain(Source::Gabor {
+                kind: GaborKind::RandomPhase,
+                frequency: 0.025,
+                orientation: 0.0,
+                bandwidth: 0.025,
+                impulses: 48.0,
+                seed,
+                orientation_field: drive(2, std::f32::consts::PI),
+                frequency_field: drive(1, 1.0),
+            })
+        };
+        gabor.seed004(1.0 / SEED004_FEATURE[1])
+    }
+
     /// A spec of `source` alone: no tiling, transfer, palette or blend.
     #[must_use]
     pub fn plain(source: Source) -> Self {
@@ -259,5 +373,35 @@ mod tests {
                 assert!(NoiseSpec::from_value(&s.to_value()).is_ok(), "{t} × {k}");
             }
         }
+    }
+
+    #[test]
+    fn seed004_keeps_features_between_4_and_40_screen_pixels() {
+        let spec = NoiseSpec::weather_example(ColorRamp::named("viridis").expect("named"), 1);
+        assert!(spec.has_data_frequency());
+        for zoom in [0.5f32, 1.0, 3.0] {
+            let s = spec.seed004(zoom / SEED004_FEATURE[1]);
+            let Source::Gabor {
+                frequency,
+                bandwidth,
+                frequency_field: Some(d),
+                ..
+            } = &s.source
+            else {
+                panic!("Gabor")
+            };
+            // Screen period at v = 0 and v = 1.
+            let widest = zoom / frequency;
+            let finest = zoom / (frequency * d.amount.exp2());
+            assert!(
+                (widest - 40.0).abs() < 1e-3 && (finest - 4.0).abs() < 1e-3,
+                "{zoom}"
+            );
+            assert!((bandwidth / frequency - kernel_span()).abs() < 1e-4);
+        }
+        let r = crate::Renderer::new(&spec, 32).expect("the weather is built in");
+        assert!(r.color(16.0, 16.0).iter().all(|c| (0.0..=1.0).contains(c)));
+        assert_eq!(spec.source.without_data().type_name(), "gabor");
+        assert!(!NoiseSpec::plain(spec.source.without_data()).has_data_frequency());
     }
 }

@@ -291,10 +291,14 @@ fn data_driven_specs_read_their_data_beside_the_spec() {
     assert_eq!((w, color), (48, png::ColorType::Rgb));
     assert!(data.iter().max() > data.iter().min());
 
-    let e = failure(r#"{"type":"gabor","frequency":0.05,"bandwidth":0.05,"frequency_field":{"data":"nowhere.png","amount":1}}"#);
+    let e = failure(
+        r#"{"type":"gabor","frequency":0.05,"bandwidth":0.05,"frequency_field":{"data":"nowhere.png","amount":1}}"#,
+    );
     assert!(e.contains("SPEC: data: 'nowhere.png': cannot read"), "{e}");
     std::fs::write(temp("broken.csv"), "1,2\nthree,4\n").expect("csv");
-    let e = failure(r#"{"type":"gabor","frequency":0.05,"bandwidth":0.05,"frequency_field":{"data":"broken.csv","amount":1}}"#);
+    let e = failure(
+        r#"{"type":"gabor","frequency":0.05,"bandwidth":0.05,"frequency_field":{"data":"broken.csv","amount":1}}"#,
+    );
     assert!(
         e.contains("SPEC: data: 'broken.csv': line 2: 'three' is not a finite number"),
         "{e}"

@@ -207,10 +207,16 @@ fn a_tile_period_in_pixels_repeats_at_any_size() {
             let a = r.intensity(x, y);
             for (dx, dy) in [(48.0, 0.0), (0.0, 96.0), (144.0, 48.0)] {
                 let b = r.intensity(x + dx, y + dy);
-                assert!((a - b).abs() < 1e-4, "{text}: ({x}, {y}) + ({dx}, {dy}): {a} vs {b}");
+                assert!(
+                    (a - b).abs() < 1e-4,
+                    "{text}: ({x}, {y}) + ({dx}, {dy}): {a} vs {b}"
+                );
             }
         }
         // Not every shift repeats: the comparison can fail.
-        assert!((r.intensity(3.5, 7.5) - r.intensity(27.5, 7.5)).abs() > 1e-4, "{text}");
+        assert!(
+            (r.intensity(3.5, 7.5) - r.intensity(27.5, 7.5)).abs() > 1e-4,
+            "{text}"
+        );
     }
 }

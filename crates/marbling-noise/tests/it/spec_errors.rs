@@ -68,11 +68,15 @@ fn layers_tiles_curves_and_data_name_their_problems() {
         ["layers[0].combine: missing; expected one of add, multiply, max, min, mask"]
     );
     assert_eq!(
-        errors(&format!(r#"{p}"layers":[{{"type":"white","combine":"mask"}}]}}"#)),
+        errors(&format!(
+            r#"{p}"layers":[{{"type":"white","combine":"mask"}}]}}"#
+        )),
         [r#"layers[0].mask: missing: combine "mask" needs a mask noise"#]
     );
     assert_eq!(
-        errors(&format!(r#"{p}"layers":[{{"type":"white","combine":"max","weight":2}}]}}"#)),
+        errors(&format!(
+            r#"{p}"layers":[{{"type":"white","combine":"max","weight":2}}]}}"#
+        )),
         ["layers[0].weight: must be ≤ 1, got 2"]
     );
     assert!(
