@@ -305,5 +305,57 @@ for (const backend of Object.keys(BACKENDS)) {
       assert.deepEqual(errors, []);
       await context.close();
     });
+
+    test('the Noise panel: a seamless export, a layer on 2×2 tiles, and seed 004 weather data', { skip: backend !== 'webgpu' }, async () => {
+      // A tall page: the whole Noise panel fits without scrolling.
+      const { page, context, errors } = await openPage(browser, site, '', { width: 1300, height: 1500 });
+      await clickControl(page, 'mode-noise');
+      await page.waitForFunction(() => document.body.dataset.mode === 'noise' && document.body.dataset.ready === '1', null, { timeout: READY_MS });
+      assert.equal(await attr(page, 'data-noise-preview'), 'off', 'a plain noise needs no CPU preview');
+      const plain = await shootSheet(page, STONE.design.width, STONE.design.height);
+      // A tileable Perlin exported at 1024²: greyscale, seamless over its size.
+      await clickControl(page, 'noise-tile');
+      await page.waitForFunction(() => JSON.parse(document.body.dataset.noise).tile === 256, null, { timeout: READY_MS });
+      const file = await download(page, 'noise-export-png');
+      assert.equal(file.name, 'noise-perlin-1024-8bit.png');
+      const png = PNG.sync.read(file.bytes, { skipRescale: true });
+      assert.equal(png.width, 1024);
+      const grey = (x, y) => png.data[4 * (y * 1024 + x)];
+      let seam = 0;
+      let inner = 0;
+      for (let y = 0; y < 1024; y++) {
+        seam += Math.abs(grey(1023, y) - grey(0, y));
+        inner += Math.abs(grey(511, y) - grey(512, y));
+      }
+      assert.ok(seam <= 1.25 * inner + 1024, `seam ${seam} vs interior ${inner}`);
+      // A layer on top, shown as 2×2 copies of one tile.
+      await clickControl(page, 'noise-add-layer');
+      await page.waitForFunction(() => JSON.parse(document.body.dataset.noise).layers?.length === 1, null, { timeout: READY_MS });
+      const layered = JSON.parse(await attr(page, 'data-noise'));
+      assert.deepEqual([layered.layers[0].type, layered.layers[0].combine, layered.layers[0].weight], ['worley', 'add', 0.5]);
+      await page.waitForFunction(() => document.body.dataset.noisePreview === 'tiles 256x256', null, { timeout: READY_MS });
+      await page.screenshot({ path: path.join(SHOTS, `noise-tiles-${backend}.png`), timeout: READY_MS });
+      // Seed 004: the weather data drives a Gabor, drawn by the CPU preview.
+      await clickControl(page, 'noise-weather');
+      await page.waitForFunction(() => JSON.parse(document.body.dataset.noise).frequency_field?.data === 'weather', null, { timeout: READY_MS });
+      const spec = JSON.parse(await attr(page, 'data-noise'));
+      assert.deepEqual([spec.kind, spec.frequency_field.channel, spec.orientation_field.channel, spec.blend.value.channel], ['random-phase', 1, 2, 3]);
+      assert.deepEqual(spec.transfer, { type: 'spline-decay', value: { data: 'weather', channel: 1 } });
+      // Coarse first, then the finer picture of the whole sheet.
+      await page.waitForFunction(() => /^sheet 256x\d+$/.test(document.body.dataset.noisePreview), null, { timeout: READY_MS });
+      const weather = await shootSheet(page, STONE.design.width, STONE.design.height);
+      // The panel grew with the layer, so the sheet may be drawn a little smaller now.
+      const [w, h] = [Math.min(plain.img.width, weather.img.width), Math.min(plain.img.height, weather.img.height)];
+      assert.ok(differing(crop(plain.img, w, h), crop(weather.img, w, h), 24) > 0.3, 'the canvas does not show the data-driven noise');
+      await page.screenshot({ path: path.join(SHOTS, `noise-weather-${backend}.png`), timeout: READY_MS });
+      // The setup, data references included, survives a reload.
+      await page.waitForTimeout(1500);
+      await page.goto(`${site.url}?landing=0`);
+      await waitReady(page);
+      assert.deepEqual(JSON.parse(await attr(page, 'data-noise')), spec, 'the data-driven setup was not kept');
+      assert.equal(await attr(page, 'data-error'), null);
+      assert.deepEqual(errors, []);
+      await context.close();
+    });
   });
 }

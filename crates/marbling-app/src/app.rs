@@ -55,6 +55,8 @@ pub struct MarblingApp {
 /// Default canvas of a new design, design pixels.
 pub const NEW_SIZE: [u32; 2] = [1024, 768];
 
+/// The sheet under the noise preview (where 2×2 tiles leave it uncovered).
+const PREVIEW_PAPER: marbling_core::Rgb8 = marbling_core::Rgb8::new(40, 40, 44);
 impl MarblingApp {
     /// Creates the app: GPU resources, then the design from a share link, else the
     /// autosave, else the first gallery example.
@@ -220,8 +222,15 @@ impl MarblingApp {
         if self.editor.mode == Mode::Noise {
             let d = self.editor.history.design();
             let size = [d.width, d.height];
-            let noise = self.noise_layer();
-            match noise.and_then(|layer| self.editor.noise.design(size, layer)) {
+            // The CPU preview draws a spec the background cannot hold: the GPU then
+            // draws a bare sheet under it, not the (costly) base noise.
+            let noise = if self.editor.noise.needs_preview() {
+                Ok(marbling_core::Design::new(size[0], size[1], PREVIEW_PAPER))
+            } else {
+                self.noise_layer()
+                    .and_then(|layer| self.editor.noise.design(size, layer))
+            };
+            match noise {
                 Ok(noise) => self.editor.shown = crate::shown::Shown::all(Arc::new(noise)),
                 Err(e) => self.error(format!("noise: {e}")),
             }
@@ -446,6 +455,7 @@ impl eframe::App for MarblingApp {
         self.advance_playback(&ctx);
         self.follow_recording();
         self.advance_export(frame, &ctx);
+        self.advance_noise_export(&ctx);
         self.follow_noise();
         self.hooks.controls.clear();
         // The window is cleared to the grey around the sheet and the canvas has no fill,

@@ -117,7 +117,11 @@ impl MarblingApp {
             .rendering
             .export
             .as_ref()
-            .map(|(e, _)| format!("{}x{}", e.size().0, e.size().1));
+            .map(|(e, _)| format!("{}x{}", e.size().0, e.size().1))
+            .or_else(|| {
+                let e = self.editor.noise_export.as_ref()?;
+                Some(format!("{0}x{0}", e.size()))
+            });
         let wanted: Vec<(&'static str, Option<String>)> = vec![
             ("data-ready", ready.then(|| "1".to_owned())),
             ("data-progress", progress),

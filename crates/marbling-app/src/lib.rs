@@ -28,6 +28,7 @@ pub mod layout;
 pub mod mode;
 mod noise_controls;
 pub mod noise_data;
+pub mod noise_export;
 mod noise_panel;
 pub mod noise_preview;
 pub mod noise_settings;

@@ -192,41 +192,40 @@ impl MarblingApp {
     /// The Data section: examples, loading, the channel mapping, the explanation and
     /// the legend.
     pub(crate) fn noise_data_section(&mut self, ui: &mut egui::Ui) {
-        egui::CollapsingHeader::new("Data (seed 004)")
-            .default_open(self.editor.noise.spec.has_data_frequency())
-            .show(ui, |ui| {
-                ui.horizontal_wrapped(|ui| {
-                    let weather = ui.button("Weather example").on_hover_text(
-                        "Temperature → frequency and brightness, wind → orientation, pressure → colour",
-                    );
-                    self.control("noise-weather", &weather);
-                    if weather.clicked() {
-                        self.weather_example();
-                    }
-                    let load = ui
-                        .button("Load data…")
-                        .on_hover_text("A PNG (8/16-bit, up to 3 channels) or a CSV grid");
-                    self.control("noise-load-data", &load);
-                    if load.clicked() {
-                        crate::platform::pick_file(
-                            self.panels.data_pick.clone(),
-                            crate::platform::DATA_FILE,
-                            ui.ctx().clone(),
-                        );
-                    }
-                });
-                if self.editor.noise.spec.has_data_frequency() {
-                    self.data_mapping(ui);
-                } else {
-                    ui.label(
-                        RichText::new(
-                            "Show three data attributes in one texture that stays legible at \
-                             every zoom: start from the weather example or load your data.",
-                        )
-                        .weak(),
+        ui.label(RichText::new("Data (seed 004)").strong());
+        {
+            ui.horizontal_wrapped(|ui| {
+                let weather = ui.button("Weather example").on_hover_text(
+                    "Temperature → frequency and brightness, wind → orientation, pressure → colour",
+                );
+                self.control("noise-weather", &weather);
+                if weather.clicked() {
+                    self.weather_example();
+                }
+                let load = ui
+                    .button("Load data…")
+                    .on_hover_text("A PNG (8/16-bit, up to 3 channels) or a CSV grid");
+                self.control("noise-load-data", &load);
+                if load.clicked() {
+                    crate::platform::pick_file(
+                        self.panels.data_pick.clone(),
+                        crate::platform::DATA_FILE,
+                        ui.ctx().clone(),
                     );
                 }
             });
+            if self.editor.noise.spec.has_data_frequency() {
+                self.data_mapping(ui);
+            } else {
+                ui.label(
+                    RichText::new(
+                        "Show three data attributes in one texture that stays legible at \
+                             every zoom: start from the weather example or load your data.",
+                    )
+                    .weak(),
+                );
+            }
+        }
     }
 
     fn data_mapping(&mut self, ui: &mut egui::Ui) {

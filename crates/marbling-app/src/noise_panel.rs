@@ -9,7 +9,9 @@ use egui_plot::{Bar, BarChart, Line, Plot};
 use marbling_core::{GrainKind, NoiseBackground, NoiseLayer, Overlay, Palette};
 use marbling_noise::analysis::{Stats, histogram, radial_spectrum, stats};
 use marbling_noise::ranges::{self, Range};
-use marbling_noise::{EDIT_FLOOR, FbmParams, FiberLayout, NOISE_TYPES, NoiseSpec, Source};
+use marbling_noise::{
+    DriveSource, DriveSpec, EDIT_FLOOR, FbmParams, FiberLayout, NOISE_TYPES, NoiseSpec, Source,
+};
 use std::ops::RangeInclusive;
 
 /// Side of the sample grid the statistics and spectrum are computed on, design pixels.
@@ -101,7 +103,7 @@ impl MarblingApp {
         self.noise_data_section(ui);
         let factor = self.noise_zoom_factor();
         if factor != 1.0 {
-            ui.label(RichText::new(format!("frequency × {factor} at this zoom")).weak());
+            ui.label(RichText::new(format!("frequency × {factor:.3} at this zoom")).weak());
         }
         self.noise_readout(ui);
         ui.separator();
@@ -179,7 +181,17 @@ impl MarblingApp {
                 self.info("noise spec copied");
             }
         });
+        self.noise_export_row(ui);
         ui.label(RichText::new("Use on the design").strong());
+        if self.editor.noise.needs_preview() {
+            ui.label(
+                RichText::new(
+                    "A design holds the base noise only (no layers, tiling, curve, spline \
+                     decay, blend or data)",
+                )
+                .weak(),
+            );
+        }
         let layer = match self.noise_layer() {
             Ok(l) => l,
             Err(e) => {
@@ -232,6 +244,38 @@ impl MarblingApp {
                 surface.1.retain(|o| o.kind != kind);
                 surface.1.push(overlay);
                 self.set_surface(surface, kind.name());
+            }
+        });
+    }
+
+    /// Export PNG of the whole spec: size, depth, progress.
+    fn noise_export_row(&mut self, ui: &mut egui::Ui) {
+        use crate::noise_export::EXPORT_SIZES;
+        ui.horizontal_wrapped(|ui| {
+            let s = &mut self.editor.noise;
+            let size = EXPORT_SIZES[s.export_size.min(EXPORT_SIZES.len() - 1)];
+            egui::ComboBox::from_id_salt("noise-export-size")
+                .selected_text(format!("{size}²"))
+                .show_ui(ui, |ui| {
+                    for (i, n) in EXPORT_SIZES.iter().enumerate() {
+                        ui.selectable_value(&mut s.export_size, i, format!("{n}²"));
+                    }
+                });
+            ui.checkbox(&mut s.export_16bit, "16-bit")
+                .on_hover_text("65,536 levels per sample: height maps");
+            match &self.editor.noise_export {
+                Some(e) => {
+                    ui.label(format!("exporting… {:.0} %", 100.0 * e.progress()));
+                }
+                None => {
+                    let export = ui.button("Export PNG").on_hover_text(
+                        "The whole spec at this size (a tileable noise repeats over it)",
+                    );
+                    self.control("noise-export-png", &export);
+                    if export.clicked() {
+                        self.start_noise_export();
+                    }
+                }
             }
         });
     }
@@ -306,6 +350,39 @@ fn fbm(ui: &mut egui::Ui, p: &mut FbmParams) {
     ui.add(Slider::new(&mut p.persistence, slider(ranges::PERSISTENCE)).text("persistence"));
 }
 
+/// Spatially varying orientation: the Gabor's orientation turned by a slow Perlin fBm,
+/// `amount` radians per standard deviation (0 turns the drive off; a data drive is set
+/// in the Data section and left alone here).
+fn swirl(ui: &mut egui::Ui, field: &mut Option<DriveSpec>, seed: u32) {
+    if matches!(
+        field,
+        Some(DriveSpec {
+            by: DriveSource::Data(_),
+            ..
+        })
+    ) {
+        return;
+    }
+    let mut amount = field.as_ref().map_or(0.0, |d| d.amount);
+    ui.add(Slider::new(&mut amount, 0.0..=3.0).text("swirl (rad/σ)"))
+        .on_hover_text("Turn the orientation along a slow Perlin noise (spatially varying Gabor)");
+    *field = (amount > 0.0).then(|| {
+        let by = match field.take() {
+            Some(DriveSpec { by, .. }) => by,
+            None => {
+                let mut p = Source::starting("perlin", seed.wrapping_add(1))
+                    .unwrap_or(Source::White { seed });
+                if let Source::Fbm(f) = &mut p {
+                    f.frequency = 0.008;
+                    f.octaves = 2;
+                }
+                DriveSource::Noise(Box::new(NoiseSpec::plain(p)))
+            }
+        };
+        DriveSpec { by, amount }
+    });
+}
+
 /// The sliders of the spec's noise: each edits one field of the typed spec, within the
 /// range the spec parser accepts (`marbling_noise::ranges`).
 pub(crate) fn noise_parameters(ui: &mut egui::Ui, spec: &mut NoiseSpec) {
@@ -316,6 +393,8 @@ pub(crate) fn noise_parameters(ui: &mut egui::Ui, spec: &mut NoiseSpec) {
             orientation,
             bandwidth,
             impulses,
+            seed,
+            orientation_field,
             ..
         } => {
             choice(ui, "kind", &ranges::GABOR_KINDS, kind);
@@ -324,6 +403,7 @@ pub(crate) fn noise_parameters(ui: &mut egui::Ui, spec: &mut NoiseSpec) {
                 ui.add(
                     Slider::new(orientation, 0.0..=std::f32::consts::PI).text("orientation (rad)"),
                 );
+                swirl(ui, orientation_field, *seed);
             }
             ui.add(
                 Slider::new(bandwidth, slider(ranges::BANDWIDTH))

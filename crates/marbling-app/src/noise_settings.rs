@@ -23,6 +23,10 @@ pub struct NoiseSettings {
     pub grain_strength: f64,
     /// Show a tiling spec as 2×2 copies of one tile (to check the seams).
     pub show_tiles: bool,
+    /// Index into `noise_export::EXPORT_SIZES` of Export PNG's size.
+    pub export_size: usize,
+    /// Export PNG writes 16-bit samples (height maps).
+    pub export_16bit: bool,
 }
 
 impl Default for NoiseSettings {
@@ -35,6 +39,8 @@ impl Default for NoiseSettings {
             zoom_independent: false,
             grain_strength: 0.3,
             show_tiles: true,
+            export_size: 1,
+            export_16bit: false,
         }
     }
 }

@@ -78,6 +78,8 @@ pub struct Editor {
     pub noise_data: crate::noise_data::NoiseData,
     /// The CPU picture of what the noise background cannot show.
     pub noise_preview: Option<crate::noise_preview::NoisePreview>,
+    /// A running Export PNG of the noise.
+    pub noise_export: Option<crate::noise_export::NoiseExport>,
 }
 
 impl Editor {
@@ -108,6 +110,7 @@ impl Editor {
             noise_layer: None,
             noise_data: crate::noise_data::NoiseData::default(),
             noise_preview: None,
+            noise_export: None,
         }
     }
 }

@@ -91,17 +91,8 @@ const ROWS_PER_THREAD: u32 = 16;
 /// into the PNG encoder, so a 16384² export never holds the whole image.
 fn encode(renderer: &Renderer, depth: Depth, out: impl std::io::Write + 'static) -> Result<()> {
     let size = renderer.size();
-    let mut enc = png::Encoder::new(out, size, size);
-    enc.set_color(if renderer.greyscale() {
-        png::ColorType::Grayscale
-    } else {
-        png::ColorType::Rgb
-    });
-    enc.set_depth(match depth {
-        Depth::Eight => png::BitDepth::Eight,
-        Depth::Sixteen => png::BitDepth::Sixteen,
-    });
-    let mut stream = enc
+    let mut stream = renderer
+        .png_encoder(out, depth)
         .write_header()
         .context("cannot encode PNG")?
         .into_stream_writer()

@@ -468,6 +468,22 @@ impl Renderer {
     pub fn greyscale(&self) -> bool {
         !self.spec.is_colored()
     }
+
+    /// A PNG encoder for this output at `depth`: size² pixels, grey or RGB as
+    /// [`Renderer::png_row`] writes them (feed it those rows).
+    pub fn png_encoder<W: std::io::Write>(&self, out: W, depth: Depth) -> png::Encoder<'static, W> {
+        let mut enc = png::Encoder::new(out, self.size, self.size);
+        enc.set_color(if self.greyscale() {
+            png::ColorType::Grayscale
+        } else {
+            png::ColorType::Rgb
+        });
+        enc.set_depth(match depth {
+            Depth::Eight => png::BitDepth::Eight,
+            Depth::Sixteen => png::BitDepth::Sixteen,
+        });
+        enc
+    }
 }
 
 /// Samples the unit-variance noise of `spec` (no transfer) over `size`×`size` pixel
