@@ -8,33 +8,26 @@ use marbling_noise::stack_gpu::NoiseStackGpu;
 use marbling_noise::wgsl::{self, NoiseGpu};
 use std::time::{Duration, Instant};
 
-const ENTRY: &str = r"
-@group(0) @binding(0) var<uniform> u: NoiseUniform;
+/// A compute entry point writing `eval` (an expression of `p`, the pixel centre, and
+/// `u`, a uniform of type `uniform`) for every pixel of a dims.x² grid.
+fn entry(uniform: &str, eval: &str) -> String {
+    format!(
+        r"
+@group(0) @binding(0) var<uniform> u: {uniform};
 @group(0) @binding(1) var<storage, read_write> out: array<f32>;
 @group(0) @binding(2) var<uniform> dims: vec4<u32>;
 
 @compute @workgroup_size(8, 8)
-fn main(@builtin(global_invocation_id) id: vec3<u32>) {
-    if id.x >= dims.x || id.y >= dims.x {
+fn main(@builtin(global_invocation_id) id: vec3<u32>) {{
+    if id.x >= dims.x || id.y >= dims.x {{
         return;
-    }
-    out[id.y * dims.x + id.x] = sample_noise(vec2<f32>(f32(id.x) + 0.5, f32(id.y) + 0.5), u);
+    }}
+    let p = vec2<f32>(f32(id.x) + 0.5, f32(id.y) + 0.5);
+    out[id.y * dims.x + id.x] = {eval};
+}}
+"
+    )
 }
-";
-
-const STACK_ENTRY: &str = r"
-@group(0) @binding(0) var<uniform> u: NoiseStack;
-@group(0) @binding(1) var<storage, read_write> out: array<f32>;
-@group(0) @binding(2) var<uniform> dims: vec4<u32>;
-
-@compute @workgroup_size(8, 8)
-fn main(@builtin(global_invocation_id) id: vec3<u32>) {
-    if id.x >= dims.x || id.y >= dims.x {
-        return;
-    }
-    out[id.y * dims.x + id.x] = stack_intensity(vec2<f32>(f32(id.x) + 0.5, f32(id.y) + 0.5), u);
-}
-";
 
 fn pipeline(
     device: &wgpu::Device,
@@ -83,8 +76,16 @@ impl GpuNoise {
         let (device, queue) =
             pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor::default()))
                 .map_err(|e| format!("no device: {e}"))?;
-        let pipeline = pipeline(&device, "noise", ENTRY)?;
-        let stack = self::pipeline(&device, "layers", STACK_ENTRY)?;
+        let pipeline = pipeline(
+            &device,
+            "noise",
+            &entry("NoiseUniform", "sample_noise(p, u)"),
+        )?;
+        let stack = self::pipeline(
+            &device,
+            "layers",
+            &entry("NoiseStack", "stack_intensity(p, u)"),
+        )?;
         Ok(Self {
             device,
             queue,
