@@ -127,12 +127,10 @@ impl MarblingApp {
 mod tests {
     use super::*;
 
-    #[test]
-    fn an_export_writes_every_row_and_tiles_over_its_size() {
-        let spec =
-            NoiseSpec::from_json(r#"{"type":"perlin","frequency":0.05,"tile":24}"#).expect("valid");
+    /// The 16-bit greyscale samples of an exported `spec` at 64², one row per call.
+    fn export(spec: &str) -> Vec<f64> {
+        let spec = NoiseSpec::from_json(spec).expect("valid");
         let mut e = NoiseExport::start(&spec, 64, Depth::Sixteen).expect("starts");
-        assert_eq!(e.name, "noise-perlin-64-16bit.png");
         // A clock that jumps past the budget at every reading: one row per call.
         let clock = std::cell::Cell::new(0.0);
         let now = || {
@@ -149,18 +147,43 @@ mod tests {
         let mut buf = vec![0; reader.output_buffer_size().expect("size")];
         let info = reader.next_frame(&mut buf).expect("frame");
         assert_eq!((info.width, info.bit_depth), (64, png::BitDepth::Sixteen));
-        // Seamless over the exported 64 px: the last column continues into the first.
-        let at = |i: usize, j: usize| {
-            f64::from(u16::from_be_bytes([
-                buf[2 * (j * 64 + i)],
-                buf[2 * (j * 64 + i) + 1],
-            ]))
+        buf.chunks_exact(2)
+            .map(|b| f64::from(u16::from_be_bytes([b[0], b[1]])))
+            .collect()
+    }
+
+    /// (the step from the last column to the first, the mean step between neighbours).
+    fn seam(v: &[f64]) -> (f64, f64) {
+        let step = |a: usize, b: usize| {
+            (0..64)
+                .map(|j| (v[j * 64 + a] - v[j * 64 + b]).abs())
+                .sum::<f64>()
         };
-        let seam: f64 = (0..64).map(|j| (at(63, j) - at(0, j)).abs()).sum();
-        let inner: f64 = (0..64).map(|j| (at(31, j) - at(32, j)).abs()).sum();
+        (
+            step(63, 0),
+            (0..63).map(|i| step(i, i + 1)).sum::<f64>() / 63.0,
+        )
+    }
+
+    #[test]
+    fn an_export_writes_every_row_and_tiles_over_its_size() {
+        let tiled = export(r#"{"type":"perlin","frequency":0.05,"tile":24}"#);
+        let (edge, inner) = seam(&tiled);
+        assert!(edge <= 1.5 * inner, "seam {edge} vs interior {inner}");
+        // The measure sees an untiled noise's seam.
+        let untiled = export(r#"{"type":"perlin","frequency":0.05}"#);
+        let (edge, inner) = seam(&untiled);
         assert!(
-            seam <= 1.5 * inner + 64.0,
-            "seam {seam} vs interior {inner}"
+            edge > 3.0 * inner,
+            "untiled seam {edge} vs interior {inner}"
         );
+    }
+
+    #[test]
+    fn the_file_is_named_after_the_noise_size_and_depth() {
+        let spec = NoiseSpec::from_json(r#"{"type":"worley","frequency":0.05}"#).expect("valid");
+        let e = NoiseExport::start(&spec, 512, Depth::Eight).expect("starts");
+        assert_eq!(e.name, "noise-worley-512-8bit.png");
+        assert!(NoiseExport::start(&spec, 0, Depth::Eight).is_err());
     }
 }

@@ -350,10 +350,17 @@ fn fbm(ui: &mut egui::Ui, p: &mut FbmParams) {
     ui.add(Slider::new(&mut p.persistence, slider(ranges::PERSISTENCE)).text("persistence"));
 }
 
-/// Spatially varying orientation: the Gabor's orientation turned by a slow Perlin fBm,
-/// `amount` radians per standard deviation (0 turns the drive off; a data drive is set
-/// in the Data section and left alone here).
-fn swirl(ui: &mut egui::Ui, field: &mut Option<DriveSpec>, seed: u32) {
+/// A Gabor parameter varying over space (seed 004's spatially varying Gabor): driven by
+/// a slow Perlin fBm, `amount` units per standard deviation up to `max` (0 turns the
+/// drive off; a data drive is set in the Data section and left alone here).
+fn noise_drive(
+    ui: &mut egui::Ui,
+    field: &mut Option<DriveSpec>,
+    seed: u32,
+    label: &str,
+    max: f32,
+    hover: &str,
+) {
     if matches!(
         field,
         Some(DriveSpec {
@@ -364,14 +371,13 @@ fn swirl(ui: &mut egui::Ui, field: &mut Option<DriveSpec>, seed: u32) {
         return;
     }
     let mut amount = field.as_ref().map_or(0.0, |d| d.amount);
-    ui.add(Slider::new(&mut amount, 0.0..=3.0).text("swirl (rad/σ)"))
-        .on_hover_text("Turn the orientation along a slow Perlin noise (spatially varying Gabor)");
+    ui.add(Slider::new(&mut amount, 0.0..=max).text(label))
+        .on_hover_text(hover);
     *field = (amount > 0.0).then(|| {
         let by = match field.take() {
             Some(DriveSpec { by, .. }) => by,
             None => {
-                let mut p = Source::starting("perlin", seed.wrapping_add(1))
-                    .unwrap_or(Source::White { seed });
+                let mut p = Source::starting("perlin", seed).unwrap_or(Source::White { seed });
                 if let Source::Fbm(f) = &mut p {
                     f.frequency = 0.008;
                     f.octaves = 2;
@@ -395,7 +401,7 @@ pub(crate) fn noise_parameters(ui: &mut egui::Ui, spec: &mut NoiseSpec) {
             impulses,
             seed,
             orientation_field,
-            ..
+            frequency_field,
         } => {
             choice(ui, "kind", &ranges::GABOR_KINDS, kind);
             frequency(ui, f, ranges::GABOR_FREQUENCY);
@@ -403,8 +409,23 @@ pub(crate) fn noise_parameters(ui: &mut egui::Ui, spec: &mut NoiseSpec) {
                 ui.add(
                     Slider::new(orientation, 0.0..=std::f32::consts::PI).text("orientation (rad)"),
                 );
-                swirl(ui, orientation_field, *seed);
+                noise_drive(
+                    ui,
+                    orientation_field,
+                    seed.wrapping_add(1),
+                    "swirl (rad/σ)",
+                    3.0,
+                    "Turn the orientation along a slow Perlin noise",
+                );
             }
+            noise_drive(
+                ui,
+                frequency_field,
+                seed.wrapping_add(2),
+                "frequency drift (octaves/σ)",
+                1.5,
+                "Vary the frequency along a slow Perlin noise",
+            );
             ui.add(
                 Slider::new(bandwidth, slider(ranges::BANDWIDTH))
                     .text("bandwidth a (1/px)")
