@@ -137,11 +137,24 @@ export async function controls(page) {
   return out;
 }
 
-/** Clicks the control named `name` (a real click through egui). */
+/**
+ * Clicks the control named `name` (a real click through egui), first scrolling the
+ * panel under it with the wheel when it lies below or above the viewport.
+ */
 export async function clickControl(page, name) {
-  const all = await controls(page);
-  const c = all[name];
-  assert.ok(c, `no control ${name} in data-controls (have: ${Object.keys(all).join(', ')})`);
+  const { height } = page.viewportSize();
+  let c;
+  for (let tries = 0; ; tries++) {
+    const all = await controls(page);
+    c = all[name];
+    assert.ok(c, `no control ${name} in data-controls (have: ${Object.keys(all).join(', ')})`);
+    const y = c.y + c.h / 2;
+    if ((y >= 0 && y <= height) || tries === 8) break;
+    const frames = Number(await attr(page, 'data-frames'));
+    await page.mouse.move(c.x + c.w / 2, Math.min(Math.max(y, 8), height - 8));
+    await page.mouse.wheel(0, y - height / 2);
+    await page.waitForFunction((n) => Number(document.body.dataset.frames) >= n, frames + 2, { timeout: READY_MS });
+  }
   await page.mouse.click(c.x + c.w / 2, c.y + c.h / 2);
 }
 
