@@ -227,6 +227,12 @@ pub fn tile_section(ui: &mut egui::Ui, s: &mut NoiseSettings) -> Controls {
     let shown = ui
         .checkbox(&mut s.show_tiles, "show 2×2 tiles")
         .on_hover_text("The canvas shows four copies of one tile: look for seams");
+    if !s.spec.clone().data_refs_mut().is_empty() {
+        ui.label(
+            egui::RichText::new("Data does not repeat: the tile shows seams where it differs")
+                .weak(),
+        );
+    }
     vec![("noise-tile", r), ("noise-show-tiles", shown)]
 }
 
