@@ -225,10 +225,15 @@ impl DataGrid {
         Self::new(w, h, channels, values)
     }
 
-    /// A built-in data set by name.
+    /// A built-in data set by name (computed once, then shared).
     #[must_use]
     pub fn builtin(name: &str) -> Option<Arc<Self>> {
-        (name == WEATHER).then(|| Arc::new(Self::weather()))
+        static WEATHER_GRID: std::sync::OnceLock<Arc<DataGrid>> = std::sync::OnceLock::new();
+        (name == WEATHER).then(|| {
+            WEATHER_GRID
+                .get_or_init(|| Arc::new(Self::weather()))
+                .clone()
+        })
     }
 
     /// Channel `c` (0-based) at texel (i, j).
