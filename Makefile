@@ -120,8 +120,8 @@ bench-noise: setup-gpu
 bench-noise-export: setup-gpu
 	WGPU_BACKEND=vulkan $(CARGO) bench -p marbling-noise --bench export
 
-## Vector export: time, vertices and SVG size (see docs/BENCHMARKS.md).
+## Vector export at T = 1 on 1024² designs and the example designs: time, vertices, SVG
+## size and agreement with the exact 4×4 render (see docs/BENCHMARKS.md).
 bench-svg: $(MARBLING)
-	$(MARBLING) bench-svg --ops 50,200,1000 --tolerance 1,0.25
-	$(MARBLING) bench-svg --ops 50,200,1000 --tolerance 1,0.25 --mix drop-heavy
-	$(MARBLING) bench-svg --ops 50,100,200,300 --tolerance 1 --raw --lossless
+	$(MARBLING) bench-svg --size 1024 --aspect 1 --ops 100,300,1000 --tolerance 1 --mix mixed,drop-heavy,comb-heavy,all-types --check
+	$(MARBLING) bench-svg examples/patterns/*.json examples/designs/*.json --scale 1.6 --tolerance 1 --check

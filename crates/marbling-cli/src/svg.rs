@@ -1,4 +1,6 @@
-//! `marbling svg`: the design as an SVG of forward-traced ink outlines.
+//! `marbling svg`: the design as an SVG of ink outlines (forward-traced, or read off the
+//! exact label raster past the vertex budget) with raster layers where outlines cannot
+//! hold the picture.
 
 use crate::input::read_design;
 use crate::render::LazyProgress;
@@ -17,9 +19,8 @@ pub struct SvgArgs {
     /// Output SVG; `-` writes to standard output. Written only once complete.
     #[arg(short, long)]
     output: String,
-    /// Tolerance T in output pixels: outlines stay within about T/4 of the true ones
-    /// outside the lossy step, which drops pieces thinner than T/16 on average (see
-    /// marbling_vector's docs).
+    /// Tolerance T in output pixels: forward-traced outlines stay within about T/12 of
+    /// the true ones, contour outlines within T/2 (see marbling_vector's docs).
     #[arg(long, default_value_t = 1.0, allow_negative_numbers = true)]
     tolerance: f64,
     /// Output pixels per design pixel: the SVG's width/height attributes and the unit of
@@ -32,8 +33,8 @@ pub struct SvgArgs {
     /// Keep every refined vertex (no simplification, no off-canvas collapse).
     #[arg(long)]
     no_simplify: bool,
-    /// Exact tracing: no lossy step (thin pieces kept), no re-anchoring, no vertex
-    /// budget. Vertex counts then grow geometrically with the op count.
+    /// Exact forward tracing of every region: no re-anchoring, no vertex budget (so no
+    /// contour method). Vertex counts then grow geometrically with the op count.
     #[arg(long)]
     exact: bool,
     /// Refuse designs needing more refined vertices than this.
@@ -81,8 +82,12 @@ pub fn run(args: &SvgArgs) -> Result<()> {
         scale: scale_of(args.scale, args.width, design.width)?,
         simplify: !args.no_simplify,
         max_vertices: args.max_vertices,
-        thin: if args.exact { 0.0 } else { defaults.thin },
         anchor: if args.exact { 0 } else { defaults.anchor },
+        contour_all: if args.exact {
+            0.0
+        } else {
+            defaults.contour_all
+        },
         max_live: if args.exact {
             usize::MAX
         } else {
@@ -108,17 +113,17 @@ pub fn run(args: &SvgArgs) -> Result<()> {
     }
     let s = vector.stats;
     let summary = format!(
-        "{}: {} ops, {} regions ({} culled) in {} rings, {} vertices ({} refined, peak {}), dropped {:.1} design px² of thin ink, coarsening level {}, {} bytes, T {} px at scale {}, traced in {:.3} s",
+        "{}: {} ops, {} regions ({} culled, {} by contour) in {} rings, {} vertices ({} refined, peak {}), {} pixels in the raster patch, {} bytes, T {} px at scale {}, traced in {:.3} s",
         args.output,
         design.ops.len(),
         s.regions - s.culled,
         s.culled,
+        s.contour_regions,
         s.rings,
         s.vertices,
         s.refined_vertices,
         s.peak_vertices,
-        s.dropped_area,
-        s.level,
+        s.dense_pixels,
         svg.len(),
         opts.tolerance,
         opts.scale,

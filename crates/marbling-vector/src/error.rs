@@ -11,18 +11,12 @@ pub enum VectorError {
     BadScale(f64),
     /// A tracing option relative to the tolerance is out of range.
     #[error(
-        "{0} = {1} is out of range (deviation and epsilon: (0, 1] × T; thin: [0, 1] × T; chord: ≥ 1 × T)"
+        "{0} = {1} is out of range (deviation, epsilon, contour_step: (0, 1] × T; thin: [0, 1] × T; chord: ≥ 1 × T; contour_reach: [0, 8] px)"
     )]
     BadFraction(&'static str, f64),
     /// The design has something that is not a union of traced ink outlines.
     #[error("design cannot be traced exactly as vectors: {0}")]
     Untraceable(String),
-    /// The design uses schema v2 raster-only features (a noise background, grain
-    /// overlays); `0` names them.
-    #[error(
-        "design has {0}, which only raster renders draw; use `marbling render --backend cpu` or `--backend gpu`"
-    )]
-    RasterOnly(String),
     /// Refinement needed more vertices than allowed.
     #[error(
         "design needs more than {limit} outline vertices at this tolerance; raise the tolerance or the vertex limit"

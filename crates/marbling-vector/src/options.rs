@@ -35,11 +35,24 @@ pub struct TraceOptions {
     /// after every op that grew a region by a quarter, parts of a ring closer than w
     /// are cut apart and pieces of mean width (2·area/perimeter) below w are dropped.
     pub thin: f64,
-    /// Vertex budget at T ≥ 1, divided by T below (default 60 000: 240 000 at
-    /// T = 0.25): whenever more vertices than that are held after an op, `deviation`,
-    /// `thin` and `epsilon` double for the rest of the design (at most four times; [`crate::TraceStats::level`] says how often), and every region
-    /// is thinned again at once.
+    /// Vertex budget of forward tracing at T ≥ 1, divided by T below (default 60 000:
+    /// 240 000 at T = 0.25): whenever more vertices than that are held after an op, the
+    /// regions holding the most are handed to the contour method until at most half the
+    /// budget is held. Within the last 16 ops the budget is multiplied by 16 / (ops
+    /// left), since finishing costs the vertices held times the ops left.
     pub max_live: usize,
+    /// Sample spacing of the contour method's label raster, as a fraction of T
+    /// (default ¼: at T = 1 the 4×4 grid of the reference's `grid4` antialiasing).
+    /// Contour rings are simplified within one spacing where they show.
+    pub contour_step: f64,
+    /// Largest estimated cost of the contour method's label raster (op-samples: grid
+    /// points times the ops a walk passes) at which every region is contoured rather
+    /// than traced forward (default 4·10⁹, a few seconds on two cores; 0: never). The
+    /// contour method is the more faithful where inks abut (see the crate docs).
+    pub contour_all: f64,
+    /// How far a contour region grows under newer ink, output pixels (default 1.5: more
+    /// than an antialiased edge plus the simplification of the ink painted over it).
+    pub contour_reach: f64,
     /// Most refined vertices in the whole design before it is refused (default 50 M).
     pub max_vertices: usize,
 }
@@ -54,10 +67,13 @@ impl Default for TraceOptions {
             deviation: 0.04,
             chord: 4.0,
             epsilon: 0.04,
-            thin: 0.0625,
+            thin: 0.0,
             anchor: 32,
             max_vertices: 50_000_000,
             max_live: 60_000,
+            contour_step: 0.25,
+            contour_all: 4e9,
+            contour_reach: 1.5,
         }
     }
 }
@@ -81,6 +97,15 @@ impl TraceOptions {
         }
         if !(self.thin.is_finite() && (0.0..=1.0).contains(&self.thin)) {
             return Err(VectorError::BadFraction("thin", self.thin));
+        }
+        if !(self.contour_step.is_finite() && self.contour_step > 0.0 && self.contour_step <= 1.0) {
+            return Err(VectorError::BadFraction("contour_step", self.contour_step));
+        }
+        if !(self.contour_reach.is_finite() && (0.0..=8.0).contains(&self.contour_reach)) {
+            return Err(VectorError::BadFraction(
+                "contour_reach",
+                self.contour_reach,
+            ));
         }
         Ok(())
     }

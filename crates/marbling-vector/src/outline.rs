@@ -1,16 +1,41 @@
 //! Traced ink regions and the vector form of a whole design.
 
+use crate::surface_layers::RasterLayer;
 use kurbo::{BezPath, Point};
 use marbling_core::Rgb8;
+
+/// How an outline was found.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Method {
+    /// Traced forward through every later op (resolution independent).
+    Forward,
+    /// Read off the exact label raster by marching squares (see [`crate::contour`]).
+    Contour,
+}
+
+impl Method {
+    /// The value of the SVG path's `data-method` attribute.
+    pub fn name(self) -> &'static str {
+        match self {
+            Method::Forward => "forward",
+            Method::Contour => "contour",
+        }
+    }
+}
 
 /// One ink region: a drop or spray after all later ops, as closed rings filled together
 /// with the nonzero rule (one ring until the lossy step pinches it apart).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Outline {
-    /// Index of the drop or spray in `Design::ops`.
+    /// Index of the drop or spray among the compiled ops (the same as in `Design::ops`
+    /// for designs without drop patterns).
     pub op_index: usize,
     /// Ink colour.
     pub color: Rgb8,
+    /// How the rings were found. Forward rings enclose the whole region as traced
+    /// (newer ink is painted over what lies inside); contour rings enclose what shows,
+    /// grown under newer ink, with holes where older ink shows through.
+    pub method: Method,
     /// Closed polygons (the last vertex of each joins its first), design pixels. The
     /// first ring runs in order of increasing angle on the original circle (clockwise
     /// on screen, y down); pieces of a pinched ring keep its direction, so a ring around
@@ -55,9 +80,15 @@ pub struct TraceStats {
     pub refined_vertices: usize,
     /// Most vertices held after any op (all regions together).
     pub peak_vertices: usize,
-    /// Times the deviation, thin width and simplification distance were doubled
-    /// because more than `TraceOptions::max_live` vertices were held (0: none).
-    pub level: u32,
+    /// Regions handed to the contour method because more than
+    /// `TraceOptions::max_live` vertices were held (0: every region traced forward).
+    pub contour_regions: usize,
+    /// Samples of the label raster walked back through the ops (0 without contours).
+    pub contour_samples: usize,
+    /// Spacing of the label raster, output pixels (0 without contours).
+    pub contour_step: f64,
+    /// Output pixels exported in the dense patch (see [`crate::dense`]).
+    pub dense_pixels: usize,
     /// Rings exported.
     pub rings: usize,
     /// Cuts the lossy step made (exact: they change no winding number).
@@ -82,7 +113,10 @@ impl std::ops::AddAssign for TraceStats {
         self.initial_vertices += o.initial_vertices;
         self.refined_vertices += o.refined_vertices;
         self.peak_vertices = self.peak_vertices.max(o.peak_vertices);
-        self.level = self.level.max(o.level);
+        self.contour_regions += o.contour_regions;
+        self.contour_samples += o.contour_samples;
+        self.contour_step = self.contour_step.max(o.contour_step);
+        self.dense_pixels += o.dense_pixels;
         self.rings += o.rings;
         self.cuts += o.cuts;
         self.dropped_pieces += o.dropped_pieces;
@@ -105,6 +139,16 @@ pub struct VectorDesign {
     pub background: Rgb8,
     /// Ink regions, oldest first.
     pub outlines: Vec<Outline>,
+    /// A schema v2 noise background: the exact render of the design without its grain
+    /// overlays, at the output size, drawn in place of the background rectangle (the
+    /// outlines then paint the ink over it sharply).
+    pub underlay: Option<RasterLayer>,
+    /// Output pixels where three or more inks meet, as an RGBA patch over the outlines
+    /// (see [`crate::dense`]); only designs that needed the contour method have one.
+    pub dense: Option<RasterLayer>,
+    /// Schema v2 grain overlays: the product of their factors on linear colour at each
+    /// output pixel, sRGB-encoded grey, multiplied over everything else.
+    pub grain: Option<RasterLayer>,
     /// Tolerance T the outlines were traced at, output pixels.
     pub tolerance: f64,
     /// Output pixels per design pixel the tolerance refers to.

@@ -1,7 +1,7 @@
 //! Raster preview of traced outlines with tiny-skia (antialiased, any scale).
 
 use crate::{TraceOptions, VectorDesign, VectorError, trace};
-use marbling_core::color::linear_to_srgb;
+use marbling_core::color::{linear_to_srgb, srgb_to_linear};
 use marbling_core::sampling::Sample;
 use marbling_core::{Antialias, Design, Rgb8, RgbaImage, output_size};
 use rayon::prelude::*;
@@ -45,17 +45,64 @@ pub fn rasterize(
         .outlines
         .iter()
         .filter_map(|o| Some((path(&o.rings)?, o.color)));
-    match blend {
-        Blend::Srgb => srgb(w, h, vector.background, paths, transform),
-        Blend::Linear(aa) => Ok(sampled(
+    let underlay = vector.underlay.as_ref().map(|l| resized(&l.image, w, h));
+    let mut image = match blend {
+        Blend::Srgb => srgb(w, h, vector.background, underlay, paths, transform)?,
+        Blend::Linear(aa) => sampled(
             w,
             h,
             vector.background,
+            underlay.as_ref(),
             paths.collect(),
             scale,
             aa.refinement().unwrap_or(aa.samples()),
-        )),
+        ),
+    };
+    if let Some(dense) = &vector.dense {
+        let dense = resized(&dense.image, w, h);
+        for (px, d) in image
+            .pixels
+            .chunks_exact_mut(4)
+            .zip(dense.pixels.chunks_exact(4))
+        {
+            if d[3] != 0 {
+                px.copy_from_slice(d);
+            }
+        }
     }
+    if let Some(grain) = &vector.grain {
+        let grain = resized(&grain.image, w, h);
+        for (px, g) in image
+            .pixels
+            .chunks_exact_mut(4)
+            .zip(grain.pixels.chunks_exact(4))
+        {
+            for v in px.iter_mut().take(3) {
+                *v = match blend {
+                    // What SVG renderers do: multiply the encoded values.
+                    Blend::Srgb => ((u16::from(*v) * u16::from(g[0]) + 127) / 255) as u8,
+                    Blend::Linear(_) => linear_to_srgb(srgb_to_linear(*v) * srgb_to_linear(g[0])),
+                };
+            }
+        }
+    }
+    Ok(image)
+}
+
+/// `image` at `w × h` pixels (itself when it already is; else nearest pixels).
+fn resized(image: &RgbaImage, w: u32, h: u32) -> RgbaImage {
+    if image.width == w && image.height == h {
+        return image.clone();
+    }
+    let mut out = RgbaImage::filled(w, h, [0, 0, 0, 255]);
+    for y in 0..h {
+        let sy = (u64::from(y) * u64::from(image.height) / u64::from(h)) as u32;
+        for x in 0..w {
+            let sx = (u64::from(x) * u64::from(image.width) / u64::from(w)) as u32;
+            out.set_pixel(x, y, image.pixel(sx, sy));
+        }
+    }
+    out
 }
 
 /// Traces `design` at `opts` and rasterises it at `opts.scale` in linear light: the
@@ -87,16 +134,20 @@ fn srgb(
     w: u32,
     h: u32,
     background: Rgb8,
+    underlay: Option<RgbaImage>,
     paths: impl Iterator<Item = (Path, Rgb8)>,
     transform: Transform,
 ) -> Result<RgbaImage, VectorError> {
     let mut pixmap = Pixmap::new(w, h).ok_or(VectorError::BadScale(f64::from(w)))?;
-    pixmap.fill(Color::from_rgba8(
-        background.r,
-        background.g,
-        background.b,
-        255,
-    ));
+    match underlay {
+        Some(image) => pixmap.data_mut().copy_from_slice(&image.pixels),
+        None => pixmap.fill(Color::from_rgba8(
+            background.r,
+            background.g,
+            background.b,
+            255,
+        )),
+    }
     let mut paint = Paint {
         anti_alias: true,
         ..Paint::default()
@@ -118,11 +169,13 @@ const BAND_ROWS: u32 = 16;
 /// Point-sampled rendering: for each band of output rows and each sample offset, every
 /// region's non-antialiased tiny-skia mask (which fills the pixels whose centres are
 /// inside) writes its palette index into that sample's buffer; each output pixel then
-/// averages its samples in linear light.
+/// averages its samples in linear light. Samples of the background take the
+/// underlay's pixel where there is one.
 fn sampled(
     w: u32,
     h: u32,
     background: Rgb8,
+    underlay: Option<&RgbaImage>,
     regions: Vec<(Path, Rgb8)>,
     scale: f64,
     samples: &[Sample],
@@ -187,17 +240,29 @@ fn sampled(
             for (p, idx) in index.chunks_exact(n).enumerate() {
                 let o = p * 4;
                 let first = idx[0];
-                if idx
-                    .iter()
-                    .all(|&i| srgb[i as usize] == srgb[first as usize])
-                {
+                let under = underlay.map(|u| {
+                    let q = (by0 as usize * w as usize) * 4 + o;
+                    let c = &u.pixels[q..q + 3];
+                    [c[0], c[1], c[2]]
+                });
+                if idx.iter().all(|&i| {
+                    i == first || (under.is_none() && srgb[i as usize] == srgb[first as usize])
+                }) {
                     let c = srgb[first as usize];
-                    out[o..o + 3].copy_from_slice(&[c.r, c.g, c.b]);
+                    let c = match under {
+                        Some(u) if first == 0 => u,
+                        _ => [c.r, c.g, c.b],
+                    };
+                    out[o..o + 3].copy_from_slice(&c);
                     continue;
                 }
+                let under_linear = under.map(|u| u.map(srgb_to_linear));
                 let mut acc = [0.0f32; 3];
                 for (&i, sample) in idx.iter().zip(samples) {
-                    let c = palette[i as usize];
+                    let c = match under_linear {
+                        Some(u) if i == 0 => u,
+                        _ => palette[i as usize],
+                    };
                     for ch in 0..3 {
                         acc[ch] += sample.weight * c[ch];
                     }

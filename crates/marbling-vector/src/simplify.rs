@@ -61,6 +61,14 @@ pub fn collapse_off_canvas(points: &[Point], canvas: &Canvas) -> Vec<Point> {
 /// filaments (narrower than `epsilon`) keep both their sides instead of collapsing into
 /// crossing zig-zags whose reversed loops the nonzero rule would fill.
 pub fn rdp_closed(points: &[Point], epsilon: f64) -> Vec<Point> {
+    rdp_closed_with(points, |_| epsilon, epsilon)
+}
+
+/// [`rdp_closed`] where vertex k may move by `slack(k)` (at most `most`): a chain is
+/// replaced by its chord when every vertex k of it lies within `slack(k)` of the chord;
+/// otherwise it is split at the vertex furthest beyond its slack.
+pub fn rdp_closed_with(points: &[Point], slack: impl Fn(usize) -> f64, most: f64) -> Vec<Point> {
+    let epsilon = most;
     let n = points.len();
     if n <= 3 {
         return points.to_vec();
@@ -87,12 +95,12 @@ pub fn rdp_closed(points: &[Point], epsilon: f64) -> Vec<Point> {
         let (pa, pb) = (points[a], points[b % n]);
         let mut worst = (0.0, a);
         for (k, &p) in points.iter().enumerate().take(b).skip(a + 1) {
-            let d = distance_to_segment(p, pa, pb);
-            if d > worst.0 {
-                worst = (d, k);
+            let beyond = distance_to_segment(p, pa, pb) / slack(k);
+            if beyond > worst.0 {
+                worst = (beyond, k);
             }
         }
-        let split = if worst.0 > epsilon {
+        let split = if worst.0 > 1.0 {
             Some(worst.1)
         } else if !guard.chord_is_clear(a, b) {
             Some(if worst.1 > a { worst.1 } else { (a + b) / 2 })
@@ -116,12 +124,24 @@ pub fn rdp_closed(points: &[Point], epsilon: f64) -> Vec<Point> {
 /// the outline is invisible on the canvas (or thinner than `epsilon` everywhere).
 pub fn simplify_outline(points: &[Point], canvas: &Canvas, epsilon: f64) -> Vec<Point> {
     let collapsed = collapse_off_canvas(points, canvas);
-    let simplified = rdp_closed(&collapsed, epsilon);
-    if simplified.len() < 3 {
-        Vec::new()
-    } else {
-        simplified
-    }
+    at_least_a_triangle(rdp_closed(&collapsed, epsilon))
+}
+
+/// RDP of a closed ring whose vertices may move by `epsilon`, or by `hidden_epsilon`
+/// (≥ `epsilon`) where `hidden` says newer paint covers them; empty when less than a
+/// triangle is left.
+pub fn simplify_ring(
+    points: &[Point],
+    hidden: &[bool],
+    epsilon: f64,
+    hidden_epsilon: f64,
+) -> Vec<Point> {
+    let slack = |k: usize| if hidden[k] { hidden_epsilon } else { epsilon };
+    at_least_a_triangle(rdp_closed_with(points, slack, hidden_epsilon.max(epsilon)))
+}
+
+fn at_least_a_triangle(ring: Vec<Point>) -> Vec<Point> {
+    if ring.len() < 3 { Vec::new() } else { ring }
 }
 
 #[cfg(test)]

@@ -1,7 +1,9 @@
-//! SVG text of a traced design: a background `<rect>` and one filled `<path>` per ink
-//! region in painter's order, coordinates in design pixels (the viewBox).
+//! SVG text of a traced design: a background `<rect>` (and a raster `<image>` of a
+//! noise background), one filled `<path>` per ink region in painter's order with a
+//! `data-method` attribute saying how it was found (`forward` or `contour`), then a
+//! multiplied raster `<image>` of grain; coordinates in design pixels (the viewBox).
 
-use crate::{TraceOptions, VectorDesign, VectorError, trace};
+use crate::{Method, TraceOptions, VectorDesign, VectorError, trace};
 use marbling_core::{Design, Rgb8};
 use std::fmt::Write;
 
@@ -19,15 +21,16 @@ pub fn decimals(tolerance: f64, scale: f64) -> u32 {
 
 /// The SVG document of `vector`: `viewBox="0 0 W H"` in design pixels, `width`/`height`
 /// attributes of W·scale × H·scale output pixels (rounded, at least 1), a background
-/// rectangle, then one `<path>` per outline (nonzero fill rule). Path data use relative
-/// line-tos on coordinates rounded to [`decimals`] places; rounding is done on absolute
-/// positions, so it never accumulates.
+/// rectangle and any underlay image, then one `<path>` per outline (nonzero fill rule),
+/// then any grain image (`mix-blend-mode: multiply`). Path data use relative
+/// line-tos on coordinates rounded to [`decimals`] places ([`contour_decimals`] for
+/// contour outlines); each ring after the first starts with a relative move from the
+/// previous ring's start. Rounding is done on absolute positions, so it never
+/// accumulates.
 pub fn to_svg(vector: &VectorDesign) -> String {
     let (w, h) = (vector.width, vector.height);
     let out_w = (f64::from(w) * vector.scale).round().max(1.0);
     let out_h = (f64::from(h) * vector.scale).round().max(1.0);
-    let places = decimals(vector.tolerance, vector.scale);
-    let unit = 10f64.powi(places as i32);
     let mut s = String::with_capacity(64 + vector.stats.vertices * 12);
     let _ = write!(
         s,
@@ -37,22 +40,45 @@ pub fn to_svg(vector: &VectorDesign) -> String {
          <rect width=\"{w}\" height=\"{h}\" fill=\"{}\"/>\n",
         hex(vector.background)
     );
+    if let Some(layer) = &vector.underlay {
+        image(&mut s, w, h, &layer.data_uri, "");
+    }
     for outline in &vector.outlines {
-        let _ = write!(s, "<path fill=\"{}\" d=\"", hex(outline.color));
+        let _ = write!(
+            s,
+            "<path data-method=\"{}\" fill=\"{}\" d=\"",
+            outline.method.name(),
+            hex(outline.color)
+        );
+        let places = match outline.method {
+            Method::Forward => decimals(vector.tolerance, vector.scale),
+            Method::Contour => contour_decimals(vector.tolerance, vector.scale),
+        };
+        let unit = 10f64.powi(places as i32);
         let mut numbers = Numbers::new(&mut s, places);
+        // The start of the previous ring: later rings move relative to it ('m', whose
+        // further pairs are relative line-tos).
+        let mut origin: Option<(i64, i64)> = None;
         for ring in &outline.rings {
             let mut prev: Option<(i64, i64)> = None;
             for p in ring {
                 let q = ((p.x * unit).round() as i64, (p.y * unit).round() as i64);
-                match prev {
-                    None => {
+                match (prev, origin) {
+                    (None, None) => {
                         numbers.command('M');
                         numbers.push(q.0);
                         numbers.push(q.1);
                         numbers.command('l');
+                        origin = Some(q);
                     }
-                    Some(r) if r == q => continue,
-                    Some(r) => {
+                    (None, Some(o)) => {
+                        numbers.command('m');
+                        numbers.push(q.0 - o.0);
+                        numbers.push(q.1 - o.1);
+                        origin = Some(q);
+                    }
+                    (Some(r), _) if r == q => continue,
+                    (Some(r), _) => {
                         numbers.push(q.0 - r.0);
                         numbers.push(q.1 - r.1);
                     }
@@ -63,14 +89,42 @@ pub fn to_svg(vector: &VectorDesign) -> String {
         }
         s.push_str("\"/>\n");
     }
+    if let Some(layer) = &vector.dense {
+        image(&mut s, w, h, &layer.data_uri, " data-method=\"raster\"");
+    }
+    if let Some(layer) = &vector.grain {
+        image(
+            &mut s,
+            w,
+            h,
+            &layer.data_uri,
+            " style=\"mix-blend-mode:multiply\"",
+        );
+    }
     s.push_str("</svg>\n");
     s
+}
+
+/// An `<image>` covering the canvas, stretched to it, without smoothing between its
+/// pixels (one pixel per output pixel).
+fn image(s: &mut String, w: u32, h: u32, uri: &str, extra: &str) {
+    let _ = writeln!(
+        s,
+        "<image width=\"{w}\" height=\"{h}\" preserveAspectRatio=\"none\" \
+         image-rendering=\"optimizeSpeed\"{extra} href=\"{uri}\"/>"
+    );
 }
 
 /// Traces `design` and returns its SVG document: what the app's "Export SVG" button
 /// downloads and `marbling svg` writes.
 pub fn design_to_svg(design: &Design, opts: &TraceOptions) -> Result<String, VectorError> {
     Ok(to_svg(&trace(design, opts)?))
+}
+
+/// Decimal places of a contour outline's coordinates: a grid of at most T/10 output
+/// pixels (1 decimal at T = 1, scale 1), well inside the method's own T/4 simplification.
+pub fn contour_decimals(tolerance: f64, scale: f64) -> u32 {
+    decimals(tolerance * 5.0, scale)
 }
 
 fn hex(c: Rgb8) -> String {
@@ -153,5 +207,6 @@ mod tests {
         assert_eq!(fmt(0, &[3, -4, 5]), "3-4 5");
         assert_eq!(decimals(1.0, 1.0), 2);
         assert_eq!(decimals(0.25, 1.0), 3);
+        assert_eq!(contour_decimals(1.0, 1.0), 1);
     }
 }

@@ -3,38 +3,28 @@
 //! bent them, and (the lossy step) pinched apart and thinned out where they became
 //! thinner than the tolerance allows to matter.
 
+use crate::contour::contour_outlines;
 use crate::curve::Curve;
 use crate::pinch::{Pinch, PinchCount};
 use crate::ring::{Node, Refine, RefineCount, carry, initial_ring, reanchor};
 use crate::simplify::simplify_outline;
+use crate::surface_layers::surface_layers;
 use crate::{
-    Canvas, MARGIN_PX, Outline, TraceOptions, TraceStats, VectorDesign, VectorError, initial_sides,
+    Canvas, MARGIN_PX, Method, Outline, TraceOptions, TraceStats, VectorDesign, VectorError,
+    initial_sides,
 };
 use marbling_core::{CompiledOp, Design, Point, Rgb8};
 use rayon::prelude::*;
 
-/// Checks that `design` is exactly a background rectangle plus traced ink regions.
-///
-/// Every schema-v1 design is: its background is one plain colour and its seven op types
-/// are drops and sprays (regions) and homeomorphic deformations (forward maps). Schema
-/// v2 noise backgrounds and grain overlays are refused here with a message naming them
-/// ([`VectorError::RasterOnly`]), before anything is traced or written.
+/// Checks that `design` has a canvas to trace on. Every design can be exported: drops
+/// and sprays become regions, the deformations forward maps, and a schema v2 noise
+/// background or grain overlay becomes a raster layer ([`crate::surface_layers`]).
 pub fn check_traceable(design: &Design) -> Result<(), VectorError> {
     if design.width == 0 || design.height == 0 {
         return Err(VectorError::Untraceable(format!(
             "empty canvas {}×{}",
             design.width, design.height
         )));
-    }
-    let mut raster_only = Vec::new();
-    if design.background_noise.is_some() {
-        raster_only.push("a noise background".to_owned());
-    }
-    if !design.overlays.is_empty() {
-        raster_only.push(format!("{} grain overlay(s)", design.overlays.len()));
-    }
-    if !raster_only.is_empty() {
-        return Err(VectorError::RasterOnly(raster_only.join(" and ")));
     }
     Ok(())
 }
@@ -117,7 +107,7 @@ pub fn trace_with_progress(
     );
     let ops = CompiledOp::compile(&design.ops);
     let spacing = opts.spacing();
-    let mut refine = Refine {
+    let refine = Refine {
         ops: &ops,
         spacing: spacing * opts.chord,
         deviation: spacing * opts.deviation,
@@ -125,110 +115,149 @@ pub fn trace_with_progress(
         merge_any: false,
         min_fraction: 0.5f64.powi(opts.max_depth as i32) / 8.0,
     };
-    // Coarsening level: while more than `max_live` vertices are held, the deviation,
-    // the thin width and the simplification distance double (at most `MAX_LEVEL` times).
-    let mut level = 0;
     // Finer tolerances need more vertices for the same picture: the budget grows as 1/T
     // below T = 1.
     let budget = (opts.max_live as f64 / opts.tolerance.min(1.0)).min(usize::MAX as f64) as usize;
-    let pinch_at = |level: i32, op: usize| {
-        let width = spacing * opts.thin * 2f64.powi(level);
-        (opts.thin > 0.0).then_some(Pinch {
+    let pinch = (opts.thin > 0.0).then(|| {
+        let width = spacing * opts.thin;
+        Pinch {
             width,
             separation: (4.0 * width).max(2.0 * spacing * opts.chord),
             reach: spacing * opts.chord,
-            op,
-        })
-    };
+            op: 0,
+        }
+    });
     let mut regions: Vec<Region> = Vec::new();
+    // Regions handed to the contour method, by compiled op index: all of them when the
+    // label raster is cheap (the contour method is the more faithful: it grows older
+    // ink under newer and places edges for sRGB blending).
+    let mut handed: Vec<usize> = Vec::new();
+    let contour_all = raster_cost(design, &ops, opts) <= opts.contour_all;
+    if contour_all {
+        handed.extend(
+            ops.iter()
+                .enumerate()
+                .filter_map(|(j, op)| op.ink().map(|_| j)),
+        );
+    }
     let mut peak = 0;
     // Compiled ops: a drop pattern is one disc per drop, each a region of its own.
-    for (j, op) in ops.iter().enumerate() {
-        let pinch_j = pinch_at(level, j);
-        let live = regions.iter().map(Region::vertices).sum::<usize>();
-        let coarsen = live > budget && level < MAX_LEVEL;
-        if coarsen {
-            level += 1;
-            refine.deviation = spacing * opts.deviation * 2f64.powi(level);
-            // Past the budget, neighbouring segments may also merge approximately.
-            refine.merge_any = opts.anchor > 0;
-        }
-        let pinch_j = if coarsen { pinch_at(level, j) } else { pinch_j };
+    for (j, op) in ops.iter().enumerate().filter(|_| !contour_all) {
+        let pinch_j = pinch.map(|p| Pinch { op: j, ..p });
         regions.par_iter_mut().with_max_len(1).for_each(|r| {
             r.advance(j, &refine, opts.anchor as usize);
-            r.pinch(pinch_j.as_ref(), coarsen);
+            r.pinch(pinch_j.as_ref(), false);
         });
-        let (center, radius, color) = match *op {
-            CompiledOp::Disc {
-                cx, cy, r2, color, ..
-            } => (Point::new(cx, cy), r2.sqrt(), color),
-            _ => {
-                let total = regions.iter().map(Region::vertices).sum::<usize>();
-                peak = peak.max(total);
-                check_total(total, opts)?;
-                progress(j + 1, ops.len());
-                continue;
-            }
-        };
-        let rim = Curve::Circle {
-            center,
-            radius,
-            op: j,
-        };
-        let sides = initial_sides(radius * opts.scale, opts.tolerance);
-        let mut region = Region {
-            op_index: j,
-            color,
-            curves: vec![rim],
-            rings: vec![initial_ring(&rim, 0, sides)],
-            anchored_at: j,
-            pinched_at: 0,
-            initial: sides,
-            refined: RefineCount::default(),
-            pinched: PinchCount::default(),
-        };
-        region.rings[0] =
-            refine.refine(&mut region.curves, &region.rings[0], j, &mut region.refined);
-        regions.push(region);
-        let total = regions.iter().map(Region::vertices).sum::<usize>();
+        if let CompiledOp::Disc {
+            cx, cy, r2, color, ..
+        } = *op
+        {
+            let (center, radius) = (Point::new(cx, cy), r2.sqrt());
+            let rim = Curve::Circle {
+                center,
+                radius,
+                op: j,
+            };
+            let sides = initial_sides(radius * opts.scale, opts.tolerance);
+            let mut region = Region {
+                op_index: j,
+                color,
+                curves: vec![rim],
+                rings: vec![initial_ring(&rim, 0, sides)],
+                anchored_at: j,
+                pinched_at: 0,
+                initial: sides,
+                refined: RefineCount::default(),
+                pinched: PinchCount::default(),
+            };
+            region.rings[0] =
+                refine.refine(&mut region.curves, &region.rings[0], j, &mut region.refined);
+            regions.push(region);
+        }
+        let mut total = regions.iter().map(Region::vertices).sum::<usize>();
         peak = peak.max(total);
-        check_total(total, opts)?;
+        // Finishing costs the vertices held times the ops left: near the end a design
+        // may hold more before regions are handed over.
+        let left = ops.len() - j;
+        let budget = budget.saturating_mul((TAIL / left).max(1));
+        if total > budget {
+            // The costliest regions go to the contour method until half the budget is
+            // held: their raster outlines cost what their visible boundary costs.
+            regions.sort_by_key(|r| std::cmp::Reverse(r.vertices()));
+            let mut hand = 0;
+            while hand < regions.len() && total > budget / 2 {
+                total -= regions[hand].vertices();
+                hand += 1;
+            }
+            handed.extend(regions.drain(..hand).map(|r| r.op_index));
+            regions.sort_by_key(|r| r.op_index);
+        }
+        check_total(peak, opts)?;
         progress(j + 1, ops.len());
     }
     let last = ops.len().saturating_sub(1);
-    let pinch_last = pinch_at(level, last);
-    let epsilon = opts.spacing() * opts.epsilon * 2f64.powi(level);
+    let epsilon = opts.spacing() * opts.epsilon;
     let traced: Vec<(Option<Outline>, TraceStats)> = regions
         .into_par_iter()
         .with_max_len(1)
         .map(|mut r| {
-            r.pinch(pinch_last.as_ref(), true);
+            r.pinch(pinch.map(|p| Pinch { op: last, ..p }).as_ref(), true);
             finish(r, opts, &canvas, epsilon)
         })
         .collect();
     let mut stats = TraceStats {
         peak_vertices: peak,
-        level: level as u32,
         ..TraceStats::default()
     };
-    let mut outlines = Vec::with_capacity(traced.len());
+    let mut outlines = Vec::with_capacity(traced.len() + handed.len());
     for (outline, s) in traced {
         stats += s;
         outlines.extend(outline);
+    }
+    let (underlay, grain) = surface_layers(design, opts.scale)?;
+    let mut dense = None;
+    if !handed.is_empty() {
+        let underlay = underlay.as_ref().map(|l| &l.image);
+        let contoured = contour_outlines(design, &ops, &handed, opts, underlay)?;
+        stats += contoured.stats;
+        outlines.extend(contoured.outlines);
+        outlines.sort_by_key(|o| o.op_index);
+        dense = contoured.dense;
     }
     Ok(VectorDesign {
         width: design.width,
         height: design.height,
         background: design.background,
         outlines,
+        underlay,
+        dense,
+        grain,
         tolerance: opts.tolerance,
         scale: opts.scale,
         stats,
     })
 }
 
-/// Most doublings of the lossy limits when a design holds too many vertices.
-const MAX_LEVEL: i32 = 4;
+/// An upper bound on the op-samples of the contour method's label raster: its samples
+/// (all refined) times the cost of a walk through every op (a finite comb costs one unit
+/// per tine, a stylus eight per segment, a jiggle eight, any other op one).
+fn raster_cost(design: &Design, ops: &[CompiledOp], opts: &TraceOptions) -> f64 {
+    let step = opts.spacing() * opts.contour_step;
+    let samples = f64::from(design.width) * f64::from(design.height) / (step * step);
+    let walk: f64 = ops
+        .iter()
+        .map(|op| match op {
+            CompiledOp::Tines { offsets, .. } => offsets.len() as f64,
+            CompiledOp::Stylus { segments } => 8.0 * segments.len() as f64,
+            CompiledOp::Jiggle { .. } => 8.0,
+            _ => 1.0,
+        })
+        .sum();
+    samples * walk
+}
+
+/// Ops before the end from which the vertex budget grows as `TAIL` / ops left.
+const TAIL: usize = 16;
 
 /// Refuses a design once its rings hold more than `opts.max_vertices` vertices.
 fn check_total(total: usize, opts: &TraceOptions) -> Result<(), VectorError> {
@@ -274,12 +303,12 @@ fn finish(
         dropped_pieces: r.pinched.dropped,
         dropped_area: r.pinched.area,
         cuts: r.pinched.cuts,
-        peak_vertices: 0,
-        level: 0,
+        ..TraceStats::default()
     };
     let outline = (!rings.is_empty()).then_some(Outline {
         op_index: r.op_index,
         color: r.color,
+        method: Method::Forward,
         rings,
     });
     (outline, stats)

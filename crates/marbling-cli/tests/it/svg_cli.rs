@@ -94,7 +94,7 @@ fn svg_reports_unwritable_output() {
 }
 
 #[test]
-fn designs_too_complex_to_trace_are_refused_and_nothing_is_written() {
+fn designs_too_complex_to_trace_exactly_are_refused_and_nothing_is_written() {
     let dir = workdir("complex");
     let o = marbling(
         &dir,
@@ -103,6 +103,7 @@ fn designs_too_complex_to_trace_are_refused_and_nothing_is_written() {
             "design.json",
             "-o",
             "out.svg",
+            "--exact",
             "--max-vertices",
             "50",
         ],

@@ -1,6 +1,6 @@
 //! Schema v2 designs (noise background, grain overlays) from the outside: `render`
-//! draws them on the CPU; vector exports (`svg`, `render --backend vector`) refuse them
-//! with a clear message and a non-zero exit, writing nothing.
+//! draws them on the CPU; vector exports (`svg`, `render --backend vector`) hold the
+//! noise and grain as raster layers under and over the ink outlines.
 
 use std::path::PathBuf;
 use std::process::{Command, Output};
@@ -55,33 +55,33 @@ fn validate_names_the_surface() {
 }
 
 #[test]
-fn vector_exports_refuse_noise_and_write_nothing() {
+fn vector_exports_put_noise_and_grain_in_raster_layers() {
     let dir = workdir("svg");
-    for args in [
-        &["svg", "design.json", "-o", "out.svg"][..],
+    let o = marbling(&dir, &["svg", "design.json", "-o", "out.svg"]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let svg = std::fs::read_to_string(dir.join("out.svg")).expect("written");
+    assert_eq!(svg.matches("<image ").count(), 2, "underlay and grain");
+    assert!(svg.contains("href=\"data:image/png;base64,"));
+    assert!(svg.contains("style=\"mix-blend-mode:multiply\""));
+    assert!(svg.contains("<path data-method=\"contour\""));
+    let o = marbling(
+        &dir,
         &[
             "render",
             "design.json",
             "-o",
-            "out.png",
+            "vec.png",
             "--backend",
             "vector",
-        ][..],
-    ] {
-        let o = marbling(&dir, args);
-        let err = String::from_utf8_lossy(&o.stderr);
-        assert!(!o.status.success(), "{args:?} succeeded");
-        assert!(
-            err.contains(
-                "a noise background and 1 grain overlay(s), which only raster renders draw"
-            ),
-            "{args:?}: {err}"
-        );
-        assert_eq!(err.trim().lines().count(), 1, "{err}");
-    }
-    let left: Vec<_> = std::fs::read_dir(&dir)
-        .expect("dir")
-        .map(|e| e.expect("entry").file_name().to_string_lossy().into_owned())
-        .collect();
-    assert_eq!(left, ["design.json"], "files were written");
+        ],
+    );
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let img = marbling_core::RgbaImage::from_png(&std::fs::read(dir.join("vec.png")).expect("png"))
+        .expect("png");
+    assert_eq!((img.width, img.height), (120, 90));
+    let first = img.pixel(0, 0);
+    assert!(
+        (0..90).any(|y| img.pixel(5, y) != first),
+        "the noise background is flat"
+    );
 }

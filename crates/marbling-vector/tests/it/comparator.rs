@@ -3,12 +3,12 @@
 use marbling_core::compare::compare;
 use marbling_core::synth::{Mix, random_design};
 use marbling_core::{Antialias, RenderOptions, render};
-use marbling_vector::{Blend, TraceOptions, rasterize, trace};
+use marbling_vector::{Blend, rasterize, trace};
 
 #[test]
 fn perturbed_vector_render_fails_the_budget() {
     let design = random_design(7, 200, 150, 60, Mix::DropHeavy);
-    let opts = TraceOptions::default();
+    let opts = crate::exact::forward_only();
     let mut vector = trace(&design, &opts).expect("traceable");
     let reference = render(&design, &RenderOptions::default()).expect("render");
     let good = rasterize(&vector, 1.0, Blend::Linear(Antialias::Rgss)).expect("preview");

@@ -1,4 +1,5 @@
-//! The lossy steps bound vertex counts, say what they dropped, and can be turned off.
+//! The optional thin step bounds vertex counts and says what it dropped; the vertex
+//! budget hands regions to the contour method; options out of range are refused.
 
 use marbling_core::synth::{Mix, random_design};
 use marbling_vector::{TraceOptions, VectorError, trace};
@@ -6,12 +7,19 @@ use marbling_vector::{TraceOptions, VectorError, trace};
 #[test]
 fn thin_step_bounds_growth_and_reports_what_it_dropped() {
     let design = random_design(31, 200, 150, 150, Mix::CombHeavy);
-    let lossy = trace(&design, &TraceOptions::default()).expect("traceable");
+    let lossy = trace(
+        &design,
+        &TraceOptions {
+            thin: 1.0 / 16.0,
+            ..crate::exact::forward_only()
+        },
+    )
+    .expect("traceable");
     let exact = trace(
         &design,
         &TraceOptions {
             thin: 0.0,
-            ..TraceOptions::default()
+            ..crate::exact::forward_only()
         },
     )
     .expect("traceable");
@@ -27,13 +35,13 @@ fn thin_step_bounds_growth_and_reports_what_it_dropped() {
 }
 
 #[test]
-fn vertex_budget_coarsens_and_keeps_counts_down() {
+fn vertex_budget_hands_costly_regions_to_the_contour_method() {
     let design = random_design(32, 400, 300, 300, Mix::DropHeavy);
     let free = trace(
         &design,
         &TraceOptions {
             max_live: usize::MAX,
-            ..TraceOptions::default()
+            ..crate::exact::forward_only()
         },
     )
     .expect("traceable");
@@ -41,14 +49,14 @@ fn vertex_budget_coarsens_and_keeps_counts_down() {
         &design,
         &TraceOptions {
             max_live: 5_000,
-            ..TraceOptions::default()
+            ..crate::exact::forward_only()
         },
     )
     .expect("traceable");
     println!("free {:?}\ntight {:?}", free.stats, tight.stats);
-    assert_eq!(free.stats.level, 0);
-    assert!(tight.stats.level >= 1);
-    assert!(tight.stats.peak_vertices < free.stats.peak_vertices);
+    assert_eq!(free.stats.contour_regions, 0);
+    assert!(tight.stats.contour_regions >= 1);
+    assert!(tight.stats.contour_samples > 0);
     assert!(tight.stats.vertices < free.stats.vertices);
 }
 
@@ -58,19 +66,19 @@ fn out_of_range_fractions_are_refused() {
     for opts in [
         TraceOptions {
             thin: -0.5,
-            ..TraceOptions::default()
+            ..crate::exact::forward_only()
         },
         TraceOptions {
             deviation: 0.0,
-            ..TraceOptions::default()
+            ..crate::exact::forward_only()
         },
         TraceOptions {
             epsilon: f64::NAN,
-            ..TraceOptions::default()
+            ..crate::exact::forward_only()
         },
         TraceOptions {
             chord: 0.5,
-            ..TraceOptions::default()
+            ..crate::exact::forward_only()
         },
     ] {
         let err = trace(&design, &opts).expect_err("refused");

@@ -3,6 +3,8 @@
 
 mod agreement;
 mod comparator;
+mod contour;
+mod exact;
 mod lossy;
 mod svg_resvg;
 mod tolerance;

@@ -6,7 +6,7 @@ use marbling_core::synth::{Mix, random_design};
 use marbling_core::{CompiledOp, Design, Op};
 use marbling_vector::reference::{Refiner, distance_to_segment};
 use marbling_vector::simplify::rdp_closed;
-use marbling_vector::{Blend, TraceOptions, initial_sides, rasterize, trace};
+use marbling_vector::{Blend, initial_sides, rasterize, trace};
 
 /// Refiners for every ink op of `design` at tolerance `t` (scale 1, no off-canvas
 /// relaxation, so the bounds apply everywhere).
@@ -133,7 +133,7 @@ fn traced_outlines_keep_vertex_counts_bounded_on_a_single_drop() {
         radius: 80.0,
         color: marbling_core::Rgb8::new(0, 0, 0),
     }));
-    let opts = TraceOptions::default();
+    let opts = crate::exact::forward_only();
     let v = trace(&design, &opts).expect("traceable");
     let eps = opts.epsilon * opts.tolerance;
     let expected = std::f64::consts::PI * (80.0 / (2.0 * eps)).sqrt();
@@ -149,7 +149,7 @@ fn traced_outlines_keep_vertex_counts_bounded_on_a_single_drop() {
 #[test]
 fn golden_vector_preview() {
     let design = random_design(5, 160, 120, 80, Mix::Mixed);
-    let vector = trace(&design, &TraceOptions::default()).expect("traceable");
+    let vector = trace(&design, &crate::exact::forward_only()).expect("traceable");
     let image = rasterize(&vector, 1.0, Blend::default()).expect("preview");
     // The golden image itself agrees with the CPU reference (so updating it cannot
     // bless a wrong render).
