@@ -46,9 +46,10 @@ pub struct TraceOptions {
     /// Contour rings are simplified within one spacing where they show.
     pub contour_step: f64,
     /// Largest estimated cost of the contour method's label raster (op-samples: grid
-    /// points times the ops a walk passes) at which every region is contoured rather
-    /// than traced forward (default 4·10⁹, a few seconds on two cores; 0: never). The
-    /// contour method is the more faithful where inks abut (see the crate docs).
+    /// points times the ops a walk passes, measured on probes) at which every region is
+    /// contoured rather than traced forward (default 4·10⁹: 1–10 s on two cores;
+    /// 0: never). The contour method is the more faithful where inks abut (see the crate
+    /// docs).
     pub contour_all: f64,
     /// How far a contour region grows under newer ink, output pixels (default 1.5: more
     /// than an antialiased edge plus the simplification of the ink painted over it).

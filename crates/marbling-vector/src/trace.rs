@@ -13,7 +13,7 @@ use crate::{
     Canvas, MARGIN_PX, Method, Outline, TraceOptions, TraceStats, VectorDesign, VectorError,
     initial_sides,
 };
-use marbling_core::{CompiledOp, Design, Point, Rgb8};
+use marbling_core::{CompiledOp, Design, Point, Rgb8, Traced, Walker};
 use rayon::prelude::*;
 
 /// Checks that `design` has a canvas to trace on. Every design can be exported: drops
@@ -238,22 +238,39 @@ pub fn trace_with_progress(
     })
 }
 
-/// An upper bound on the op-samples of the contour method's label raster: its samples
-/// (all refined) times the cost of a walk through every op (a finite comb costs one unit
-/// per tine, a stylus eight per segment, a jiggle eight, any other op one).
+/// The op-samples the contour method's label raster would cost if every grid point
+/// were walked: grid points times the mean cost of a walk, measured on a 64 × 64
+/// lattice of probes (a walk ends at the newest ink covering it; a finite comb costs one
+/// unit per tine, a stylus eight per segment, a jiggle eight, any other op one).
 fn raster_cost(design: &Design, ops: &[CompiledOp], opts: &TraceOptions) -> f64 {
     let step = opts.spacing() * opts.contour_step;
-    let samples = f64::from(design.width) * f64::from(design.height) / (step * step);
-    let walk: f64 = ops
-        .iter()
-        .map(|op| match op {
+    let (w, h) = (f64::from(design.width), f64::from(design.height));
+    let samples = w * h / (step * step);
+    // cost[k]: the units of walking ops k.. (newest first down to k).
+    let mut cost = vec![0.0; ops.len() + 1];
+    for (k, op) in ops.iter().enumerate().rev() {
+        let units = match op {
             CompiledOp::Tines { offsets, .. } => offsets.len() as f64,
             CompiledOp::Stylus { segments } => 8.0 * segments.len() as f64,
             CompiledOp::Jiggle { .. } => 8.0,
             _ => 1.0,
+        };
+        cost[k] = cost[k + 1] + units;
+    }
+    let walker = Walker::new(&design.ops);
+    const PROBES: usize = 64;
+    let total: f64 = (0..PROBES * PROBES)
+        .into_par_iter()
+        .map(|i| {
+            let (x, y) = ((i % PROBES) as f64 + 0.5, (i / PROBES) as f64 + 0.5);
+            let p = Point::new(x * w / PROBES as f64, y * h / PROBES as f64);
+            match walker.trace(p) {
+                Traced::Ink(k) => cost[k],
+                Traced::Background(_) => cost[0],
+            }
         })
         .sum();
-    samples * walk
+    samples * total / (PROBES * PROBES) as f64
 }
 
 /// Ops before the end from which the vertex budget grows as `TAIL` / ops left.
