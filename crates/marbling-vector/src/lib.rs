@@ -1,15 +1,23 @@
-//! Vector export of marbling designs. Every ink drop and spray is traced *forward*
-//! through all later ops as closed outlines, refined adaptively and simplified within a
-//! stated bound, while that is cheap; regions whose outlines grow past a vertex budget
-//! are read off the exact label raster instead (the contour method); pixels where three
-//! or more inks meet, and schema v2 noise and grain, become raster layers. The result is
-//! written as SVG or rasterised with tiny-skia.
+//! Vector export of marbling designs. Ink outlines come from one of two methods, chosen
+//! per design and per region:
 //!
-//! Forward tracing follows the "Vector Image Output" section of Lu, Jaffer, Jin, Zhao &
-//! Mao (2012); it is resolution independent, but on dense designs its vertex count grows
-//! with the total filament length, which grows geometrically with the op count. A
-//! faithful picture at tolerance T never needs more vertices than the ink boundaries
-//! visible at T, and that is what the contour method costs.
+//! * **The contour method** reads every region's visible outline off the exact label
+//!   raster (which ink each point of a T/4 grid holds, found by the CPU walk) by
+//!   marching squares. It is used for every region when that raster costs at most
+//!   `contour_all` op-samples (measured on probes: a few seconds), because it is the
+//!   more faithful where inks abut: it grows older ink under newer, and it places each
+//!   edge for the sRGB blending of SVG renderers.
+//! * **Forward tracing** carries each drop's and spray's outline through all later ops
+//!   (the "Vector Image Output" section of Lu, Jaffer, Jin, Zhao & Mao 2012), refined
+//!   adaptively and simplified within a stated bound. It is resolution independent and
+//!   used when the raster would cost more; its vertex count grows with the total
+//!   filament length, geometrically with the op count, so regions whose outlines grow
+//!   past a vertex budget are handed to the contour method.
+//!
+//! Pixels where three or more inks meet, and schema v2 noise and grain, become raster
+//! layers. The result is written as SVG or rasterised with tiny-skia. A faithful
+//! picture at tolerance T never needs more vertices than the ink boundaries visible at
+//! T, and that is what the contour method costs.
 //!
 //! # Forward tracing (op by op)
 //! 1. **Initial polygon.** A drop or spray of radius r starts as the regular n-gon
@@ -81,7 +89,8 @@
 //! # Tolerance contract (output pixels, `T` = [`TraceOptions::tolerance`])
 //! Lengths are output pixels: design pixels × [`TraceOptions::scale`]. Defaults:
 //! `deviation` = `epsilon` = 0.04, `chord` = 4, `thin` = 0, `anchor` = 32,
-//! `max_live` = 60 000, `contour_step` = ¼, `contour_reach` = 1.5.
+//! `max_live` = 60 000, `contour_all` = 4·10⁹ op-samples, `contour_step` = ¼,
+//! `contour_reach` = 1.5.
 //!
 //! **Forward regions** (exact with `anchor = 0`, `marbling svg --exact`): every vertex
 //! and probe is the forward image of a point of the drop's rim, exact to f64 rounding.
