@@ -36,10 +36,6 @@ pub struct Refine<'a> {
     /// Beyond this enlarged canvas, chords may be as long as their distance from it
     /// (`None`: refine everywhere alike).
     pub canvas: Option<Canvas>,
-    /// Whether two consecutive segments that are not halves of one source interval may
-    /// merge too (their joint source becomes the quadratic through their three points,
-    /// as in [`reanchor`]); only when re-anchoring is on.
-    pub merge_any: bool,
     /// Smallest parameter interval that is still bisected, as a fraction of the
     /// source curve's whole range (2^−max_depth of an initial segment).
     pub min_fraction: f64,
@@ -91,35 +87,18 @@ impl Refine<'_> {
     /// The two nodes `a`, `b` (consecutive, `b` ending at `c`) as one node, when they
     /// are the halves of one source interval and together are well within the limits
     /// (half of them, so that merging and splitting do not alternate).
-    fn merge(
-        &self,
-        a: &Node,
-        b: &Node,
-        c: Point,
-        upto: usize,
-        curves: &mut Vec<Curve>,
-    ) -> Option<Node> {
+    fn merge(&self, a: &Node, b: &Node, c: Point) -> Option<Node> {
         let (wa, wb) = (a.tb - a.ta, b.tb - b.ta);
         let halves = a.src == b.src && a.tb == b.ta && (wa - wb).abs() <= 1e-9 * wa.abs();
-        if !(halves || self.merge_any) || self.exceeds(a.p, &[a.probe, b.p, b.probe], c, 0.5) {
+        if !halves || self.exceeds(a.p, &[a.probe, b.p, b.probe], c, 0.5) {
             return None;
         }
-        if halves {
-            return Some(Node {
-                p: a.p,
-                probe: b.p,
-                src: a.src,
-                ta: a.ta,
-                tb: b.tb,
-            });
-        }
-        curves.push(Curve::through(a.p, b.p, c, upto));
         Some(Node {
             p: a.p,
             probe: b.p,
-            src: (curves.len() - 1) as u32,
-            ta: 0.0,
-            tb: 1.0,
+            src: a.src,
+            ta: a.ta,
+            tb: b.tb,
         })
     }
 
@@ -169,7 +148,7 @@ impl Refine<'_> {
     /// enough; returns the refined ring.
     pub fn refine(
         &self,
-        curves: &mut Vec<Curve>,
+        curves: &[Curve],
         ring: &[Node],
         upto: usize,
         count: &mut RefineCount,
@@ -183,8 +162,7 @@ impl Refine<'_> {
             if try_merge
                 && n > 4
                 && i + 1 < n
-                && let Some(merged) =
-                    self.merge(&ring[i], &ring[i + 1], ring[(i + 2) % n].p, upto, curves)
+                && let Some(merged) = self.merge(&ring[i], &ring[i + 1], ring[(i + 2) % n].p)
             {
                 out.push(merged);
                 count.merged += 1;

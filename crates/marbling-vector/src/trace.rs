@@ -67,7 +67,7 @@ impl Region {
         let op = &refine.ops[j];
         for ring in &mut self.rings {
             carry(ring, op);
-            *ring = refine.refine(&mut self.curves, ring, j, &mut self.refined);
+            *ring = refine.refine(&self.curves, ring, j, &mut self.refined);
         }
         if anchor > 0 && j >= self.anchored_at + anchor {
             self.curves = reanchor(&mut self.rings, j);
@@ -112,7 +112,6 @@ pub fn trace_with_progress(
         spacing: spacing * opts.chord,
         deviation: spacing * opts.deviation,
         canvas: opts.simplify.then_some(canvas),
-        merge_any: false,
         min_fraction: 0.5f64.powi(opts.max_depth as i32) / 8.0,
     };
     // Finer tolerances need more vertices for the same picture: the budget grows as 1/T
@@ -171,7 +170,7 @@ pub fn trace_with_progress(
                 pinched: PinchCount::default(),
             };
             region.rings[0] =
-                refine.refine(&mut region.curves, &region.rings[0], j, &mut region.refined);
+                refine.refine(&region.curves, &region.rings[0], j, &mut region.refined);
             regions.push(region);
         }
         let mut total = regions.iter().map(Region::vertices).sum::<usize>();
