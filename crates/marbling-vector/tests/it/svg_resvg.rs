@@ -1,23 +1,10 @@
 //! The SVG export parses with usvg and, rendered by resvg, matches the tiny-skia preview
 //! painted the way SVG renderers paint (sRGB blending).
 
-use marbling_core::RgbaImage;
 use marbling_core::compare::compare;
 use marbling_core::synth::{Mix, random_design};
 use marbling_vector::{Blend, TraceOptions, rasterize, to_svg, trace};
-use resvg::{tiny_skia, usvg};
-
-fn rasterise(svg: &str) -> RgbaImage {
-    let tree = usvg::Tree::from_str(svg, &usvg::Options::default()).expect("valid SVG");
-    let size = tree.size().to_int_size();
-    let mut pixmap = tiny_skia::Pixmap::new(size.width(), size.height()).expect("pixmap");
-    resvg::render(&tree, tiny_skia::Transform::default(), &mut pixmap.as_mut());
-    RgbaImage {
-        width: size.width(),
-        height: size.height(),
-        pixels: pixmap.take(),
-    }
-}
+use resvg::usvg;
 
 /// Paths in a usvg group, recursively (a viewBox scale adds a group).
 fn count_paths(group: &usvg::Group) -> usize {
@@ -59,7 +46,7 @@ fn resvg_render_of_svg_matches_preview() {
         let tree = usvg::Tree::from_str(&svg, &usvg::Options::default()).expect("valid SVG");
         // Background rectangle plus one path per outline.
         assert_eq!(count_paths(tree.root()), 1 + vector.outlines.len());
-        let actual = rasterise(&svg);
+        let actual = crate::exact::rasterise_svg(&svg);
         let expected = rasterize(&vector, scale, Blend::Srgb).expect("preview");
         let diff = compare(&expected, &actual, 16).expect("same size");
         println!(
