@@ -48,6 +48,15 @@ pub fn run(args: &ValidateArgs) -> Result<()> {
     if let Some(bg) = &d.background_noise {
         v2.push(format!("{} noise background", bg.noise.type_name()));
     }
+    if let Some(img) = &d.background_image {
+        let p = img.pixels();
+        v2.push(format!(
+            "{}×{} image background ({})",
+            p.width,
+            p.height,
+            img.fit.name()
+        ));
+    }
     v2.extend(d.overlays.iter().map(|o| o.kind.name().to_owned()));
     let surface = if v2.is_empty() {
         String::new()

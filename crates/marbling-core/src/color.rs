@@ -20,6 +20,9 @@ pub struct Rgb8 {
 pub struct ColorParseError(pub String);
 
 impl Rgb8 {
+    /// White, the default paper around a letterboxed image background.
+    pub const WHITE: Rgb8 = Rgb8::new(255, 255, 255);
+
     /// Builds a colour from its three sRGB bytes.
     pub const fn new(r: u8, g: u8, b: u8) -> Self {
         Self { r, g, b }

@@ -1,6 +1,6 @@
 //! The design document: canvas size, background and the history of operations.
 
-use crate::{GestureSpan, NoiseBackground, Op, Overlay, Rgb8};
+use crate::{GestureSpan, ImageBackground, NoiseBackground, Op, Overlay, Rgb8};
 
 /// Largest accepted canvas side, design pixels.
 pub const MAX_SIDE: u32 = 16_384;
@@ -30,6 +30,10 @@ pub struct Design {
     /// Schema v2: a noise texture mapped to a palette, marbled like ink; `None` for a
     /// plain [`Design::background`].
     pub background_noise: Option<NoiseBackground>,
+    /// Schema v2: a picture marbled like ink (see [`crate::image_background`]), with
+    /// [`Design::background`] as the paper around a letterboxed one; `None` for none.
+    /// A design has at most one of a noise and an image background.
+    pub background_image: Option<ImageBackground>,
     /// Schema v2: grain overlays applied after marbling, in order.
     pub overlays: Vec<Overlay>,
     /// Operations, oldest first.
@@ -50,6 +54,7 @@ impl Design {
             height,
             background,
             background_noise: None,
+            background_image: None,
             overlays: Vec::new(),
             ops: Vec::new(),
             gestures: Vec::new(),
@@ -76,10 +81,12 @@ impl Design {
         self.ops.iter().map(Op::counted_ops).sum()
     }
 
-    /// Whether the design uses a schema v2 feature (noise background or overlays),
-    /// which only raster renderers draw.
+    /// Whether the design uses a schema v2 feature (noise or image background, or
+    /// overlays), which only raster renderers draw exactly.
     pub fn uses_v2(&self) -> bool {
-        self.background_noise.is_some() || !self.overlays.is_empty()
+        self.background_noise.is_some()
+            || self.background_image.is_some()
+            || !self.overlays.is_empty()
     }
 
     /// Sets a noise background (and [`Design::background`] to the colour that stands
@@ -87,8 +94,18 @@ impl Design {
     pub fn set_background_noise(&mut self, noise: Option<NoiseBackground>) {
         if let Some(n) = &noise {
             self.background = n.mid_color();
+            self.background_image = None;
         }
         self.background_noise = noise;
+    }
+
+    /// Sets a picture background (dropping a noise one; [`Design::background`] stays
+    /// the paper around a letterboxed picture), or none with `None`.
+    pub fn set_background_image(&mut self, image: Option<ImageBackground>) {
+        if image.is_some() {
+            self.background_noise = None;
+        }
+        self.background_image = image;
     }
 
     /// How many ops of each type, as `(type, count)` in [`crate::OP_TYPES`] order,

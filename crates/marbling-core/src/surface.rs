@@ -26,6 +26,7 @@
 //!   and the GPU renderers draw the same picture.
 
 use crate::Rgb8;
+use crate::image_background::{ImageBackground, ImageMap};
 use marbling_noise::wgsl::{GpuUnsupported, wgsl_form};
 use marbling_noise::{
     ColorRamp, Field, FieldError, NoiseSpec, PALETTES, Source, Transfer, noise_field,
@@ -355,6 +356,7 @@ impl Overlay {
 #[derive(Clone, Debug)]
 pub(crate) struct Surface {
     background: Option<(NoiseLayer, ColorRamp)>,
+    image: Option<(ImageBackground, ImageMap)>,
     plain: [f32; 3],
     paper: Vec<Overlay>,
     pigment: Vec<Overlay>,
@@ -363,7 +365,7 @@ pub(crate) struct Surface {
 impl Surface {
     /// `None` for a plain background without overlays (the fast palette path).
     pub(crate) fn new(design: &crate::Design) -> Option<Self> {
-        if design.background_noise.is_none() && design.overlays.is_empty() {
+        if !design.uses_v2() {
             return None;
         }
         let pick = |k: GrainKind| {
@@ -379,6 +381,10 @@ impl Surface {
                 .background_noise
                 .as_ref()
                 .map(|b| (b.noise.clone(), b.ramp())),
+            image: design
+                .background_image
+                .as_ref()
+                .map(|b| (b.clone(), b.map(design.width, design.height))),
             plain: design.background.to_linear(),
             paper: pick(GrainKind::Paper),
             pigment: pick(GrainKind::Pigment),
@@ -388,6 +394,9 @@ impl Surface {
     /// Linear colour of the background at back-traced point (x, y).
     #[inline]
     pub(crate) fn background(&self, x: f64, y: f64) -> [f32; 3] {
+        if let Some((image, map)) = &self.image {
+            return map.sample(image.pixels(), x, y, self.plain);
+        }
         match &self.background {
             Some((noise, ramp)) => ramp.sample(noise.intensity(x, y)).map(srgb_unit_to_linear),
             None => self.plain,

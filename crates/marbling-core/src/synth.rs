@@ -199,3 +199,43 @@ pub fn random_design(seed: u64, width: u32, height: u32, n_ops: usize, mix: Mix)
     }
     design
 }
+
+/// A photo-like test picture of `width`×`height` pixels: smooth colour gradients, a few
+/// soft discs and a fine checker band, deterministic for `seed` (image-background tests
+/// and benchmarks; PNG-encode it with [`crate::RgbaImage::to_png`]).
+pub fn test_photo(seed: u64, width: u32, height: u32) -> crate::RgbaImage {
+    let mut rng = SplitMix64(seed);
+    let discs: Vec<(f64, f64, f64, [f64; 3])> = (0..5)
+        .map(|_| {
+            (
+                rng.unit(),
+                rng.unit(),
+                rng.range(0.08, 0.25),
+                [rng.unit(), rng.unit(), rng.unit()],
+            )
+        })
+        .collect();
+    let mut img = crate::RgbaImage::filled(width, height, [0, 0, 0, 255]);
+    for y in 0..height {
+        for x in 0..width {
+            let (u, v) = (
+                (f64::from(x) + 0.5) / f64::from(width),
+                (f64::from(y) + 0.5) / f64::from(height),
+            );
+            let mut c = [u, 0.5 * (1.0 - v) + 0.25 * u, v];
+            for &(cx, cy, r, col) in &discs {
+                let d = ((u - cx).powi(2) + (v - cy).powi(2)).sqrt() / r;
+                let w = (1.0 - d).clamp(0.0, 1.0);
+                for k in 0..3 {
+                    c[k] += (col[k] - c[k]) * w;
+                }
+            }
+            if (0.45..0.55).contains(&v) && (x / 4 + y / 4) % 2 == 0 {
+                c = c.map(|ch| 1.0 - ch);
+            }
+            let b = c.map(|ch| (ch.clamp(0.0, 1.0) * 255.0).round() as u8);
+            img.set_pixel(x, y, [b[0], b[1], b[2], 255]);
+        }
+    }
+    img
+}

@@ -31,6 +31,8 @@ struct RenderParams {
 @group(0) @binding(1) var ops: texture_2d<f32>;
 // Schema v2 noise background and grain overlays (surface.flags == 0: none).
 @group(0) @binding(2) var<uniform> surface: SurfaceParams;
+// Image background (surface.flags has SURFACE_IMAGE), Rgba8UnormSrgb; 1×1 otherwise.
+@group(0) @binding(3) var surface_image: texture_2d<f32>;
 
 @vertex
 fn vs_main(@builtin(vertex_index) vertex: u32) -> @builtin(position) vec4<f32> {

@@ -11,6 +11,8 @@ const SURFACE_ENABLED: bool = true;
 const SURFACE_BACKGROUND: u32 = 1u;
 const SURFACE_PIGMENT: u32 = 2u;
 const SURFACE_PAPER: u32 = 4u;
+// With SURFACE_BACKGROUND: the background is `surface_image`, not noise.
+const SURFACE_IMAGE: u32 = 8u;
 
 // How layer i's noise (`SurfaceParams::noises[i]`) becomes an intensity in [0, 1]
 // (keep in sync with `LayerParams`). The noise is not a member: WebGL2 (GLSL ES, as
@@ -42,6 +44,38 @@ struct SurfaceParams {
     noises: array<NoiseUniform, 3>,
     // The transfer and strength of each of `noises`.
     layers: array<SurfaceLayer, 3>,
+    // Image background: image pixel u = (x − [0])·[2], v = (y − [1])·[3].
+    image_map: vec4<f32>,
+    // Image width, height (pixels), 1 when letterboxed (contain) else 0, unused.
+    image_size: vec4<f32>,
+    // The paper around a letterboxed image, linear rgb.
+    paper: vec4<f32>,
+}
+
+// Linear colour of texel (i, j) of the image, clamped to its edge (an …UnormSrgb
+// texture: loads decode to linear light).
+fn image_texel(i: i32, j: i32) -> vec3<f32> {
+    let size = vec2<i32>(surface.image_size.xy);
+    return textureLoad(surface_image, clamp(vec2<i32>(i, j), vec2<i32>(0), size - 1), 0).rgb;
+}
+
+// The image background at back-traced design point p: bilinear in linear light
+// between texel centres (whole + ½), clamped to the edge; the paper outside a
+// letterboxed image (keep in sync with marbling-core's image_background.rs).
+fn surface_image_color(p: vec2<f32>) -> vec3<f32> {
+    let uv = (p - surface.image_map.xy) * surface.image_map.zw;
+    let size = surface.image_size.xy;
+    if surface.image_size.z > 0.5 && (any(uv < vec2<f32>(0.0)) || any(uv > size)) {
+        return surface.paper.rgb;
+    }
+    let f = uv - 0.5;
+    let base = floor(f);
+    let t = f - base;
+    let i = i32(base.x);
+    let j = i32(base.y);
+    let top = mix(image_texel(i, j), image_texel(i + 1, j), t.x);
+    let bottom = mix(image_texel(i, j + 1), image_texel(i + 1, j + 1), t.x);
+    return mix(top, bottom, t.y);
 }
 
 fn surface_intensity(p: vec2<f32>, i: u32) -> f32 {
@@ -83,6 +117,10 @@ fn surface_shade(c: vec3<f32>, background: bool, start: vec2<f32>, end: vec2<f32
         var p = end;
         if i == 2u {
             p = start;
+        }
+        if i == 0u && (surface.flags & SURFACE_IMAGE) != 0u {
+            rgb = surface_image_color(p);
+            continue;
         }
         let g = surface_intensity(p, i);
         if i == 0u {

@@ -10,7 +10,9 @@ use crate::params::RenderParams;
 use crate::shaders::{ExactVariant, RENDER_PLAIN_WGSL};
 use crate::surface::SurfaceParams;
 use marbling_core::{Antialias, Design, Op};
-use std::sync::OnceLock;
+use marbling_core::ImageFit;
+use marbling_core::image_background::ImagePixels;
+use std::sync::{Arc, OnceLock};
 
 /// The exact render pipeline for one target format, in the four [`ExactVariant`]s:
 /// plain (every v1 design; no noise or stylus code) built at once, the others (with
@@ -42,6 +44,12 @@ pub struct PreparedDesign {
     written: u64,
     surface: wgpu::Buffer,
     surface_params: SurfaceParams,
+    /// The image background's pixels (1×1 when there is none), bound at binding 3.
+    image_texture: wgpu::Texture,
+    /// The pixels in `image_texture` (compared by pointer to skip re-uploads).
+    image_uploaded: Option<Arc<ImagePixels>>,
+    /// A live picture (a video frame) shown instead of the design's background.
+    live_image: Option<(Arc<ImagePixels>, ImageFit)>,
     /// Whether the design needs the surface variant of the pipeline.
     textured: bool,
     /// Whether it holds ops only the v3 walk knows ([`Op::walks_v3`]).
@@ -96,6 +104,7 @@ impl ExactRenderer {
                 bindings::uniform::<RenderParams>(0, visibility),
                 bindings::texture_2d(1, visibility, false),
                 bindings::uniform::<SurfaceParams>(2, visibility),
+                bindings::texture_2d(3, visibility, false),
             ],
         });
         let pipeline_layout = bindings::pipeline_layout(device, "marbling render", &layout);
@@ -168,7 +177,8 @@ impl ExactRenderer {
         let ops_texture = op_texture(device, layout);
         let uniform = bindings::uniform_buffer::<RenderParams>(device, "marbling render params");
         let surface = bindings::uniform_buffer::<SurfaceParams>(device, "marbling surface params");
-        let bind_group = self.bind_group(device, &uniform, &ops_texture, &surface);
+        let image_texture = image_texture(device, 1, 1);
+        let bind_group = self.bind_group(device, &uniform, &ops_texture, &surface, &image_texture);
         let design = shown.design;
         let view = View {
             scale: 1.0,
@@ -184,6 +194,9 @@ impl ExactRenderer {
             written: 0,
             surface_params: SurfaceParams::new(design),
             surface,
+            image_texture,
+            image_uploaded: None,
+            live_image: None,
             textured: false,
             v3: false,
             uniform,
@@ -254,12 +267,24 @@ impl ExactRenderer {
                 &prepared.uniform,
                 &prepared.ops_texture,
                 &prepared.surface,
+                &prepared.image_texture,
             );
             start = 0;
         }
         write_records(queue, prepared, start..n);
         let design = shown.design;
-        let surface_params = SurfaceParams::new(design);
+        let mut surface_params = SurfaceParams::new(design);
+        let image = match &prepared.live_image {
+            Some((pixels, fit)) => Some((pixels.clone(), *fit)),
+            None => design
+                .background_image
+                .as_ref()
+                .map(|b| (b.pixels_arc().clone(), b.fit)),
+        };
+        if let Some((pixels, fit)) = &image {
+            surface_params.set_image(pixels, *fit, design);
+        }
+        self.upload_image(device, queue, prepared, image.map(|(pixels, _)| pixels));
         if surface_params != prepared.surface_params {
             queue.write_buffer(&prepared.surface, 0, bytemuck::bytes_of(&surface_params));
             prepared.surface_params = surface_params;
@@ -273,15 +298,81 @@ impl ExactRenderer {
         Ok(())
     }
 
-    /// Bind group 0 over a design's buffers and op texture.
+    /// Shows `pixels` (a live video frame, laid on the sheet by `fit`) as the
+    /// background of `prepared` instead of the design's own, or the design's own again
+    /// with `None`; `shown` is what `prepared` holds. Uploads the pixels (a new texture
+    /// only when their size changes).
+    pub fn set_live_image(
+        &self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        prepared: &mut PreparedDesign,
+        shown: DesignPrefix<'_>,
+        live: Option<(Arc<ImagePixels>, ImageFit)>,
+    ) -> Result<(), GpuError> {
+        prepared.live_image = live;
+        self.update(device, queue, prepared, shown)
+    }
+
+    /// Puts `image` (or nothing) into `prepared`'s image texture, re-binding when the
+    /// texture is replaced.
+    fn upload_image(
+        &self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        prepared: &mut PreparedDesign,
+        image: Option<Arc<ImagePixels>>,
+    ) {
+        let same = match (&image, &prepared.image_uploaded) {
+            (Some(a), Some(b)) => Arc::ptr_eq(a, b),
+            (None, None) => true,
+            _ => false,
+        };
+        if same {
+            return;
+        }
+        let (w, h) = image.as_ref().map_or((1, 1), |p| (p.width, p.height));
+        let size = prepared.image_texture.size();
+        if (size.width, size.height) != (w, h) {
+            prepared.image_texture = image_texture(device, w, h);
+            prepared.bind_group = self.bind_group(
+                device,
+                &prepared.uniform,
+                &prepared.ops_texture,
+                &prepared.surface,
+                &prepared.image_texture,
+            );
+        }
+        if let Some(p) = &image {
+            queue.write_texture(
+                prepared.image_texture.as_image_copy(),
+                &p.rgba,
+                wgpu::TexelCopyBufferLayout {
+                    offset: 0,
+                    bytes_per_row: Some(4 * w),
+                    rows_per_image: Some(h),
+                },
+                wgpu::Extent3d {
+                    width: w,
+                    height: h,
+                    depth_or_array_layers: 1,
+                },
+            );
+        }
+        prepared.image_uploaded = image;
+    }
+
+    /// Bind group 0 over a design's buffers, op texture and image texture.
     fn bind_group(
         &self,
         device: &wgpu::Device,
         uniform: &wgpu::Buffer,
         ops: &wgpu::Texture,
         surface: &wgpu::Buffer,
+        image: &wgpu::Texture,
     ) -> wgpu::BindGroup {
         let view = ops.create_view(&wgpu::TextureViewDescriptor::default());
+        let image_view = image.create_view(&wgpu::TextureViewDescriptor::default());
         device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("marbling render"),
             layout: &self.layout,
@@ -297,6 +388,10 @@ impl ExactRenderer {
                 wgpu::BindGroupEntry {
                     binding: 2,
                     resource: surface.as_entire_binding(),
+                },
+                wgpu::BindGroupEntry {
+                    binding: 3,
+                    resource: wgpu::BindingResource::TextureView(&image_view),
                 },
             ],
         })
@@ -347,6 +442,24 @@ fn op_texture(device: &wgpu::Device, layout: OpLayout) -> wgpu::Texture {
         sample_count: 1,
         dimension: wgpu::TextureDimension::D2,
         format: wgpu::TextureFormat::Rgba32Float,
+        usage: wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST,
+        view_formats: &[],
+    })
+}
+
+/// An image-background texture of `w`×`h` sRGB pixels.
+fn image_texture(device: &wgpu::Device, w: u32, h: u32) -> wgpu::Texture {
+    device.create_texture(&wgpu::TextureDescriptor {
+        label: Some("marbling background image"),
+        size: wgpu::Extent3d {
+            width: w,
+            height: h,
+            depth_or_array_layers: 1,
+        },
+        mip_level_count: 1,
+        sample_count: 1,
+        dimension: wgpu::TextureDimension::D2,
+        format: wgpu::TextureFormat::Rgba8UnormSrgb,
         usage: wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST,
         view_formats: &[],
     })

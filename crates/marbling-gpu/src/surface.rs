@@ -3,7 +3,8 @@
 //! checked against naga by tests/it/layout.rs.
 
 use marbling_core::surface::MAX_PALETTE_STOPS;
-use marbling_core::{Design, GrainKind, NoiseLayer};
+use marbling_core::image_background::{ImagePixels, fit_map};
+use marbling_core::{Design, GrainKind, ImageFit, NoiseLayer};
 use marbling_noise::wgsl::NoiseGpu;
 
 /// `SurfaceParams::flags` bit: the background is noise.
@@ -12,6 +13,9 @@ pub const SURFACE_BACKGROUND: u32 = 1;
 pub const SURFACE_PIGMENT: u32 = 2;
 /// `SurfaceParams::flags` bit: paper grain.
 pub const SURFACE_PAPER: u32 = 4;
+/// `SurfaceParams::flags` bit (with [`SURFACE_BACKGROUND`]): the background is the
+/// image bound at binding 3, not noise.
+pub const SURFACE_IMAGE: u32 = 8;
 /// Index in [`SurfaceParams::layers`] of the background noise.
 pub const LAYER_BACKGROUND: usize = 0;
 /// Index in [`SurfaceParams::layers`] of pigment grain.
@@ -56,6 +60,13 @@ pub struct SurfaceParams {
     pub noises: [NoiseGpu; 3],
     /// The transfer and strength of each of `noises`.
     pub layers: [LayerParams; 3],
+    /// Image background ([`SURFACE_IMAGE`]): image pixel u = (x − [0])·[2],
+    /// v = (y − [1])·[3] at design point (x, y) (`marbling_core::image_background::ImageMap`).
+    pub image_map: [f32; 4],
+    /// Image width, height (pixels), 1 when letterboxed (contain) else 0, unused.
+    pub image_size: [f32; 4],
+    /// The paper around a letterboxed image, linear r, g, b (w unused).
+    pub paper: [f32; 4],
 }
 
 fn layer(noise: &NoiseLayer, strength: f64) -> (NoiseGpu, LayerParams) {
@@ -86,7 +97,13 @@ impl SurfaceParams {
             stops: [[0.0; 4]; MAX_PALETTE_STOPS],
             noises: [NoiseGpu::default(); 3],
             layers: [LayerParams::default(); 3],
+            image_map: [0.0; 4],
+            image_size: [0.0; 4],
+            paper: [0.0; 4],
         };
+        if let Some(img) = &design.background_image {
+            p.set_image(img.pixels(), img.fit, design);
+        }
         if let Some(bg) = &design.background_noise {
             p.flags |= SURFACE_BACKGROUND;
             (p.noises[LAYER_BACKGROUND], p.layers[LAYER_BACKGROUND]) = layer(&bg.noise, 0.0);
@@ -110,5 +127,30 @@ impl SurfaceParams {
             }
         }
         p
+    }
+
+    /// Makes the background `pixels` laid on `design`'s sheet by `fit` (the design's
+    /// own image, or a live video frame standing in for it).
+    pub fn set_image(&mut self, pixels: &ImagePixels, fit: ImageFit, design: &Design) {
+        let map = fit_map(
+            fit,
+            (pixels.width, pixels.height),
+            (design.width, design.height),
+        );
+        self.flags |= SURFACE_BACKGROUND | SURFACE_IMAGE;
+        self.image_map = [
+            map.origin.0 as f32,
+            map.origin.1 as f32,
+            map.scale.0 as f32,
+            map.scale.1 as f32,
+        ];
+        self.image_size = [
+            pixels.width as f32,
+            pixels.height as f32,
+            if map.letterbox { 1.0 } else { 0.0 },
+            0.0,
+        ];
+        let [r, g, b] = design.background.to_linear();
+        self.paper = [r, g, b, 1.0];
     }
 }

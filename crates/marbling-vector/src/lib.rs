@@ -79,7 +79,7 @@
 //!    the growth where newer paint covers it.
 //!
 //! # Painter's order
-//! The background rectangle (and a noise background's raster underlay) first, then one
+//! The background rectangle (and a noise or image background's raster underlay) first, then one
 //! filled path per drop or spray in op order whichever method drew it (`data-method`
 //! `forward` or `contour`), nonzero rule, then the dense patch, then grain multiplied
 //! over everything ([`surface_layers`]). A forward outline encloses its whole region

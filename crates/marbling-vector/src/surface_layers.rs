@@ -42,27 +42,24 @@ impl RasterLayer {
     }
 }
 
-/// The underlay (designs with a noise background) and grain layer (designs with
+/// The underlay (designs with a noise or image background) and grain layer (designs with
 /// overlays) of `design` at `scale` output pixels per design pixel; `None` for what it
 /// lacks.
 pub fn surface_layers(
     design: &Design,
     scale: f64,
 ) -> Result<(Option<RasterLayer>, Option<RasterLayer>), VectorError> {
-    let underlay = match design.background_noise {
-        Some(_) => {
-            let mut bare = design.clone();
-            bare.overlays.clear();
-            let image = render(
-                &bare,
-                &RenderOptions {
-                    scale,
-                    antialias: Antialias::Rgss,
-                },
-            )?;
-            Some(RasterLayer::new(image, Channels::Rgb)?)
-        }
-        None => None,
+    let textured = design.background_noise.is_some() || design.background_image.is_some();
+    let underlay = if textured {
+        let mut bare = design.clone();
+        bare.overlays.clear();
+        let opts = RenderOptions {
+            scale,
+            antialias: Antialias::Rgss,
+        };
+        Some(RasterLayer::new(render(&bare, &opts)?, Channels::Rgb)?)
+    } else {
+        None
     };
     let grain = if design.overlays.is_empty() {
         None

@@ -79,7 +79,7 @@ impl Reader {
         self.pair(path, obj, name).map(Vec2::from)
     }
 
-    fn color(&mut self, path: &str, obj: &Map<String, Value>, name: &str) -> Option<Rgb8> {
+    pub(super) fn color(&mut self, path: &str, obj: &Map<String, Value>, name: &str) -> Option<Rgb8> {
         let v = self.field(path, obj, name)?;
         let parsed = v.as_str().map(str::parse::<Rgb8>);
         match parsed {
@@ -381,14 +381,17 @@ impl Reader {
             Some(Value::Object(_)) if v1 => {
                 self.push(
                     "background",
-                    "a noise background needs \"version\": 2; version 1 takes a colour \"#rrggbb\"",
+                    "a noise or image background needs \"version\": 2; version 1 takes a colour \"#rrggbb\"",
                 );
                 None
             }
-            Some(b @ Value::Object(_)) => {
-                self.noise_background(b).map(|n| (n.mid_color(), Some(n)))
-            }
-            Some(_) => self.color("", obj, "background").map(|c| (c, None)),
+            Some(b @ Value::Object(m)) if m.contains_key("image") => self
+                .image_background(b)
+                .map(|(paper, image)| (paper, None, Some(image))),
+            Some(b @ Value::Object(_)) => self
+                .noise_background(b)
+                .map(|n| (n.mid_color(), Some(n), None)),
+            Some(_) => self.color("", obj, "background").map(|c| (c, None, None)),
             None => None,
         };
         let overlays = match obj.get("overlays") {
@@ -449,12 +452,13 @@ impl Reader {
                 );
             }
         }
-        let (background, background_noise) = background?;
+        let (background, background_noise, background_image) = background?;
         Some(Design {
             width: width?,
             height: height?,
             background,
             background_noise,
+            background_image,
             overlays: overlays?,
             ops: ops?,
             gestures: gestures?,

@@ -4,6 +4,7 @@
 
 use super::read::Reader;
 use crate::Rgb8;
+use crate::image_background::{IMAGE_FITS, ImageBackground, ImageFit};
 use crate::surface::{GrainKind, NoiseBackground, NoiseLayer, Overlay, Palette};
 use marbling_json::short;
 use serde_json::Value;
@@ -64,6 +65,53 @@ impl Reader {
         let noise = self.noise("background.noise", obj.get("noise"));
         let palette = self.palette("background.palette", obj.get("palette"));
         Some(NoiseBackground::new(noise?, palette?))
+    }
+
+    /// `{"image": DATA-URI, "fit": …, "paper": "#rrggbb"}`: the paper colour (white
+    /// when absent) and the picture.
+    pub(super) fn image_background(&mut self, v: &Value) -> Option<(Rgb8, ImageBackground)> {
+        let obj = self.object("background", v, &["image", "fit", "paper"])?;
+        let fit = match obj.get("fit") {
+            None => Some(ImageFit::default()),
+            Some(Value::String(s)) if ImageFit::from_name(s).is_some() => ImageFit::from_name(s),
+            Some(other) => {
+                self.push(
+                    "background.fit",
+                    format!(
+                        "unknown fit {}; expected one of {}",
+                        short(other),
+                        IMAGE_FITS.join(", ")
+                    ),
+                );
+                None
+            }
+        };
+        let paper = match obj.get("paper") {
+            None => Some(Rgb8::WHITE),
+            Some(_) => self.color("background", obj, "paper"),
+        };
+        let image = match obj.get("image") {
+            Some(Value::String(uri)) => {
+                match ImageBackground::from_data_uri(uri, fit.unwrap_or_default()) {
+                    Ok(img) => Some(img),
+                    Err(e) => {
+                        self.push("background.image", e.to_string());
+                        None
+                    }
+                }
+            }
+            other => {
+                self.push(
+                    "background.image",
+                    format!(
+                        "must be a data: URI string, got {}",
+                        other.map_or("nothing".to_owned(), short)
+                    ),
+                );
+                None
+            }
+        };
+        Some((paper?, image?.with_fit(fit?)))
     }
 
     pub(super) fn overlay(&mut self, i: usize, v: &Value) -> Option<Overlay> {

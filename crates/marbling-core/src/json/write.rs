@@ -2,7 +2,7 @@
 
 use crate::design::CURRENT_VERSION;
 use crate::surface::{Overlay, Palette};
-use crate::{Design, Drop, Op, Radii, Spray};
+use crate::{Design, Drop, Op, Radii, Rgb8, Spray};
 use kurbo::Point;
 use serde_json::{Map, Value, json};
 
@@ -147,6 +147,13 @@ impl Design {
     }
 
     fn background_value(&self) -> Value {
+        if let Some(img) = &self.background_image {
+            let mut v = json!({"image": img.source(), "fit": img.fit.name()});
+            if self.background != Rgb8::WHITE {
+                v["paper"] = json!(self.background.to_string());
+            }
+            return v;
+        }
         match &self.background_noise {
             None => json!(self.background.to_string()),
             Some(n) => {

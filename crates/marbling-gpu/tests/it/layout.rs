@@ -92,6 +92,9 @@ fn surface_params_match_wgsl() {
             ("stops", offset_of!(SurfaceParams, stops)),
             ("noises", offset_of!(SurfaceParams, noises)),
             ("layers", offset_of!(SurfaceParams, layers)),
+            ("image_map", offset_of!(SurfaceParams, image_map)),
+            ("image_size", offset_of!(SurfaceParams, image_size)),
+            ("paper", offset_of!(SurfaceParams, paper)),
         ],
         size_of::<SurfaceParams>(),
     );
