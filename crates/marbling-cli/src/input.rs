@@ -1,7 +1,7 @@
 //! Reading a design from a file or standard input, with one-line error messages.
 
 use anyhow::{Context, Result, bail};
-use marbling_core::{Design, DesignError};
+use marbling_core::{Design, DesignError, ImageBackground, ImageFit};
 use std::io::Read;
 
 /// The text of `path`, or of standard input when `path` is `-`.
@@ -23,9 +23,12 @@ pub fn display_name(path: &str) -> &str {
 }
 
 /// Reads and validates a design; every problem is reported, prefixed with the input name.
+/// An image background may name a picture file relative to the design file (or to the
+/// working directory for standard input); it is read and embedded as a `data:` URI.
 pub fn read_design(path: &str) -> Result<Design> {
     let text = read_text(path)?;
     let name = display_name(path);
+    let text = embed_image_file(path, text)?;
     match Design::from_json(&text) {
         Ok(d) => Ok(d),
         Err(DesignError::Syntax {
@@ -44,4 +47,36 @@ pub fn read_design(path: &str) -> Result<Design> {
             )
         }
     }
+}
+
+/// `text` with a `background.image` that names a file replaced by the file's `data:`
+/// URI (unchanged when it holds none, or is not JSON: the reader reports that).
+fn embed_image_file(path: &str, text: String) -> Result<String> {
+    let Ok(mut v) = serde_json::from_str::<serde_json::Value>(&text) else {
+        return Ok(text);
+    };
+    let Some(file) = v
+        .pointer("/background/image")
+        .and_then(serde_json::Value::as_str)
+        .filter(|s| !s.starts_with("data:"))
+        .map(str::to_owned)
+    else {
+        return Ok(text);
+    };
+    let name = display_name(path);
+    let base = if path == "-" {
+        std::path::PathBuf::new()
+    } else {
+        std::path::Path::new(path)
+            .parent()
+            .map(std::path::Path::to_path_buf)
+            .unwrap_or_default()
+    };
+    let full = base.join(&file);
+    let bytes = std::fs::read(&full)
+        .with_context(|| format!("{name}: background.image: cannot read '{}'", full.display()))?;
+    let image = ImageBackground::from_file_bytes(&bytes, ImageFit::default())
+        .map_err(|e| anyhow::anyhow!("{name}: background.image: '{file}': {e}"))?;
+    v["background"]["image"] = serde_json::Value::String(image.source().to_owned());
+    Ok(v.to_string())
 }

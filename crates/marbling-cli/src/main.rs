@@ -11,6 +11,7 @@ mod noise;
 mod pattern;
 mod random;
 mod render;
+mod render_3d;
 mod size;
 mod svg;
 mod validate;
@@ -30,6 +31,9 @@ struct Cli {
 enum Command {
     /// Render a design to a PNG exactly (every pixel walks back through every op).
     Render(render::RenderArgs),
+    /// Render a design on a 3D object (sphere, vase, cylinder, book, plane), exactly.
+    #[command(name = "render-3d")]
+    Render3d(render_3d::Render3dArgs),
     /// Check a design and summarise its ops, or list every error with its JSON path.
     Validate(validate::ValidateArgs),
     /// Make a share link (`…#d=…`) for a design, or decode one back to JSON.
@@ -54,6 +58,7 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
         Command::Render(args) => render::run(&args),
+        Command::Render3d(args) => render_3d::run(&args),
         Command::Validate(args) => validate::run(&args),
         Command::Bench(args) => bench::run(&args),
         Command::Link(args) => link::run(&args),

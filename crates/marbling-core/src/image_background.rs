@@ -384,4 +384,3 @@ fn data_uri_bytes(uri: &str) -> Result<Vec<u8>, ImageError> {
         .decode(clean)
         .map_err(|e| ImageError::Decode(format!("bad base64: {e}")))
 }
-

@@ -21,6 +21,7 @@ pub mod making;
 mod op_kind;
 mod ops;
 pub mod patterns;
+pub mod point_color;
 mod recipe;
 mod render;
 pub mod sampling;
@@ -28,6 +29,7 @@ mod share;
 pub mod surface;
 pub mod synth;
 mod validate;
+pub mod view3d;
 mod walk;
 
 pub use color::Rgb8;

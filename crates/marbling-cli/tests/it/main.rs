@@ -8,3 +8,4 @@ mod making_cli;
 mod noise_cli;
 mod svg_cli;
 mod v2_cli;
+mod view3d_cli;

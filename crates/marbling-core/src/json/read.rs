@@ -79,7 +79,12 @@ impl Reader {
         self.pair(path, obj, name).map(Vec2::from)
     }
 
-    pub(super) fn color(&mut self, path: &str, obj: &Map<String, Value>, name: &str) -> Option<Rgb8> {
+    pub(super) fn color(
+        &mut self,
+        path: &str,
+        obj: &Map<String, Value>,
+        name: &str,
+    ) -> Option<Rgb8> {
         let v = self.field(path, obj, name)?;
         let parsed = v.as_str().map(str::parse::<Rgb8>);
         match parsed {

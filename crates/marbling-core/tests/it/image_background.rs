@@ -203,7 +203,8 @@ fn image_designs_round_trip_through_json() {
 }
 
 fn read_error(background: &str) -> String {
-    let text = format!(r#"{{"version":2,"width":10,"height":10,"background":{background},"ops":[]}}"#);
+    let text =
+        format!(r#"{{"version":2,"width":10,"height":10,"background":{background},"ops":[]}}"#);
     Design::from_json(&text)
         .expect_err("must be refused")
         .to_string()

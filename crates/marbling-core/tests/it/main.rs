@@ -12,3 +12,4 @@ mod render_reference;
 mod snapshots;
 mod snapshots_v2;
 mod snapshots_v3;
+mod view3d;

@@ -1,0 +1,123 @@
+//! `marbling render-3d` and image backgrounds from the outside: the plane facing the
+//! camera is the 2D render, a picture named relative to the design file is embedded,
+//! and bad arguments or pictures fail with a message and a non-zero exit.
+
+use crate::common::marbling;
+use marbling_core::RgbaImage;
+use marbling_core::compare::compare;
+use marbling_core::synth::{Mix, random_design, test_photo};
+use std::path::{Path, PathBuf};
+
+fn workdir(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("marbling-3d-cli-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    dir
+}
+
+fn path(dir: &Path, name: &str) -> String {
+    dir.join(name).to_string_lossy().into_owned()
+}
+
+fn read_png(p: &str) -> RgbaImage {
+    RgbaImage::from_png(&std::fs::read(p).expect("written")).expect("png")
+}
+
+fn ok(args: &[&str]) -> String {
+    let o = marbling(args, None);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    String::from_utf8_lossy(&o.stdout).into_owned()
+}
+
+#[test]
+fn render_3d_plane_facing_the_camera_equals_render() {
+    let dir = workdir("plane");
+    // A picture background too, named relative to the design file.
+    std::fs::create_dir_all(dir.join("pictures")).expect("dir");
+    std::fs::write(
+        dir.join("pictures/photo.png"),
+        test_photo(2, 64, 40).to_png().expect("png"),
+    )
+    .expect("photo");
+    let d = random_design(17, 160, 120, 60, Mix::Mixed);
+    let mut v = d.to_value();
+    v["version"] = 2.into();
+    v["background"] = serde_json::json!({"image": "pictures/photo.png", "fit": "cover"});
+    let design = path(&dir, "design.json");
+    std::fs::write(&design, v.to_string()).expect("design");
+    let (flat, plane) = (path(&dir, "flat.png"), path(&dir, "plane.png"));
+    ok(&["render", &design, "-o", &flat]);
+    let summary = ok(&[
+        "render-3d",
+        &design,
+        "-o",
+        &plane,
+        "--surface",
+        "plane",
+        "--size",
+        "160x120",
+    ]);
+    assert!(summary.contains("exact design on a plane"), "{summary}");
+    let r = compare(&read_png(&flat), &read_png(&plane), 8).expect("same size");
+    println!("render-3d plane vs render: {r:?}");
+    assert!(r.fraction() <= 0.01, "{r:?}");
+    // The comparator sees a camera turned by 3°.
+    let turned = path(&dir, "turned.png");
+    ok(&[
+        "render-3d",
+        &design,
+        "-o",
+        &turned,
+        "--surface",
+        "plane",
+        "--size",
+        "160x120",
+        "--yaw",
+        "3",
+    ]);
+    let r = compare(&read_png(&flat), &read_png(&turned), 8).expect("same size");
+    assert!(r.fraction() > 0.05, "a turned plane should differ: {r:?}");
+}
+
+#[test]
+fn render_3d_and_image_errors_name_the_problem() {
+    let dir = workdir("errors");
+    let design = path(&dir, "design.json");
+    std::fs::write(
+        &design,
+        r##"{"version":2,"width":50,"height":40,"background":{"image":"missing.jpg"},"ops":[]}"##,
+    )
+    .expect("design");
+    let out = path(&dir, "out.png");
+    let o = marbling(&["render", &design, "-o", &out], None);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(!o.status.success());
+    assert!(
+        err.contains("background.image") && err.contains("missing.jpg"),
+        "{err}"
+    );
+    std::fs::write(dir.join("missing.jpg"), b"\xff\xd8\xff not really a jpeg").expect("bad");
+    let o = marbling(&["render", &design, "-o", &out], None);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(!o.status.success());
+    assert!(err.contains("cannot decode"), "{err}");
+    std::fs::write(
+        &design,
+        r##"{"version":1,"width":50,"height":40,"background":"#ffffff","ops":[]}"##,
+    )
+    .expect("design");
+    for (args, expected) in [
+        (vec!["--surface", "teapot"], "unknown surface"),
+        (vec!["--zoom", "0"], "zoom"),
+        (vec!["--look-at", "60,10"], "outside the 50×40 design"),
+        (vec!["--look-at", "ten,10"], "design point like"),
+        (vec!["--size", "0x5"], "expected a size"),
+    ] {
+        let mut all = vec!["render-3d", design.as_str(), "-o", out.as_str()];
+        all.extend(args.iter().copied());
+        let o = marbling(&all, None);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert!(!o.status.success(), "{args:?}");
+        assert!(err.contains(expected), "{args:?}: {err}");
+    }
+}
