@@ -1,6 +1,7 @@
 //! `marbling render-3d`: the design on a 3D object, every sample walked back through
 //! every op (or, with `--texture`, sampled from a baked raster for comparison).
 
+use crate::backend::{Backend, gpu_renderer};
 use crate::input::read_design;
 use crate::size::Size;
 use anyhow::{Context, Result, bail};
@@ -43,6 +44,9 @@ pub struct Render3dArgs {
     /// walking every sample: the blur of texture mapping, for comparison.
     #[arg(long, value_name = "N")]
     texture: Option<u32>,
+    /// Renderer: cpu (the exact f64 reference) or gpu (the app's WGSL, f32).
+    #[arg(long, value_enum, default_value_t = Backend::Cpu)]
+    backend: Backend,
 }
 
 fn parse_shape(s: &str) -> Result<Shape, String> {
@@ -85,12 +89,16 @@ pub fn run(args: &Render3dArgs) -> Result<()> {
     let mut out = std::fs::File::create(&args.output)
         .with_context(|| format!("cannot write '{}'", args.output))?;
     let start = Instant::now();
-    let image = render_3d(&design, &view)?;
+    let image = match args.backend {
+        Backend::Cpu => render_3d(&design, &view)?,
+        Backend::Gpu => gpu_renderer()?.render_3d(&design, &view)?,
+        Backend::Vector => bail!("render-3d draws with --backend cpu or gpu"),
+    };
     let elapsed = start.elapsed();
     std::io::Write::write_all(&mut out, &image.to_png()?)
         .with_context(|| format!("cannot write '{}'", args.output))?;
     println!(
-        "{}: {} on a {}, {} px, zoom {}, {} ops, aa {}, {}, rendered in {:.3} s",
+        "{}: {} on a {}, {} px, zoom {}, {} ops, aa {}, {}, backend {}, rendered in {:.3} s",
         args.output,
         if args.texture.is_some() {
             "texture-mapped design"
@@ -106,6 +114,7 @@ pub fn run(args: &Render3dArgs) -> Result<()> {
             Some(n) => format!("baked at {n} px"),
             None => "every sample walked".to_owned(),
         },
+        args.backend.name(),
         elapsed.as_secs_f64()
     );
     Ok(())

@@ -9,9 +9,9 @@ use crate::encode::{GpuOp, OpLayout, TEXELS_PER_OP, records};
 use crate::params::RenderParams;
 use crate::shaders::{ExactVariant, RENDER_PLAIN_WGSL};
 use crate::surface::SurfaceParams;
-use marbling_core::{Antialias, Design, Op};
 use marbling_core::ImageFit;
 use marbling_core::image_background::ImagePixels;
+use marbling_core::{Antialias, Design, Op};
 use std::sync::{Arc, OnceLock};
 
 /// The exact render pipeline for one target format, in the four [`ExactVariant`]s:

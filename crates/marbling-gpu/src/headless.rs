@@ -134,6 +134,59 @@ impl GpuRenderer {
             .map_err(|e| GpuError::Wgpu(e.to_string()))
     }
 
+    /// Renders the 3D view of `design` (the twin of `marbling_core::view3d::render_3d`,
+    /// in f32, on the fragment path); the frame must fit one texture.
+    pub fn render_3d(
+        &self,
+        design: &Design,
+        view: &marbling_core::view3d::View3d,
+    ) -> Result<RgbaImage, GpuError> {
+        let side = self.ctx.max_texture_side();
+        if view.width > side || view.height > side {
+            return Err(GpuError::Wgpu(format!(
+                "a 3D frame of {}×{} is larger than this device's textures ({side})",
+                view.width, view.height
+            )));
+        }
+        let mut prepared = self.prepare(design)?;
+        let mut renderer = crate::View3dRenderer::new(&self.ctx.device, &self.exact);
+        let mut image = RgbaImage::filled(view.width, view.height, [0, 0, 0, 255]);
+        self.ctx.checked(|| -> Result<(), GpuError> {
+            let (device, queue) = (&self.ctx.device, &self.ctx.queue);
+            renderer.set_view(
+                device,
+                queue,
+                &self.exact,
+                &mut prepared,
+                design,
+                view,
+                false,
+            );
+            let target = self.target(view.width, view.height);
+            let mut encoder =
+                device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: None });
+            {
+                let mut pass = target.begin_pass(&mut encoder);
+                renderer.draw(device, &mut pass, &prepared);
+            }
+            let (buffer, padded) = copy_to_buffer(device, &mut encoder, &target);
+            queue.submit([encoder.finish()]);
+            let row_bytes = view.width as usize * 4;
+            read_buffer(
+                &self.ctx,
+                &buffer,
+                padded,
+                view.width,
+                view.height,
+                |y, bytes| {
+                    let start = y as usize * row_bytes;
+                    image.pixels[start..start + bytes.len()].copy_from_slice(bytes);
+                },
+            )
+        })??;
+        Ok(image)
+    }
+
     /// Renders `design` exactly (same output size, sample positions and colour handling
     /// as `marbling_core::render`, in f32).
     pub fn render(&self, design: &Design, opts: &RenderOptions) -> Result<RgbaImage, GpuError> {

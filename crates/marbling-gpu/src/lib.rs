@@ -53,6 +53,8 @@
 //! - [`PreviewRenderer`] + [`PreviewCache`]: live-editing frames (a cached committed
 //!   design plus one pending op), an approximation shown only while dragging; one
 //!   pipeline per [`PreviewKind`] of pending op.
+//! - [`View3dRenderer`]: the design on a 3D object (sphere, vase, cylinder, book,
+//!   plane), every sample's design point walked exactly (`marbling_core::view3d`).
 //! - [`Presenter`] + [`PresentSource`]: a rendered texture shown 1:1 within the scissor
 //!   rectangle of another pass (the app's canvas and cached panels).
 
@@ -74,6 +76,7 @@ pub mod shaders;
 pub mod surface;
 mod target;
 mod tiles;
+pub mod view3d;
 
 pub use compute::ComputeExact;
 pub use context::GpuContext;
@@ -89,5 +92,6 @@ pub use preview_kind::PreviewKind;
 pub use target::read_buffer;
 pub use target::{RenderTarget, copy_to_buffer};
 pub use tiles::tile_grid;
+pub use view3d::{View3dParams, View3dRenderer};
 /// The wgpu this crate is built on (so callers use the same version).
 pub use wgpu;

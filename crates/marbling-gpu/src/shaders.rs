@@ -167,6 +167,12 @@ pub fn all() -> Vec<(String, String)> {
         }
     }
     out.push(("present".to_owned(), PRESENT_WGSL.to_owned()));
+    for v in ExactVariant::ALL {
+        out.push((
+            format!("view3d-{}", v.name()),
+            crate::view3d::view3d_wgsl(v),
+        ));
+    }
     out
 }
 

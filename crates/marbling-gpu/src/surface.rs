@@ -2,8 +2,8 @@
 //! read by `shaders/surface.wgsl`: `#[repr(C)]` + bytemuck mirrors of the WGSL structs,
 //! checked against naga by tests/it/layout.rs.
 
-use marbling_core::surface::MAX_PALETTE_STOPS;
 use marbling_core::image_background::{ImagePixels, fit_map};
+use marbling_core::surface::MAX_PALETTE_STOPS;
 use marbling_core::{Design, GrainKind, ImageFit, NoiseLayer};
 use marbling_noise::wgsl::NoiseGpu;
 

@@ -177,3 +177,28 @@ fn struct_depth_counts_nested_structs_through_arrays() {
     assert_eq!(depth("C"), 3);
     assert_eq!(depth("E"), 5);
 }
+
+#[test]
+fn view3d_params_match_wgsl() {
+    use marbling_gpu::View3dParams;
+    let source = marbling_gpu::view3d::view3d_wgsl(marbling_gpu::shaders::ExactVariant::ALL[0]);
+    check(
+        &source,
+        "View3dParams",
+        &[
+            ("origin", offset_of!(View3dParams, origin)),
+            ("forward", offset_of!(View3dParams, forward)),
+            ("right", offset_of!(View3dParams, right)),
+            ("up", offset_of!(View3dParams, up)),
+            ("lens", offset_of!(View3dParams, lens)),
+            ("frame", offset_of!(View3dParams, frame)),
+            ("paper", offset_of!(View3dParams, paper)),
+            ("pages", offset_of!(View3dParams, pages)),
+            ("backdrop_top", offset_of!(View3dParams, backdrop_top)),
+            ("backdrop_bottom", offset_of!(View3dParams, backdrop_bottom)),
+            ("shading", offset_of!(View3dParams, shading)),
+            ("shape", offset_of!(View3dParams, shape)),
+        ],
+        size_of::<View3dParams>(),
+    );
+}

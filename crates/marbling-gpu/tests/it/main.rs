@@ -12,4 +12,5 @@ mod preview;
 mod shaders_validate;
 mod snapshot;
 mod tiles;
+mod view3d;
 mod webgl2_limits;

@@ -21,6 +21,8 @@ fn every_shader_parses_and_validates() {
             &["vs_main", "fs_main", "fs_one_sample"]
         } else if name == "present" {
             &["vs_main", "fs_copy", "fs_decode"]
+        } else if name.starts_with("view3d") {
+            &["vs_main", "fs_main", "fs_view3d"]
         } else {
             &["vs_main", "fs_main"]
         };

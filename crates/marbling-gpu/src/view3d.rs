@@ -1,0 +1,255 @@
+//! The 3D view on the GPU (shaders/view3d.wgsl, appended to the exact renderer's
+//! module): the twin of `marbling_core::view3d`, every sample's ray meeting the object
+//! and its design point walked back through every op in the fragment shader. Bind
+//! group 0 is the design's ([`PreparedDesign`]), group 1 the camera and the optional
+//! baked texture of the "as a texture" comparison.
+
+use crate::bindings;
+use crate::exact::{ExactRenderer, PreparedDesign, View};
+use crate::shaders::ExactVariant;
+use crate::target::RenderTarget;
+use marbling_core::view3d::{
+    AMBIENT, BACKDROP, BOOK_DEPTH, INSIDE_SHADE, PAGES, SPINE_SHADE, VASE_BISECTIONS, VASE_BOUND,
+    VASE_STEPS, Vec3, View3d,
+};
+use marbling_core::{Design, Rgb8};
+use std::sync::OnceLock;
+
+/// `shaders/view3d.wgsl`.
+pub const VIEW3D: &str = include_str!("../shaders/view3d.wgsl");
+
+/// The 3D module of an exact-renderer variant.
+pub fn view3d_wgsl(variant: ExactVariant) -> String {
+    [variant.render_wgsl(), VIEW3D.to_owned()].join("\n")
+}
+
+/// The camera and object of one frame. Keep in sync with `struct View3dParams` in
+/// shaders/view3d.wgsl (checked by tests/it/layout.rs).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
+pub struct View3dParams {
+    /// Camera position (w unused).
+    pub origin: [f32; 4],
+    /// Unit forward.
+    pub forward: [f32; 4],
+    /// Unit right.
+    pub right: [f32; 4],
+    /// Unit up.
+    pub up: [f32; 4],
+    /// tan(fov/2), aspect W/H, shape code, source (0 exact; 1 baked, linear on load;
+    /// 2 baked, sRGB-encoded).
+    pub lens: [f32; 4],
+    /// Frame width, height (output pixels), design width, height.
+    pub frame: [f32; 4],
+    /// Linear paper colour.
+    pub paper: [f32; 4],
+    /// Linear pages colour.
+    pub pages: [f32; 4],
+    /// Linear backdrop colour at the top.
+    pub backdrop_top: [f32; 4],
+    /// Linear backdrop colour at the bottom.
+    pub backdrop_bottom: [f32; 4],
+    /// Ambient share, spine shade, inside shade, book half-depth.
+    pub shading: [f32; 4],
+    /// Vase bound radius, march steps, bisection steps, cylinder half-height.
+    pub shape: [f32; 4],
+}
+
+fn v4(v: Vec3) -> [f32; 4] {
+    [v.x as f32, v.y as f32, v.z as f32, 0.0]
+}
+
+fn rgb4(c: Rgb8) -> [f32; 4] {
+    let [r, g, b] = c.to_linear();
+    [r, g, b, 1.0]
+}
+
+impl View3dParams {
+    /// The parameters of `view` of `design`; `source` as in [`View3dParams::lens`].
+    pub fn new(design: &Design, view: &View3d, source: u32) -> Self {
+        let rig = view.rig(design);
+        let object = view.object(design);
+        Self {
+            origin: v4(rig.origin),
+            forward: v4(rig.forward),
+            right: v4(rig.right),
+            up: v4(rig.up),
+            lens: [
+                rig.tan_half as f32,
+                object.aspect as f32,
+                view.shape.code() as f32,
+                source as f32,
+            ],
+            frame: [
+                view.width as f32,
+                view.height as f32,
+                design.width as f32,
+                design.height as f32,
+            ],
+            paper: rgb4(design.background),
+            pages: rgb4(Rgb8::new(PAGES[0], PAGES[1], PAGES[2])),
+            backdrop_top: rgb4(BACKDROP[0]),
+            backdrop_bottom: rgb4(BACKDROP[1]),
+            shading: [AMBIENT as f32, SPINE_SHADE, INSIDE_SHADE, BOOK_DEPTH as f32],
+            shape: [
+                VASE_BOUND as f32,
+                VASE_STEPS as f32,
+                VASE_BISECTIONS as f32,
+                object.cylinder_half_height() as f32,
+            ],
+        }
+    }
+}
+
+/// Draws 3D views of prepared designs into targets of the exact renderer's format.
+#[derive(Debug)]
+pub struct View3dRenderer {
+    layout: wgpu::BindGroupLayout,
+    pipeline_layout: wgpu::PipelineLayout,
+    /// One per [`ExactVariant`], in [`ExactVariant::ALL`] order, built on first use.
+    pipelines: [OnceLock<wgpu::RenderPipeline>; 4],
+    format: wgpu::TextureFormat,
+    uniform: wgpu::Buffer,
+    params: Option<View3dParams>,
+    /// The baked design of the texture comparison (1×1 when off).
+    baked: RenderTarget,
+    bind_group: wgpu::BindGroup,
+}
+
+impl View3dRenderer {
+    /// A renderer next to `exact` (whose bind group layout it shares as group 0).
+    pub fn new(device: &wgpu::Device, exact: &ExactRenderer) -> Self {
+        let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("marbling 3d view"),
+            entries: &[
+                bindings::uniform::<View3dParams>(0, wgpu::ShaderStages::FRAGMENT),
+                bindings::texture_2d(1, wgpu::ShaderStages::FRAGMENT, false),
+            ],
+        });
+        let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: Some("marbling 3d view"),
+            bind_group_layouts: &[Some(exact.bind_group_layout()), Some(&layout)],
+            immediate_size: 0,
+        });
+        let uniform = bindings::uniform_buffer::<View3dParams>(device, "marbling 3d view");
+        let baked = RenderTarget::new(device, 1, 1, exact.format());
+        let bind_group = Self::group(device, &layout, &uniform, &baked);
+        Self {
+            layout,
+            pipeline_layout,
+            pipelines: Default::default(),
+            format: exact.format(),
+            uniform,
+            params: None,
+            baked,
+            bind_group,
+        }
+    }
+
+    fn group(
+        device: &wgpu::Device,
+        layout: &wgpu::BindGroupLayout,
+        uniform: &wgpu::Buffer,
+        baked: &RenderTarget,
+    ) -> wgpu::BindGroup {
+        device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("marbling 3d view"),
+            layout,
+            entries: &[
+                wgpu::BindGroupEntry {
+                    binding: 0,
+                    resource: uniform.as_entire_binding(),
+                },
+                wgpu::BindGroupEntry {
+                    binding: 1,
+                    resource: wgpu::BindingResource::TextureView(&baked.view),
+                },
+            ],
+        })
+    }
+
+    /// Sets the view of the next draws of `prepared` (holding `design`): the camera,
+    /// object and antialiasing of `view`. With `view.texture = Some(n)` the design is
+    /// first baked by `exact` into an n-pixel raster (only when n changes or `rebake`),
+    /// which the draws then sample. Applies to command buffers submitted afterwards.
+    pub fn set_view(
+        &mut self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        exact: &ExactRenderer,
+        prepared: &mut PreparedDesign,
+        design: &Design,
+        view: &View3d,
+        rebake: bool,
+    ) {
+        let mut source = 0;
+        if let Some(n) = view.texture {
+            let k = f64::from(n) / f64::from(design.width.max(design.height));
+            let w = ((f64::from(design.width) * k).round() as u32).clamp(1, n);
+            let h = ((f64::from(design.height) * k).round() as u32).clamp(1, n);
+            if rebake || (self.baked.width, self.baked.height) != (w, h) {
+                self.baked = RenderTarget::new(device, w, h, self.format);
+                self.bind_group = Self::group(device, &self.layout, &self.uniform, &self.baked);
+                prepared.set_view(
+                    queue,
+                    &View {
+                        scale: k,
+                        offset: [0.0; 2],
+                        antialias: marbling_core::Antialias::Rgss,
+                    },
+                );
+                let mut encoder =
+                    device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: None });
+                {
+                    let mut pass = self.baked.begin_pass(&mut encoder);
+                    exact.draw(&mut pass, prepared);
+                }
+                queue.submit([encoder.finish()]);
+            }
+            source = if self.format.is_srgb() { 1 } else { 2 };
+        }
+        prepared.set_view(
+            queue,
+            &View {
+                scale: 1.0,
+                offset: [0.0; 2],
+                antialias: view.antialias,
+            },
+        );
+        let params = View3dParams::new(design, view, source);
+        if self.params != Some(params) {
+            queue.write_buffer(&self.uniform, 0, bytemuck::bytes_of(&params));
+            self.params = Some(params);
+        }
+    }
+
+    /// Records a draw of `prepared` (its view set by [`View3dRenderer::set_view`]) into
+    /// `pass`, whose target has the exact renderer's format and the view's size.
+    pub fn draw(
+        &self,
+        device: &wgpu::Device,
+        pass: &mut wgpu::RenderPass<'_>,
+        prepared: &PreparedDesign,
+    ) {
+        let variant = prepared.variant();
+        let pipeline = self.pipelines[variant.index()].get_or_init(|| {
+            let label = format!("marbling 3d view ({})", variant.name());
+            let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+                label: Some(&label),
+                source: wgpu::ShaderSource::Wgsl(view3d_wgsl(variant).into()),
+            });
+            crate::fullscreen::pipeline_with(
+                device,
+                &label,
+                &self.pipeline_layout,
+                &module,
+                ["vs_main", "fs_view3d"],
+                self.format,
+            )
+        });
+        pass.set_pipeline(pipeline);
+        pass.set_bind_group(0, prepared.bind_group(), &[]);
+        pass.set_bind_group(1, &self.bind_group, &[]);
+        pass.draw(0..3, 0..1);
+    }
+}
