@@ -546,6 +546,13 @@ impl eframe::App for MarblingApp {
         for e in self.rendering.gpu_errors.take() {
             self.error(e);
         }
+        self.panels.view3d.show(
+            &ctx,
+            frame,
+            self.editor.history.design(),
+            self.editor.key,
+            &mut self.hooks.controls,
+        );
         self.autosave(frame, &ctx);
         self.update_hooks(&ctx);
     }

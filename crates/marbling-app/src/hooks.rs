@@ -131,6 +131,13 @@ impl MarblingApp {
             ("data-view", view),
             ("data-frame-ms", frame_ms),
             ("data-frames", Some(self.hooks.frames.to_string())),
+            (
+                "data-view3d-frames",
+                self.panels
+                    .view3d
+                    .open
+                    .then(|| self.panels.view3d.frames.to_string()),
+            ),
             ("data-preview-ready", preview_ready.then(|| "1".to_owned())),
             (
                 "data-gpu-work",

@@ -53,6 +53,7 @@ mod tool_panel;
 mod tool_rail;
 pub mod tools;
 pub mod view;
+mod view3d_window;
 
 pub use action::Action;
 pub use app::{MarblingApp, Message};

@@ -178,6 +178,15 @@ impl MarblingApp {
                     self.export_svg();
                 }
             }
+            let view3d = ui
+                .selectable_label(self.panels.view3d.open, "3D view")
+                .on_hover_text(
+                    "The design on a vase, sphere, cylinder, book or plane, exact at any zoom",
+                );
+            self.control("view3d", &view3d);
+            if view3d.clicked() {
+                self.panels.view3d.open = !self.panels.view3d.open;
+            }
         });
         ui.label(RichText::new(size_text).weak());
     }

@@ -227,6 +227,8 @@ pub struct Panels {
     pub export_size: ExportSize,
     /// The player being filmed (src/recorder.rs).
     pub recorder: Option<crate::recorder::Recorder>,
+    /// The 3D view window (src/view3d_window.rs).
+    pub view3d: crate::view3d_window::View3dWindow,
     /// The portrait layout's bottom sheet: its tab, and whether it is open.
     pub sheet_tab: crate::layout::SheetTab,
     pub sheet_open: bool,
@@ -254,6 +256,7 @@ impl Default for Panels {
             new_size: NEW_SIZE,
             export_size: ExportSize::Screen,
             recorder: None,
+            view3d: crate::view3d_window::View3dWindow::default(),
             explain_cache: None,
             sheet_tab: crate::layout::SheetTab::Tools,
             sheet_open: true,
