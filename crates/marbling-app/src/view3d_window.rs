@@ -353,18 +353,13 @@ impl View3dWindow {
         self.error = None;
         for (i, view) in views.iter().enumerate() {
             let texture = view.texture;
-            panes.renderers[i].set_view(
-                device,
-                queue,
-                &panes.exact,
-                &mut prepared,
-                design,
-                view,
-                texture.is_some() && panes.baked != Some(design_key),
-            );
-            if texture.is_some() {
+            if let Some(side) = texture
+                && panes.baked != Some(design_key)
+            {
+                panes.renderers[i].bake(device, queue, &panes.exact, &mut prepared, side);
                 panes.baked = Some(design_key);
             }
+            panes.renderers[i].set_view(queue, &mut prepared, design, view);
             let mut encoder =
                 device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: None });
             {

@@ -153,15 +153,10 @@ impl GpuRenderer {
         let mut image = RgbaImage::filled(view.width, view.height, [0, 0, 0, 255]);
         self.ctx.checked(|| -> Result<(), GpuError> {
             let (device, queue) = (&self.ctx.device, &self.ctx.queue);
-            renderer.set_view(
-                device,
-                queue,
-                &self.exact,
-                &mut prepared,
-                design,
-                view,
-                false,
-            );
+            if let Some(side) = view.texture {
+                renderer.bake(device, queue, &self.exact, &mut prepared, side);
+            }
+            renderer.set_view(queue, &mut prepared, design, view);
             let target = self.target(view.width, view.height);
             let mut encoder =
                 device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: None });

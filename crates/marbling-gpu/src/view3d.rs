@@ -168,46 +168,58 @@ impl View3dRenderer {
         })
     }
 
-    /// Sets the view of the next draws of `prepared` (holding `design`): the camera,
-    /// object and antialiasing of `view`. With `view.texture = Some(n)` the design is
-    /// first baked by `exact` into an n-pixel raster (only when n changes or `rebake`),
-    /// which the draws then sample. Applies to command buffers submitted afterwards.
-    pub fn set_view(
+    /// Bakes `design` (uploaded as `prepared`) into a raster of longest side `side`
+    /// with `exact`, for views with `texture: Some(side)` (the comparison with texture
+    /// mapping). Leaves `prepared`'s view to [`View3dRenderer::set_view`].
+    pub fn bake(
         &mut self,
         device: &wgpu::Device,
         queue: &wgpu::Queue,
         exact: &ExactRenderer,
         prepared: &mut PreparedDesign,
+        side: u32,
+    ) {
+        let (dw, dh) = prepared.design_size();
+        let k = f64::from(side) / f64::from(dw.max(dh));
+        let w = ((f64::from(dw) * k).round() as u32).clamp(1, side);
+        let h = ((f64::from(dh) * k).round() as u32).clamp(1, side);
+        if (self.baked.width, self.baked.height) != (w, h) {
+            self.baked = RenderTarget::new(device, w, h, self.format);
+            self.bind_group = Self::group(device, &self.layout, &self.uniform, &self.baked);
+        }
+        prepared.set_view(
+            queue,
+            &View {
+                scale: k,
+                offset: [0.0; 2],
+                antialias: marbling_core::Antialias::Rgss,
+            },
+        );
+        let mut encoder =
+            device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: None });
+        {
+            let mut pass = self.baked.begin_pass(&mut encoder);
+            exact.draw(&mut pass, prepared);
+        }
+        queue.submit([encoder.finish()]);
+    }
+
+    /// Sets the view of the next draws of `prepared` (holding `design`): the camera,
+    /// object and antialiasing of `view`; with `view.texture` set, the draws sample the
+    /// raster of the last [`View3dRenderer::bake`] instead of walking the ops. Applies
+    /// to command buffers submitted afterwards.
+    pub fn set_view(
+        &mut self,
+        queue: &wgpu::Queue,
+        prepared: &mut PreparedDesign,
         design: &Design,
         view: &View3d,
-        rebake: bool,
     ) {
-        let mut source = 0;
-        if let Some(n) = view.texture {
-            let k = f64::from(n) / f64::from(design.width.max(design.height));
-            let w = ((f64::from(design.width) * k).round() as u32).clamp(1, n);
-            let h = ((f64::from(design.height) * k).round() as u32).clamp(1, n);
-            if rebake || (self.baked.width, self.baked.height) != (w, h) {
-                self.baked = RenderTarget::new(device, w, h, self.format);
-                self.bind_group = Self::group(device, &self.layout, &self.uniform, &self.baked);
-                prepared.set_view(
-                    queue,
-                    &View {
-                        scale: k,
-                        offset: [0.0; 2],
-                        antialias: marbling_core::Antialias::Rgss,
-                    },
-                );
-                let mut encoder =
-                    device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: None });
-                {
-                    let mut pass = self.baked.begin_pass(&mut encoder);
-                    exact.draw(&mut pass, prepared);
-                }
-                queue.submit([encoder.finish()]);
-            }
-            source = if self.format.is_srgb() { 1 } else { 2 };
-        }
+        let source = match (view.texture, self.format.is_srgb()) {
+            (None, _) => 0,
+            (Some(_), true) => 1,
+            (Some(_), false) => 2,
+        };
         prepared.set_view(
             queue,
             &View {

@@ -174,9 +174,11 @@ impl View3d {
         }
         if let Some(p) = self.camera.look_at {
             let (w, h) = (f64::from(design.width), f64::from(design.height));
-            if !(p.x.is_finite() && p.y.is_finite() && (0.0..=w).contains(&p.x))
-                || !(0.0..=h).contains(&p.y)
-            {
+            let inside = p.x.is_finite()
+                && p.y.is_finite()
+                && (0.0..=w).contains(&p.x)
+                && (0.0..=h).contains(&p.y);
+            if !inside {
                 return Err(View3dError::LookAt(p.x, p.y, design.width, design.height));
             }
         }
@@ -236,7 +238,7 @@ impl View3d {
 
 /// How samples are coloured: by the exact walk or from a baked texture.
 enum Source {
-    Exact(PointColors),
+    Exact(Box<PointColors>),
     Texture(ImagePixels),
 }
 
@@ -244,7 +246,7 @@ enum Source {
 pub fn render_3d(design: &Design, view: &View3d) -> Result<RgbaImage, View3dError> {
     view.check(design)?;
     let source = match view.texture {
-        None => Source::Exact(PointColors::new(design)),
+        None => Source::Exact(Box::new(PointColors::new(design))),
         Some(n) => {
             let scale = f64::from(n) / f64::from(design.width.max(design.height));
             let baked = render(
