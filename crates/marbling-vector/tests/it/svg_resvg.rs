@@ -103,3 +103,36 @@ fn v2_design_renders_like_the_cpu_render() {
         100.0 * without.fraction()
     );
 }
+
+/// An image background is embedded as the raster underlay of the outlines, marbled
+/// like the ink: the SVG, rendered by resvg, looks like the exact CPU render.
+#[test]
+fn image_background_is_embedded_under_the_outlines() {
+    let mut design = marbling_core::Design::from_json(V2_DESIGN).expect("valid v2 design");
+    design.overlays.clear();
+    let photo = marbling_core::synth::test_photo(4, 80, 60)
+        .to_png()
+        .expect("png");
+    design.set_background_image(Some(
+        marbling_core::ImageBackground::from_file_bytes(&photo, marbling_core::ImageFit::Cover)
+            .expect("photo"),
+    ));
+    let vector = trace(&design, &TraceOptions::default()).expect("traceable");
+    let svg = to_svg(&vector);
+    assert_eq!(svg.matches("<image ").count(), 1, "the underlay");
+    let diff = crate::exact::svg_against_exact(&design, &svg, 1.0);
+    let mut bare = vector.clone();
+    bare.underlay = None;
+    let without = crate::exact::svg_against_exact(&design, &to_svg(&bare), 1.0);
+    println!(
+        "image background: {:.3} % differ, {:.3} % without the underlay",
+        100.0 * diff.fraction(),
+        100.0 * without.fraction()
+    );
+    assert!(diff.fraction() <= 0.02, "{:.3} %", 100.0 * diff.fraction());
+    assert!(
+        without.fraction() > 0.2,
+        "{:.3} %",
+        100.0 * without.fraction()
+    );
+}
