@@ -47,6 +47,10 @@ pub struct Render3dArgs {
     /// Renderer: cpu (the exact f64 reference) or gpu (the app's WGSL, f32).
     #[arg(long, value_enum, default_value_t = Backend::Cpu)]
     backend: Backend,
+    /// Render the frame this many times and report the fastest and median times (a
+    /// benchmark of 3D frame time; the GPU backend's device is opened once).
+    #[arg(long, default_value_t = 1, value_name = "N")]
+    repeat: u32,
 }
 
 fn parse_shape(s: &str) -> Result<Shape, String> {
@@ -88,17 +92,28 @@ pub fn run(args: &Render3dArgs) -> Result<()> {
     }
     let mut out = std::fs::File::create(&args.output)
         .with_context(|| format!("cannot write '{}'", args.output))?;
-    let start = Instant::now();
-    let image = match args.backend {
-        Backend::Cpu => render_3d(&design, &view)?,
-        Backend::Gpu => gpu_renderer()?.render_3d(&design, &view)?,
+    let gpu = match args.backend {
+        Backend::Cpu => None,
+        Backend::Gpu => Some(gpu_renderer()?),
         Backend::Vector => bail!("render-3d draws with --backend cpu or gpu"),
     };
-    let elapsed = start.elapsed();
+    let mut times = Vec::new();
+    let mut image = None;
+    for _ in 0..args.repeat.max(1) {
+        let start = Instant::now();
+        image = Some(match &gpu {
+            None => render_3d(&design, &view)?,
+            Some(gpu) => gpu.render_3d(&design, &view)?,
+        });
+        times.push(start.elapsed().as_secs_f64());
+    }
+    let image = image.unwrap_or_else(|| unreachable!("at least one frame is rendered"));
+    times.sort_by(f64::total_cmp);
+    let elapsed = times[times.len() / 2];
     std::io::Write::write_all(&mut out, &image.to_png()?)
         .with_context(|| format!("cannot write '{}'", args.output))?;
     println!(
-        "{}: {} on a {}, {} px, zoom {}, {} ops, aa {}, {}, backend {}, rendered in {:.3} s",
+        "{}: {} on a {}, {} px, zoom {}, {} ops, aa {}, {}, backend {}, rendered in {:.3} s{}",
         args.output,
         if args.texture.is_some() {
             "texture-mapped design"
@@ -115,7 +130,12 @@ pub fn run(args: &Render3dArgs) -> Result<()> {
             None => "every sample walked".to_owned(),
         },
         args.backend.name(),
-        elapsed.as_secs_f64()
+        elapsed,
+        if times.len() > 1 {
+            format!(" (median of {}, fastest {:.3} s)", times.len(), times[0])
+        } else {
+            String::new()
+        }
     );
     Ok(())
 }
