@@ -8,7 +8,7 @@ import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import { PNG } from 'pngjs';
-import { BACKENDS, MARBLING, READY_MS, SHOTS, attr, crop, decode, differing, example, launch, openPage, sheet, shootSheet, waitOps } from './harness.mjs';
+import { BACKENDS, MARBLING, READY_MS, SHOTS, attr, clickControl, controls, crop, decode, differing, example, launch, openPage, sheet, shootSheet, waitOps } from './harness.mjs';
 
 const STONE = example('stone').design;
 
@@ -58,6 +58,32 @@ for (const backend of Object.keys(BACKENDS)) {
       assert.ok(colours.size > 5, `only ${colours.size} colours on the canvas`);
       fs.mkdirSync(SHOTS, { recursive: true });
       await page.screenshot({ path: path.join(SHOTS, `playground-${backend}.png`), timeout: READY_MS });
+      assert.deepEqual(errors, []);
+      await context.close();
+    });
+
+    test('the 3D view shows the design on a vase, every pixel walked by the GPU', async () => {
+      const { page, context, errors } = await open();
+      await clickControl(page, 'view3d');
+      await page.waitForFunction(() => Number(document.body.dataset.view3dFrames) >= 1, null, { timeout: READY_MS });
+      await page.mouse.move(2, 2);
+      await page.waitForTimeout(300);
+      const pane = (await controls(page))['view3d-pane-0'];
+      assert.ok(pane, 'no 3D pane');
+      const img = decode(await page.screenshot({ clip: { x: pane.x, y: pane.y, width: pane.w, height: pane.h }, timeout: READY_MS }));
+      const at = (fx, fy) => {
+        const i = (Math.floor(fy * img.height) * img.width + Math.floor(fx * img.width)) * 4;
+        return [img.data[i], img.data[i + 1], img.data[i + 2]];
+      };
+      // The corners are the backdrop (dark grey, r ≈ g ≈ b); the vase in the middle
+      // carries the stone design's colours: not a blank pane.
+      const corner = at(0.02, 0.02);
+      assert.ok(corner[0] < 90 && Math.abs(corner[0] - corner[2]) < 12, `corner ${corner}`);
+      const colours = new Set();
+      for (let y = 0.2; y < 0.8; y += 0.02) for (let x = 0.42; x < 0.58; x += 0.02) colours.add(at(x, y).join());
+      assert.ok(colours.size > 8, `only ${colours.size} colours on the vase`);
+      if (backend === 'webgpu') await page.screenshot({ path: path.join(SHOTS, 'view3d-vase.png'), timeout: READY_MS });
+      assert.equal(await attr(page, 'data-error'), null);
       assert.deepEqual(errors, []);
       await context.close();
     });
