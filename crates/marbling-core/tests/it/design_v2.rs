@@ -137,7 +137,7 @@ fn errors_name_their_path() {
     );
     assert_error(
         &V2.replace(r#""version":2"#, r#""version":1"#),
-        "background: a noise background needs \"version\": 2; version 1 takes a colour \"#rrggbb\"",
+        "background: a noise or image background needs \"version\": 2; version 1 takes a colour \"#rrggbb\"",
     );
     let v1_overlays =
         r##"{"version":1,"width":4,"height":4,"background":"#ffffff","overlays":[],"ops":[]}"##;
