@@ -35,8 +35,15 @@ pub enum Action {
     Restore(usize),
     /// Restores entry `i` of *Recent designs*.
     OpenRecent(usize),
-    /// A plain paper colour (it replaces a noise background).
+    /// A plain paper colour (it replaces a noise or picture background).
     SetPaperColor(Rgb8),
+    /// A picture background, or none; `what` names the change.
+    SetBackgroundImage {
+        /// The picture (it replaces a noise background), or `None` for the plain paper.
+        image: Option<marbling_core::ImageBackground>,
+        /// What changed ("picture photo.jpg", "fit: contain").
+        what: String,
+    },
     /// Opens the step player playing from the first step (true) or closes it, showing
     /// the whole design.
     Play(bool),
@@ -178,7 +185,19 @@ impl MarblingApp {
                 let mut paper = self.editor.history.shown_paper();
                 paper.background = c;
                 paper.background_noise = None;
+                paper.background_image = None;
                 self.editor.history.push_paper(paper, c.to_string(), true);
+                true
+            }
+            Action::SetBackgroundImage { image, what } => {
+                let mut paper = self.editor.history.shown_paper();
+                if image.is_some() {
+                    paper.background_noise = None;
+                }
+                paper.background_image = image;
+                self.editor.history.push_paper(paper, what.clone(), false);
+                self.set_mode(Mode::Marbling);
+                self.info(format!("design surface: {what}"));
                 true
             }
             Action::SetSurface {
@@ -186,6 +205,9 @@ impl MarblingApp {
                 what,
             } => {
                 let mut paper = self.editor.history.shown_paper();
+                if background.is_some() {
+                    paper.background_image = None;
+                }
                 paper.background_noise = background;
                 paper.overlays = overlays;
                 self.editor.history.push_paper(paper, what.clone(), false);

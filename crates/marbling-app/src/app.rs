@@ -104,6 +104,7 @@ impl MarblingApp {
         let switch = crate::fast_paint::Switch::from_flag(platform::query("fast_paint").as_deref());
         app.rendering.fast_paint = crate::fast_paint::FastPaint::new(switch, adapter.as_ref());
         autosave::flush_on_page_hide();
+        platform::on_paste_image(app.panels.image_pick.clone(), cc.egui_ctx.clone());
         if let Some(parked) = recovery::take_parked() {
             app.unpark(parked);
             app.refresh();
@@ -449,6 +450,8 @@ impl eframe::App for MarblingApp {
         }
         self.check_device_lost();
         self.poll_picked_file();
+        self.poll_picked_image();
+        self.poll_dropped_files(&ctx);
         self.poll_picked_data();
         self.check_fragment();
         self.handle_shortcuts(&ctx);

@@ -97,7 +97,11 @@ impl MarblingApp {
                 self.surface_section(ui);
                 self.tool_section(ui);
             }
-            SheetTab::Ink => self.ink_section(ui),
+            SheetTab::Ink => {
+                self.ink_section(ui);
+                ui.separator();
+                self.image_section(ui);
+            }
             SheetTab::History => self.history_section(ui),
             SheetTab::Files => {
                 self.file_section(ui);

@@ -21,6 +21,7 @@ pub mod gallery_gpu;
 pub mod gpu_errors;
 pub mod history;
 mod hooks;
+mod image_input;
 pub mod ink_sets;
 mod labels;
 pub mod landing;

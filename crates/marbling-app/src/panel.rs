@@ -40,6 +40,7 @@ impl MarblingApp {
         self.tool_section(ui);
         ui.separator();
         self.ink_section(ui);
+        self.image_section(ui);
         ui.separator();
         self.history_section(ui);
         ui.separator();

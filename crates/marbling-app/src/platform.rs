@@ -14,6 +14,11 @@ pub type FileKind = (&'static str, &'static [&'static str]);
 pub const DESIGN_FILE: FileKind = ("design", &["json"]);
 /// A data grid for the noise playground.
 pub const DATA_FILE: FileKind = ("data (PNG or CSV)", &["png", "csv", "txt"]);
+/// A picture for an image background.
+pub const IMAGE_FILE: FileKind = (
+    "picture (PNG, JPEG or WebP)",
+    &["png", "jpg", "jpeg", "webp"],
+);
 
 /// The id of the page's `<canvas>` the app draws into.
 pub const CANVAS_ID: &str = "marbling_canvas";
@@ -196,6 +201,64 @@ mod imp {
         });
     }
 
+    /// Reads the dropped `file` (called `name`) into `slot`, asynchronously.
+    pub fn read_dropped(
+        file: egui::DroppedFileHandle,
+        name: String,
+        slot: PickSlot,
+        ctx: egui::Context,
+    ) {
+        wasm_bindgen_futures::spawn_local(async move {
+            let result = file
+                .bytes_async()
+                .await
+                .map(|b| (name.clone(), b))
+                .map_err(|e| format!("cannot read '{name}': {e}"));
+            if let Ok(mut s) = slot.lock() {
+                *s = Some(result);
+            }
+            ctx.request_repaint();
+        });
+    }
+
+    /// Delivers every picture pasted into the page (Ctrl+V of a copied image or image
+    /// file) to `slot`, named after the file or "pasted image".
+    pub fn on_paste_image(slot: PickSlot, ctx: egui::Context) {
+        use wasm_bindgen::closure::Closure;
+        let Some(w) = window() else { return };
+        let listener =
+            Closure::<dyn Fn(web_sys::ClipboardEvent)>::new(move |e: web_sys::ClipboardEvent| {
+                let Some(files) = e.clipboard_data().and_then(|d| d.files()) else {
+                    return;
+                };
+                let Some(file) = (0..files.length())
+                    .filter_map(|i| files.get(i))
+                    .find(|f| f.type_().starts_with("image/"))
+                else {
+                    return;
+                };
+                e.prevent_default();
+                let (slot, ctx) = (slot.clone(), ctx.clone());
+                wasm_bindgen_futures::spawn_local(async move {
+                    let name = match file.name() {
+                        n if n.is_empty() || n == "image.png" => "pasted image".to_owned(),
+                        n => n,
+                    };
+                    let bytes = wasm_bindgen_futures::JsFuture::from(file.array_buffer())
+                        .await
+                        .map(|b| js_sys::Uint8Array::new(&b).to_vec())
+                        .map_err(|_| format!("{name}: cannot read the pasted picture"));
+                    if let Ok(mut s) = slot.lock() {
+                        *s = Some(bytes.map(|b| (name, b)));
+                    }
+                    ctx.request_repaint();
+                });
+            });
+        let _ = w.add_event_listener_with_callback("paste", listener.as_ref().unchecked_ref());
+        // One listener for the page's life.
+        listener.forget();
+    }
+
     /// Calls `f` when the page's canvas loses its WebGL context.
     pub fn on_context_lost(f: impl Fn() + 'static) {
         use wasm_bindgen::closure::Closure;
@@ -339,6 +402,25 @@ mod imp {
             *s = Some(result);
         }
     }
+
+    /// Reads the dropped `file` (called `name`) into `slot`.
+    pub fn read_dropped(
+        file: egui::DroppedFileHandle,
+        name: String,
+        slot: PickSlot,
+        _ctx: egui::Context,
+    ) {
+        let result = file
+            .bytes()
+            .map(|b| (name.clone(), b))
+            .map_err(|e| format!("cannot read '{name}': {e}"));
+        if let Ok(mut s) = slot.lock() {
+            *s = Some(result);
+        }
+    }
+
+    /// Desktop windows take pictures by *Open image…* and drag-and-drop.
+    pub fn on_paste_image(_slot: PickSlot, _ctx: egui::Context) {}
 
     /// Desktop windows have no page to expose a test hook on.
     pub fn expose_device_loss(_device: &wgpu::Device) {}

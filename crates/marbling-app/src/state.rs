@@ -214,6 +214,8 @@ pub struct Panels {
     pub pick: PickSlot,
     /// Where a data file pick (noise playground) delivers.
     pub data_pick: PickSlot,
+    /// Where a picked or pasted picture delivers (src/image_input.rs).
+    pub image_pick: PickSlot,
     /// The gallery's designs and thumbnails (src/landing.rs), read on first show.
     pub gallery: Option<crate::landing::GalleryView>,
     /// The GPU thumbnail atlas (src/gallery_gpu.rs) as egui knows it.
@@ -250,6 +252,7 @@ impl Default for Panels {
             message: None,
             pick: PickSlot::default(),
             data_pick: PickSlot::default(),
+            image_pick: PickSlot::default(),
             gallery: None,
             gallery_texture: None,
             recent_thumbnails: HashMap::new(),

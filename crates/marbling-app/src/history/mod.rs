@@ -10,16 +10,19 @@
 
 use crate::labels::gesture_label;
 use crate::shown::Shown;
-use marbling_core::{Design, MAX_OPS, NoiseBackground, Op, Overlay, Rgb8};
+use marbling_core::{Design, ImageBackground, MAX_OPS, NoiseBackground, Op, Overlay, Rgb8};
 use std::sync::Arc;
 
-/// The paper under the ink: background colour, noise background and grain overlays.
+/// The paper under the ink: background colour, noise or picture background and grain
+/// overlays.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Paper {
     /// The plain background colour (with a noise background, the colour standing for it).
     pub background: Rgb8,
     /// Schema v2 noise background, if any.
     pub background_noise: Option<NoiseBackground>,
+    /// Schema v2 picture background, if any (never with a noise background).
+    pub background_image: Option<ImageBackground>,
     /// Schema v2 grain overlays.
     pub overlays: Vec<Overlay>,
 }
@@ -30,6 +33,7 @@ impl Paper {
         Self {
             background: d.background,
             background_noise: d.background_noise.clone(),
+            background_image: d.background_image.clone(),
             overlays: d.overlays.clone(),
         }
     }
@@ -37,6 +41,7 @@ impl Paper {
     fn apply_to(&self, d: &mut Design) {
         d.background = self.background;
         d.set_background_noise(self.background_noise.clone());
+        d.set_background_image(self.background_image.clone());
         d.overlays = self.overlays.clone();
     }
 }
