@@ -53,8 +53,9 @@ pub use render::{
 };
 pub use sampling::Antialias;
 pub use share::{
-    MAX_LINK_CHARS, MAX_LINK_JSON_BYTES, ShareError, decode_noise_share, decode_share,
-    encode_share_payload, encode_share_payload_fast, noise_fragment, share_fragment,
+    MAX_LINK_CHARS, MAX_LINK_JSON_BYTES, MAX_PICTURE_LINK_CHARS, ShareError, decode_noise_share,
+    decode_share, encode_share_payload, encode_share_payload_fast, noise_fragment, share_fragment,
+    with_link_sized_picture,
 };
 pub use surface::{
     GrainKind, MAX_PALETTE_STOPS, NoiseBackground, NoiseLayer, OVERLAY_TYPES, Overlay, Palette,

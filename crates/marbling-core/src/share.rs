@@ -12,6 +12,19 @@ pub const MAX_LINK_JSON_BYTES: usize = 64 << 20;
 /// Longest share link offered, characters: Chromium's limit on URL length (2 MiB);
 /// a longer design is saved as JSON instead.
 pub const MAX_LINK_CHARS: usize = 2 << 20;
+/// Longest share link that carries a picture background, characters (about 64 KB):
+/// pictures barely compress, so a longer link is downscaled on request
+/// ([`with_link_sized_picture`]) or the design is shared as a JSON file instead.
+pub const MAX_PICTURE_LINK_CHARS: usize = 64 * 1024;
+/// Longest sides and JPEG qualities tried, in order, to fit a picture in a link.
+const LINK_PICTURE_STEPS: [(u32, u8); 6] = [
+    (512, 80),
+    (384, 75),
+    (256, 75),
+    (192, 70),
+    (128, 70),
+    (96, 60),
+];
 /// DEFLATE effort of links: the best compression miniz offers (made once, kept long).
 const LEVEL: u8 = 9;
 /// DEFLATE effort of [`encode_share_payload_fast`]: miniz's fastest, about 10× faster
@@ -102,6 +115,22 @@ pub fn decode_noise_share(link: &str) -> Result<NoiseSpec, ShareError> {
 /// The URL fragment for a design, `d=…` (append to `#`).
 pub fn share_fragment(design: &Design) -> String {
     format!("d={}", encode_share_payload(design))
+}
+
+/// `design` with its picture background downscaled (JPEG, longest side 512 px or
+/// less) so that its fragment is at most `budget` characters: the largest that fits,
+/// or `None` when even the smallest does not (too many ops). Designs without a picture
+/// come back unchanged when they fit.
+pub fn with_link_sized_picture(design: &Design, budget: usize) -> Option<Design> {
+    let fits = |d: &Design| share_fragment(d).len() <= budget;
+    let Some(image) = &design.background_image else {
+        return fits(design).then(|| design.clone());
+    };
+    LINK_PICTURE_STEPS.iter().find_map(|&(side, quality)| {
+        let mut d = design.clone();
+        d.background_image = Some(image.downscaled(side, quality));
+        fits(&d).then_some(d)
+    })
 }
 
 /// Reads a design from a whole link (`https://…/#d=…`), a fragment (`#d=…` or `d=…`).

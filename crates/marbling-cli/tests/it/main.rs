@@ -6,6 +6,6 @@ mod cli_gpu;
 mod common;
 mod making_cli;
 mod noise_cli;
+mod pictures_3d_cli;
 mod svg_cli;
 mod v2_cli;
-mod view3d_cli;

@@ -1,6 +1,7 @@
-//! `marbling render-3d` and image backgrounds from the outside: the plane facing the
-//! camera is the 2D render, a picture named relative to the design file is embedded,
-//! and bad arguments or pictures fail with a message and a non-zero exit.
+//! `marbling render-3d` and picture backgrounds from the outside: the plane facing the
+//! camera is the 2D render, a picture named relative to the design file is embedded, a
+//! picture too large for a link is refused or downscaled, and bad arguments or
+//! pictures fail with a message and a non-zero exit.
 
 use crate::common::marbling;
 use marbling_core::RgbaImage;
@@ -120,4 +121,35 @@ fn render_3d_and_image_errors_name_the_problem() {
         assert!(!o.status.success(), "{args:?}");
         assert!(err.contains(expected), "{args:?}: {err}");
     }
+}
+
+#[test]
+fn a_picture_too_large_for_a_link_is_refused_or_downscaled() {
+    let dir = workdir("link");
+    // A noisy picture: it does not compress, so its link is far over 64 KB.
+    let mut photo = RgbaImage::filled(300, 200, [0, 0, 0, 255]);
+    let mut rng = marbling_core::synth::SplitMix64(9);
+    for px in photo.pixels.chunks_exact_mut(4) {
+        px[..3].copy_from_slice(&rng.next_u64().to_le_bytes()[..3]);
+    }
+    std::fs::write(dir.join("noise.png"), photo.to_png().expect("png")).expect("photo");
+    let design = path(&dir, "design.json");
+    std::fs::write(
+        &design,
+        r##"{"version":2,"width":300,"height":200,"background":{"image":"noise.png"},"ops":[]}"##,
+    )
+    .expect("design");
+    let o = marbling(&["link", &design], None);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(!o.status.success());
+    assert!(
+        err.contains("links hold about 64 KB") && err.contains("--downscale"),
+        "{err}"
+    );
+    let link = ok(&["link", &design, "--downscale"]);
+    let link = link.trim();
+    assert!(link.len() <= 64 * 1024 + 40, "{} characters", link.len());
+    let back = marbling_core::decode_share(link).expect("the link opens");
+    let p = back.background_image.expect("the picture is in the link");
+    assert!(p.pixels().width < 300 && p.source().starts_with("data:image/jpeg"));
 }
