@@ -6,7 +6,7 @@
 //! [`MIN_INTERVAL_MS`], and a last one when the page is hidden or the window closes.
 
 use crate::platform;
-use marbling_core::Design;
+use marbling_core::{Design, ImageBackground};
 use serde_json::Value;
 use std::sync::{Arc, Mutex, MutexGuard};
 
@@ -19,6 +19,12 @@ pub const LEGACY_KEY: &str = "marbling.autosave.v1";
 pub const UNREADABLE_KEY: &str = "marbling.autosave.unreadable";
 /// Shortest time between two autosave writes while edits keep coming, milliseconds.
 pub const MIN_INTERVAL_MS: f64 = 1000.0;
+/// Largest picture background (its `data:` URI, characters) an autosave holds whole:
+/// the two slots share the browser's ~5 MB of storage, so a larger picture is kept at
+/// [`AUTOSAVE_PICTURE_SIDE`] (*Save JSON* keeps it whole).
+pub const AUTOSAVE_PICTURE_CHARS: usize = 1 << 20;
+/// Longest side of a picture an autosave keeps downscaled, pixels.
+pub const AUTOSAVE_PICTURE_SIDE: u32 = 1024;
 
 /// One autosave record.
 #[derive(Clone, Debug, PartialEq)]
@@ -63,13 +69,46 @@ impl Record {
     }
 }
 
-/// The stored text of a record of `design` (see [`Record::encode`]).
+/// The stored text of a record of `design` (see [`Record::encode`]), its picture
+/// downscaled when larger than [`AUTOSAVE_PICTURE_CHARS`].
 pub fn encode(seq: u64, saved_ms: f64, design: &Design) -> String {
+    let stored = storable(design);
     format!(
         "{{\"seq\":{seq},\"saved\":{},\"link\":\"d={}\"}}",
         saved_ms.round(),
-        marbling_core::encode_share_payload_fast(design)
+        marbling_core::encode_share_payload_fast(stored.as_ref().unwrap_or(design))
     )
+}
+
+/// `design` with its picture downscaled when too large for storage, else `None` (the
+/// design as it is). The last downscaled picture is remembered: autosaves come every
+/// second while editing, and the picture seldom changes.
+fn storable(design: &Design) -> Option<Design> {
+    type Memo = Option<(
+        Arc<marbling_core::image_background::ImagePixels>,
+        ImageBackground,
+    )>;
+    static LAST: Mutex<Memo> = Mutex::new(None);
+    let image = design.background_image.as_ref()?;
+    if image.source().len() <= AUTOSAVE_PICTURE_CHARS {
+        return None;
+    }
+    let mut last = LAST
+        .lock()
+        .unwrap_or_else(std::sync::PoisonError::into_inner);
+    let small = match &*last {
+        Some((pixels, small)) if Arc::ptr_eq(pixels, image.pixels_arc()) => {
+            small.with_fit(image.fit)
+        }
+        _ => {
+            let small = image.downscaled(AUTOSAVE_PICTURE_SIDE, 85);
+            *last = Some((image.pixels_arc().clone(), small.clone()));
+            small
+        }
+    };
+    let mut d = design.clone();
+    d.background_image = Some(small);
+    Some(d)
 }
 
 /// The slot a record with sequence number `seq` is written to.
@@ -257,6 +296,39 @@ mod tests {
             saved_ms: 1_700_000_000_000.0 + seq as f64,
             design: random_design(seq, 64, 48, ops, Mix::Mixed),
         }
+    }
+
+    #[test]
+    fn a_large_picture_is_autosaved_downscaled_and_a_small_one_whole() {
+        // 1200×700 of noise: an incompressible PNG of ~2.5 MB, over the storable size.
+        let mut photo = marbling_core::RgbaImage::filled(1200, 700, [0, 0, 0, 255]);
+        let mut rng = marbling_core::synth::SplitMix64(5);
+        for px in photo.pixels.chunks_exact_mut(4) {
+            px[..3].copy_from_slice(&rng.next_u64().to_le_bytes()[..3]);
+        }
+        let png = photo.to_png().expect("png");
+        let mut r = record(3, 40);
+        r.design.set_background_image(Some(
+            ImageBackground::from_file_bytes(&png, marbling_core::ImageFit::Contain)
+                .expect("picture"),
+        ));
+        let text = r.encode();
+        assert!(text.len() < 2 << 20, "{} characters", text.len());
+        let back = Record::decode(&text).expect("reads back");
+        assert_eq!(back.design.ops, r.design.ops);
+        let img = back.design.background_image.expect("the picture is kept");
+        assert_eq!((img.pixels().width, img.pixels().height), (1024, 597));
+        assert_eq!(img.fit, marbling_core::ImageFit::Contain);
+        // A small picture is kept whole.
+        let small = marbling_core::synth::test_photo(1, 64, 40)
+            .to_png()
+            .expect("png");
+        r.design.set_background_image(Some(
+            ImageBackground::from_file_bytes(&small, marbling_core::ImageFit::Cover)
+                .expect("picture"),
+        ));
+        let back = Record::decode(&r.encode()).expect("reads back");
+        assert_eq!(back.design, r.design);
     }
 
     #[test]

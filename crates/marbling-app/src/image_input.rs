@@ -8,7 +8,9 @@ use crate::app::MarblingApp;
 use crate::platform;
 use egui::RichText;
 use marbling_core::image_background::IMAGE_FITS;
-use marbling_core::{ImageBackground, ImageFit};
+use marbling_core::{
+    ImageBackground, ImageFit, MAX_PICTURE_LINK_CHARS, share_fragment, with_link_sized_picture,
+};
 
 /// Whether the file `name` is opened as a picture (else as a design document).
 pub fn is_picture(name: &str) -> bool {
@@ -34,10 +36,17 @@ impl MarblingApp {
             Ok(image) => {
                 let p = image.pixels();
                 let what = format!("picture {name} ({}×{})", p.width, p.height);
+                let big = image.source().len() > crate::autosave::AUTOSAVE_PICTURE_CHARS;
                 self.apply(Action::SetBackgroundImage {
                     image: Some(image),
                     what,
                 });
+                if big {
+                    self.info(format!(
+                        "{name} is large: the autosave keeps it at {} px; Save JSON keeps it whole",
+                        crate::autosave::AUTOSAVE_PICTURE_SIDE
+                    ));
+                }
             }
             Err(e) => self.error(format!("{name}: {e}; the design is unchanged")),
         }
@@ -75,6 +84,49 @@ impl MarblingApp {
             };
             platform::read_dropped(file, name, slot, ctx.clone());
         }
+    }
+
+    /// After *Copy link* found the picture too large for a link: downscale it for the
+    /// link (the design keeps it whole) or save the JSON file instead.
+    pub(crate) fn picture_link_offer(&mut self, ui: &mut egui::Ui) {
+        if self.panels.picture_link_offer != Some(self.editor.key) {
+            self.panels.picture_link_offer = None;
+            return;
+        }
+        ui.horizontal_wrapped(|ui| {
+            let shrink = ui.button("Downscale the picture for the link");
+            self.control("link-downscale", &shrink);
+            if shrink.clicked() {
+                self.panels.picture_link_offer = None;
+                let design = self.editor.history.design();
+                match with_link_sized_picture(design, MAX_PICTURE_LINK_CHARS) {
+                    Some(small) => {
+                        let fragment = share_fragment(&small);
+                        let link = format!("{}#{fragment}", platform::base_url());
+                        let p = small.background_image.as_ref().map(|b| b.pixels());
+                        let (w, h) = p.map_or((0, 0), |p| (p.width, p.height));
+                        ui.ctx().copy_text(link.clone());
+                        self.info(format!(
+                            "link copied ({} characters) with the picture at {w}×{h}; your design keeps it whole",
+                            link.len()
+                        ));
+                    }
+                    None => self.error(
+                        "even a 96-pixel picture does not fit a link with these ops: save the JSON file",
+                    ),
+                }
+            }
+            let save = ui.button("Save JSON instead");
+            self.control("link-save-json", &save);
+            if save.clicked() {
+                self.panels.picture_link_offer = None;
+                let json = self.editor.history.design().to_json_pretty();
+                match platform::save_file("design.json", "application/json", json.as_bytes()) {
+                    Ok(()) => self.info("design saved as JSON"),
+                    Err(e) => self.error(e),
+                }
+            }
+        });
     }
 
     /// The *Picture* section: open a picture, and with one, its fit and removing it.

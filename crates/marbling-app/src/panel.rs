@@ -88,6 +88,18 @@ impl MarblingApp {
             self.control("copy-link", &copy);
             if copy.clicked() {
                 let link = self.share_link();
+                let fragment = link.split_once('#').map_or(0, |(_, f)| f.len());
+                if self.editor.history.design().background_image.is_some()
+                    && fragment > marbling_core::MAX_PICTURE_LINK_CHARS
+                {
+                    self.panels.picture_link_offer = Some(self.editor.key);
+                    self.error(format!(
+                        "the picture makes the link {} KB; links hold about {} KB: downscale the picture for the link, or save the JSON file",
+                        fragment / 1024,
+                        marbling_core::MAX_PICTURE_LINK_CHARS / 1024
+                    ));
+                    return;
+                }
                 if link.len() > marbling_core::MAX_LINK_CHARS {
                     let json = self.editor.history.design().to_json_pretty();
                     let saved =
@@ -111,6 +123,7 @@ impl MarblingApp {
                 self.info(format!("link copied ({} characters)", link.len()));
             }
         });
+        self.picture_link_offer(ui);
         ui.horizontal(|ui| {
             ui.label("New sheet");
             ui.add(

@@ -216,6 +216,9 @@ pub struct Panels {
     pub data_pick: PickSlot,
     /// Where a picked or pasted picture delivers (src/image_input.rs).
     pub image_pick: PickSlot,
+    /// *Copy link* found the picture too large for a link, for the design of this key:
+    /// the downscale-or-save offer is shown.
+    pub picture_link_offer: Option<u64>,
     /// The gallery's designs and thumbnails (src/landing.rs), read on first show.
     pub gallery: Option<crate::landing::GalleryView>,
     /// The GPU thumbnail atlas (src/gallery_gpu.rs) as egui knows it.
@@ -253,6 +256,7 @@ impl Default for Panels {
             pick: PickSlot::default(),
             data_pick: PickSlot::default(),
             image_pick: PickSlot::default(),
+            picture_link_offer: None,
             gallery: None,
             gallery_texture: None,
             recent_thumbnails: HashMap::new(),
