@@ -452,6 +452,7 @@ impl eframe::App for MarblingApp {
         self.poll_picked_file();
         self.poll_picked_image();
         self.poll_dropped_files(&ctx);
+        self.advance_video(&ctx);
         self.poll_picked_data();
         self.check_fragment();
         self.handle_shortcuts(&ctx);

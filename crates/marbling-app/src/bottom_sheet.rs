@@ -101,6 +101,7 @@ impl MarblingApp {
                 self.ink_section(ui);
                 ui.separator();
                 self.image_section(ui);
+                self.video_section(ui);
             }
             SheetTab::History => self.history_section(ui),
             SheetTab::Files => {

@@ -340,6 +340,7 @@ impl MarblingApp {
                 })
             },
             transient: design_key != self.editor.key,
+            live: self.rendering.live_frame.clone(),
         };
         let acting =
             ui.input(|i| !i.events.is_empty() || i.pointer.any_down() || i.pointer.is_moving());

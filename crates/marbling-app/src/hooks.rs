@@ -132,6 +132,13 @@ impl MarblingApp {
             ("data-frame-ms", frame_ms),
             ("data-frames", Some(self.hooks.frames.to_string())),
             (
+                "data-video-frames",
+                self.rendering
+                    .live_frame
+                    .is_some()
+                    .then(|| self.rendering.video_frames.to_string()),
+            ),
+            (
                 "data-view3d-frames",
                 self.panels
                     .view3d

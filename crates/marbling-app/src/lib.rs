@@ -53,6 +53,8 @@ pub mod thumbnails;
 mod tool_panel;
 mod tool_rail;
 pub mod tools;
+mod video;
+mod video_panel;
 pub mod view;
 mod view3d_window;
 

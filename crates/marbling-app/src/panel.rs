@@ -41,6 +41,7 @@ impl MarblingApp {
         ui.separator();
         self.ink_section(ui);
         self.image_section(ui);
+        self.video_section(ui);
         ui.separator();
         self.history_section(ui);
         ui.separator();

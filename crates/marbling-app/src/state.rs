@@ -169,6 +169,17 @@ pub struct Rendering {
     /// When the user last acted on the page (egui's clock, seconds): the canvas refines
     /// at its idle pace a while after.
     pub last_input_s: f64,
+    /// The live video playing as the background (src/video.rs).
+    #[cfg(target_arch = "wasm32")]
+    pub video: Option<crate::video::LiveVideo>,
+    /// The video's latest frame, shown as the design's picture.
+    pub live_frame: Option<crate::video::LiveFrame>,
+    /// How video frames are laid on the sheet.
+    pub video_fit: marbling_core::ImageFit,
+    /// Where a picked video file delivers.
+    pub video_pick: crate::platform::PickSlot,
+    /// Frames taken from the video since it started (for `data-video-frames`).
+    pub video_frames: u64,
 }
 
 impl Rendering {
@@ -184,6 +195,12 @@ impl Rendering {
             fast_paint: Default::default(),
             export: None,
             last_input_s: 0.0,
+            #[cfg(target_arch = "wasm32")]
+            video: None,
+            live_frame: None,
+            video_fit: marbling_core::ImageFit::Cover,
+            video_pick: Default::default(),
+            video_frames: 0,
         }
     }
 }

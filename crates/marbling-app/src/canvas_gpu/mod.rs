@@ -56,6 +56,9 @@ pub struct FrameRequest {
     /// A frame of a gesture in progress (its ops drawn exactly over the design): no
     /// preview cache is built for it.
     pub transient: bool,
+    /// A live video frame shown as the design's picture (each new frame is a new exact
+    /// frame), or `None` for the design's own background.
+    pub live: Option<crate::video::LiveFrame>,
 }
 
 /// A design close to the requested one whose preview cache can stand in for it.
@@ -230,6 +233,10 @@ impl CanvasGpu {
             }
         }
         if let Some((_, prepared)) = &mut self.prepared {
+            let live = req.live.as_ref().map(|l| (l.pixels.clone(), l.fit));
+            self.exact
+                .set_live_image(device, queue, prepared, shown.prefix(), live)
+                .map_err(|e| e.to_string())?;
             prepared.set_view(
                 queue,
                 &View {

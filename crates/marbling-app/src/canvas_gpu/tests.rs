@@ -52,6 +52,7 @@ fn the_exact_frame_is_drawn_in_tiles_then_the_cache() {
         pending: None,
         stand_in: None,
         transient: false,
+        live: None,
     };
     assert_eq!(sheet_region(&design, &request), [10, 5, 100, 80]);
     let mut callback = CanvasCallback {
