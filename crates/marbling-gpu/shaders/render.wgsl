@@ -52,7 +52,7 @@ struct Hit {
 // background's, used only to decide refinement).
 fn trace(p0: vec2<f32>) -> vec4<f32> {
     let h = walk(p0);
-    if !SURFACE_ENABLED || surface.flags == 0u {
+    if surface.flags == 0u {
         return h.color;
     }
     return vec4<f32>(surface_shade(h.color.rgb, h.background, p0, h.end), h.color.w);
@@ -110,7 +110,7 @@ fn shade(target_pixel: vec2<f32>) -> vec4<f32> {
     if params.encode_srgb == 0u {
         return vec4<f32>(r.rgb, 1.0);
     }
-    if r.w >= 0.0 && (!SURFACE_ENABLED || surface.flags == 0u) {
+    if r.w >= 0.0 && surface.flags == 0u {
         // Every sample shows one colour: keep its exact sRGB bytes, as the CPU does.
         return vec4<f32>(unpack_srgb(r.w), 1.0);
     }

@@ -5,14 +5,10 @@
 // noise_to_grey, threshold_transfer) and a `surface: SurfaceParams` uniform declared by
 // the shader that includes this file.
 
-// False in surface_off.wgsl (the plain variant), so its checks compile away.
-const SURFACE_ENABLED: bool = true;
 // `flags` bits and layer indices: bit i set ⇔ layers[i] is used.
 const SURFACE_BACKGROUND: u32 = 1u;
 const SURFACE_PIGMENT: u32 = 2u;
 const SURFACE_PAPER: u32 = 4u;
-// With SURFACE_BACKGROUND: the background is `surface_image`, not noise.
-const SURFACE_IMAGE: u32 = 8u;
 
 // How layer i's noise (`SurfaceParams::noises[i]`) becomes an intensity in [0, 1]
 // (keep in sync with `LayerParams`). The noise is not a member: WebGL2 (GLSL ES, as
@@ -50,32 +46,6 @@ struct SurfaceParams {
     image_size: vec4<f32>,
     // The paper around a letterboxed image, linear rgb.
     paper: vec4<f32>,
-}
-
-// Linear colour of texel (i, j) of the image, clamped to its edge (an …UnormSrgb
-// texture: loads decode to linear light).
-fn image_texel(i: i32, j: i32) -> vec3<f32> {
-    let size = vec2<i32>(surface.image_size.xy);
-    return textureLoad(surface_image, clamp(vec2<i32>(i, j), vec2<i32>(0), size - 1), 0).rgb;
-}
-
-// The image background at back-traced design point p: bilinear in linear light
-// between texel centres (whole + ½), clamped to the edge; the paper outside a
-// letterboxed image (keep in sync with marbling-core's image_background.rs).
-fn surface_image_color(p: vec2<f32>) -> vec3<f32> {
-    let uv = (p - surface.image_map.xy) * surface.image_map.zw;
-    let size = surface.image_size.xy;
-    if surface.image_size.z > 0.5 && (any(uv < vec2<f32>(0.0)) || any(uv > size)) {
-        return surface.paper.rgb;
-    }
-    let f = uv - 0.5;
-    let base = floor(f);
-    let t = f - base;
-    let i = i32(base.x);
-    let j = i32(base.y);
-    let top = mix(image_texel(i, j), image_texel(i + 1, j), t.x);
-    let bottom = mix(image_texel(i, j + 1), image_texel(i + 1, j + 1), t.x);
-    return mix(top, bottom, t.y);
 }
 
 fn surface_intensity(p: vec2<f32>, i: u32) -> f32 {

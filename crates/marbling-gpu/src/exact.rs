@@ -289,7 +289,7 @@ impl ExactRenderer {
             queue.write_buffer(&prepared.surface, 0, bytemuck::bytes_of(&surface_params));
             prepared.surface_params = surface_params;
         }
-        prepared.textured = surface_params.flags != 0;
+        prepared.textured = surface_params.needs_noise();
         prepared.v3 = prepared.uploaded.iter().any(Op::walks_v3);
         self.variant_pipeline(device, prepared.variant());
         prepared.background = design.background;

@@ -1,9 +1,9 @@
 //! The WGSL sources, compiled into the crate. WGSL has no includes, so each module is
 //! assembled from files: `common.wgsl` (op inverse, sRGB transfer, full-screen
 //! triangle), then for the exact renderer `records.wgsl` (the walk over op records),
-//! `ops_v3.wgsl` (the ops schema v3 added) or its stand-in, marbling-noise's `noise`
-//! module and `surface.wgsl` (schema v2 noise backgrounds and grain overlays) or its
-//! stand-in, then its own file. [`ExactVariant`] names the four exact modules.
+//! `ops_v3.wgsl` (the ops schema v3 added) or its stand-in, `image.wgsl` (image
+//! backgrounds, in every variant), marbling-noise's `noise` module and `surface.wgsl`
+//! (schema v2 noise backgrounds and grain overlays) or its stand-in, then its own file. [`ExactVariant`] names the four exact modules.
 
 use crate::preview_kind::PreviewKind;
 
@@ -16,23 +16,28 @@ pub const RECORDS: &str = include_str!("../shaders/records.wgsl");
 pub const OPS_V3: &str = include_str!("../shaders/ops_v3.wgsl");
 /// `shaders/ops_v3_off.wgsl`: stand-in for `ops_v3.wgsl` in variants without v3 ops.
 pub const OPS_V3_OFF: &str = include_str!("../shaders/ops_v3_off.wgsl");
+/// `shaders/image.wgsl`: the image background's sampling (every variant).
+pub const IMAGE: &str = include_str!("../shaders/image.wgsl");
 /// `shaders/surface.wgsl`: noise background, pigment and paper grain.
 pub const SURFACE: &str = include_str!("../shaders/surface.wgsl");
-/// `shaders/surface_off.wgsl`: stand-ins for `surface.wgsl` in the plain variant.
+/// `shaders/surface_off.wgsl`: stand-ins for `surface.wgsl` in the variants without
+/// noise (they draw image backgrounds only).
 pub const SURFACE_OFF: &str = include_str!("../shaders/surface_off.wgsl");
 /// `shaders/render.wgsl`: the exact renderer's entry points.
 pub const RENDER: &str = include_str!("../shaders/render.wgsl");
 
-/// The exact renderer for designs with a plain background, no overlays and no schema v3
-/// op (every v1 design): `common.wgsl`, `records.wgsl`, `ops_v3_off.wgsl`,
-/// `surface_off.wgsl`, `render.wgsl` — no noise or stylus code, so it is as small and
-/// fast as before schemas v2 and v3.
+/// The exact renderer for designs with a plain or image background, no overlays and no
+/// schema v3 op (every v1 design): `common.wgsl`, `records.wgsl`, `ops_v3_off.wgsl`,
+/// `image.wgsl`, `surface_off.wgsl`, `render.wgsl` — no noise or stylus code, so it is
+/// as small and fast as before schemas v2 and v3.
 pub const RENDER_PLAIN_WGSL: &str = concat!(
     include_str!("../shaders/common.wgsl"),
     "\n",
     include_str!("../shaders/records.wgsl"),
     "\n",
     include_str!("../shaders/ops_v3_off.wgsl"),
+    "\n",
+    include_str!("../shaders/image.wgsl"),
     "\n",
     include_str!("../shaders/surface_off.wgsl"),
     "\n",
@@ -46,7 +51,8 @@ pub const RENDER_COMPUTE: &str = include_str!("../shaders/render_compute.wgsl");
 /// Which exact-renderer module a design needs.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct ExactVariant {
-    /// With schema v2 surfaces (`surface.wgsl` and the noise module).
+    /// With schema v2 noise backgrounds or grain (`surface.wgsl` and the noise
+    /// module); image backgrounds alone need no noise.
     pub surface: bool,
     /// With schema v3's ops (`ops_v3.wgsl`).
     pub v3: bool,
@@ -102,7 +108,7 @@ impl ExactVariant {
         } else {
             SURFACE_OFF.to_owned()
         };
-        [COMMON, RECORDS, v3, &surface, RENDER].join("\n")
+        [COMMON, RECORDS, v3, IMAGE, &surface, RENDER].join("\n")
     }
 
     /// The render module with the compute entry point.

@@ -129,6 +129,14 @@ impl SurfaceParams {
         p
     }
 
+    /// Whether drawing needs the noise code (`surface.wgsl`): a noise background or a
+    /// grain overlay. An image background alone is drawn by every variant.
+    pub fn needs_noise(&self) -> bool {
+        let noise_background =
+            self.flags & SURFACE_BACKGROUND != 0 && self.flags & SURFACE_IMAGE == 0;
+        noise_background || self.flags & (SURFACE_PIGMENT | SURFACE_PAPER) != 0
+    }
+
     /// Makes the background `pixels` laid on `design`'s sheet by `fit` (the design's
     /// own image, or a live video frame standing in for it).
     pub fn set_image(&mut self, pixels: &ImagePixels, fit: ImageFit, design: &Design) {

@@ -1,5 +1,6 @@
 //! Image backgrounds on the GPU against the f64 CPU reference: a photo under random ops
-//! in each fit, and a wrong fit failing the same comparison.
+//! in each fit (alone, drawn by the variants without noise, and with paper grain, by
+//! the noise variant), and a wrong fit failing the same comparison.
 
 use marbling_core::compare::compare;
 use marbling_core::synth::{Mix, random_design, test_photo};
@@ -35,7 +36,16 @@ fn image_backgrounds_match_the_cpu() {
     let fits = [ImageFit::Stretch, ImageFit::Cover, ImageFit::Contain];
     for (i, fit) in fits.into_iter().enumerate() {
         for (aa, budget) in [(Antialias::None, 0.005), (Antialias::Rgss, 0.01)] {
-            let d = design(40 + i as u64, [0, 30, 120][i], (90, 70), fit);
+            let mut d = design(40 + i as u64, [0, 30, 120][i], (90, 70), fit);
+            if fit == ImageFit::Contain {
+                // With grain the picture is drawn by the noise variant (surface.wgsl),
+                // without by the lean one (surface_off.wgsl): both are compared.
+                let grain = marbling_core::NoiseLayer::from_json(
+                    r#"{"type":"value","frequency":0.2,"octaves":2,"seed":8}"#,
+                )
+                .expect("grain");
+                d.overlays = vec![marbling_core::Overlay::paper_grain(grain, 0.3)];
+            }
             let opts = RenderOptions {
                 scale: [1.0, 0.8, 1.25][i],
                 antialias: aa,

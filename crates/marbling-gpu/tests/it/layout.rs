@@ -202,3 +202,26 @@ fn view3d_params_match_wgsl() {
         size_of::<View3dParams>(),
     );
 }
+
+#[test]
+fn the_plain_variants_surface_head_reaches_the_image_fields() {
+    // surface_off.wgsl skips the noise members to read the image background's fields
+    // at the host's offsets (plain and v3 variants draw image backgrounds too).
+    let image_map = offset_of!(SurfaceParams, image_map);
+    check(
+        marbling_gpu::shaders::RENDER_PLAIN_WGSL,
+        "SurfaceParams",
+        &[
+            ("flags", offset_of!(SurfaceParams, flags)),
+            ("stop_count", offset_of!(SurfaceParams, stop_count)),
+            ("layer_count", offset_of!(SurfaceParams, layer_count)),
+            ("_pad", offset_of!(SurfaceParams, _pad)),
+            ("_noise", offset_of!(SurfaceParams, stops)),
+            ("image_map", image_map),
+            ("image_size", offset_of!(SurfaceParams, image_size)),
+            ("paper", offset_of!(SurfaceParams, paper)),
+        ],
+        size_of::<SurfaceParams>(),
+    );
+    assert_eq!((image_map - 16) / 16, 68, "surface_off.wgsl skips 68 vec4s");
+}
