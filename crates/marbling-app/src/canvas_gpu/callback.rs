@@ -114,7 +114,9 @@ impl CanvasCallback {
             } else {
                 Show::Exact
             }
-        } else if exact_done {
+        } else if exact_done || req.live.is_some() {
+            // A live video's next frame is drawn over the last one: the preview cache
+            // holds no video, so the texture as it is shows best.
             Show::Exact
         } else if cached(req.design_key) {
             gpu.aim_preview(queue, req, None, canvas_px);
