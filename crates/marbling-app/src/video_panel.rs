@@ -56,8 +56,13 @@ impl MarblingApp {
                 return;
             };
             if let Some(frame) = video.frame(self.rendering.video_fit) {
+                let size = (frame.pixels.width, frame.pixels.height);
                 self.rendering.live_frame = Some(frame);
                 self.rendering.video_frames += 1;
+                if self.rendering.video_frames == 1 {
+                    let label = video.label.clone();
+                    self.info(format!("live video: {label}, {}×{}", size.0, size.1));
+                }
             }
             // Frames arrive between egui's events: keep polling while it plays.
             ctx.request_repaint();
