@@ -319,6 +319,11 @@ impl MarblingApp {
             self.rendering
                 .fast_paint
                 .preview_antialias(self.prefs.antialias)
+        } else if self.rendering.live_frame.is_some() {
+            // Live video: one sample per pixel, so frames keep coming (the 640×480
+            // video is coarser than the canvas anyway); *Use this frame* keeps the
+            // antialiasing setting.
+            marbling_core::Antialias::None
         } else {
             self.rendering.fast_paint.end_drag();
             self.prefs.antialias
