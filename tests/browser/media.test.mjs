@@ -93,11 +93,14 @@ describe('pictures and live video on webgl2', () => {
     // The ink of the drop covers the centre in both frames…
     for (const s of [first, second]) assert.ok(near(pixel(s.img, 0.5, 0.5), INK), `centre ${pixel(s.img, 0.5, 0.5)}`);
     // …while the camera's picture around it moved on (Chromium's fake camera animates).
+    // The fake camera is mostly flat green: its moving parts are the rotating wedge
+    // round the middle and the time code, so sample the whole sheet outside the drop.
     let changed = 0;
-    for (let y = 0.02; y < 1; y += 0.04) for (let x = 0.02; x < 0.25; x += 0.04) {
+    for (let y = 0.01; y < 1; y += 0.02) for (let x = 0.01; x < 1; x += 0.02) {
+      if (Math.hypot((x - 0.5) * DESIGN.width, (y - 0.5) * DESIGN.height) < 34) continue;
       if (!near(pixel(first.img, x, y), pixel(second.img, x, y), 8)) changed++;
     }
-    assert.ok(changed > 3, `only ${changed} sampled pixels changed between frames`);
+    assert.ok(changed > 10, `only ${changed} sampled pixels changed between frames`);
     // Not the plain white paper: the camera's picture is under the ink.
     assert.ok(!near(pixel(second.img, 0.05, 0.05), [255, 255, 255], 4), `corner ${pixel(second.img, 0.05, 0.05)}`);
     await page.screenshot({ path: path.join(SHOTS, 'video-fake-camera.png'), timeout: READY_MS });
