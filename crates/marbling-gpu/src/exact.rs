@@ -262,13 +262,7 @@ impl ExactRenderer {
             };
             prepared.ops_texture = op_texture(device, layout);
             prepared.layout = layout;
-            prepared.bind_group = self.bind_group(
-                device,
-                &prepared.uniform,
-                &prepared.ops_texture,
-                &prepared.surface,
-                &prepared.image_texture,
-            );
+            self.rebind(device, prepared);
             start = 0;
         }
         write_records(queue, prepared, start..n);
@@ -335,13 +329,7 @@ impl ExactRenderer {
         let size = prepared.image_texture.size();
         if (size.width, size.height) != (w, h) {
             prepared.image_texture = image_texture(device, w, h);
-            prepared.bind_group = self.bind_group(
-                device,
-                &prepared.uniform,
-                &prepared.ops_texture,
-                &prepared.surface,
-                &prepared.image_texture,
-            );
+            self.rebind(device, prepared);
         }
         if let Some(p) = &image {
             queue.write_texture(
@@ -360,6 +348,17 @@ impl ExactRenderer {
             );
         }
         prepared.image_uploaded = image;
+    }
+
+    /// Makes `prepared`'s bind group anew after one of its textures was replaced.
+    fn rebind(&self, device: &wgpu::Device, prepared: &mut PreparedDesign) {
+        prepared.bind_group = self.bind_group(
+            device,
+            &prepared.uniform,
+            &prepared.ops_texture,
+            &prepared.surface,
+            &prepared.image_texture,
+        );
     }
 
     /// Bind group 0 over a design's buffers, op texture and image texture.
