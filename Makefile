@@ -8,7 +8,7 @@ CARGO ?= cargo
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 MARBLING := target/release/marbling
 
-.PHONY: run dist icons test gallery setup-rust setup-gpu setup-web setup-browser fmt-check clippy unit wasm-check bench bench-gpu web browser-test noise-gallery bench-noise bench-noise-export bench-svg
+.PHONY: run dist icons test gallery audit setup-rust setup-gpu setup-web setup-browser fmt-check clippy unit wasm-check bench bench-gpu web browser-test noise-gallery bench-noise bench-noise-export bench-svg
 
 TRUNK_VERSION := 0.21.14
 # Must equal the wasm-bindgen version in Cargo.lock (see crates/marbling-app/Cargo.toml).
@@ -44,13 +44,22 @@ setup-browser:
 	@command -v chromium >/dev/null || { $(SUDO) apt-get update -qq && $(SUDO) DEBIAN_FRONTEND=noninteractive apt-get install -y -qq chromium >/dev/null; }
 	@[ -d tests/browser/node_modules/playwright-core ] && [ -d tests/browser/node_modules/pngjs ] || (cd tests/browser && npm ci --no-audit --no-fund)
 
-## The web app in dist/ (release build, wasm-opt off: see index.html).
+## The web app in dist/: the `web` profile (Cargo.toml, .cargo/config.toml), then
+## tools/build/post_build.mjs (no name section, precompressed .br/.gz, the service
+## worker's list). Prints the module's sizes.
 web: setup-web
 	trunk build --release --offline
 
 ## The static site in dist/ (relative paths: host the folder as it is, under any path).
 dist: web
 	@echo "dist/ is the static site: copy the folder to any web server"
+	@ls -l dist/*.wasm dist/*.wasm.gz dist/*.wasm.br | awk '{print $$5, $$9}'
+
+## Lighthouse on the served dist/ (headless Debian Chromium): performance, accessibility,
+## best practices and the transfer size (see docs/BENCHMARKS.md).
+audit: web setup-browser
+	@[ -d tools/audit/node_modules/lighthouse ] || (cd tools/audit && npm ci --no-audit --no-fund)
+	cd tools/audit && node audit.mjs
 
 ## The app's icons in web/, rendered from web/icon.json.
 icons: $(MARBLING)
@@ -83,8 +92,10 @@ $(MARBLING): $(shell find crates -name '*.rs' -o -name Cargo.toml -o -name '*.wg
 	$(CARGO) build --release -p marbling-cli
 
 ## Renders every traditional pattern to docs/gallery/patterns/NAME.png (the README's
-## gallery) and every example design to docs/gallery/NAME.png.
+## gallery), every example design to docs/gallery/NAME.png, and the app's prerendered
+## gallery thumbnails, web/gallery-thumbnails.jpg.
 gallery: $(MARBLING)
+	$(CARGO) run -p marbling-app --example gallery_atlas
 	@mkdir -p docs/gallery/patterns
 	@for f in examples/patterns/*.json; do \
 	  n=$$(basename $$f .json); $(MARBLING) render $$f -o docs/gallery/patterns/$$n.png --width 240 || exit 1; \

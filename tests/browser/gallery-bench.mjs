@@ -1,7 +1,8 @@
 // Benchmark, not a test: what a first visit waits for in the gallery, and what playing
-// a pattern's making costs. Opens the landing, times the GPU thumbnails until all are
-// drawn, opens a pattern and plays its making at the default speed, printing the
-// player's frames and wall time. `node gallery-bench.mjs [webgpu|webgl2] [pattern]`
+// a pattern's making costs. Opens the landing, times the thumbnails until all are shown
+// (from the prerendered atlas; by the GPU where it is missing, `data-thumbnails-from`),
+// opens a pattern and plays its making at the default speed, printing the player's
+// frames and wall time. `node gallery-bench.mjs [webgpu|webgl2] [pattern]`
 // (needs `make web`); results in docs/BENCHMARKS.md.
 import { attr, clickControl, launch } from './harness.mjs';
 
@@ -18,7 +19,7 @@ for (;;) {
   const [drawn, total] = ((await attr(page, 'data-thumbnails')) ?? '0/1').split('/').map(Number);
   if (drawn !== last) {
     last = drawn;
-    if (drawn === 1 || drawn === total) console.log(`${backend}: thumbnail ${drawn}/${total} at ${((Date.now() - landed) / 1000).toFixed(1)} s after the landing (${((landed - t0) / 1000).toFixed(1)} s after the page opened)`);
+    if (drawn === 1 || drawn === total) console.log(`${backend}: thumbnail ${drawn}/${total} (${await attr(page, 'data-thumbnails-from')}) at ${((Date.now() - landed) / 1000).toFixed(1)} s after the landing (${((landed - t0) / 1000).toFixed(1)} s after the page opened)`);
   }
   if (drawn === total) break;
   await page.waitForTimeout(100);

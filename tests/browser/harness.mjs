@@ -25,11 +25,16 @@ export const BACKENDS = {
   webgl2: ['--use-angle=swiftshader', '--enable-unsafe-swiftshader'],
 };
 
-/** Serves `dir` on 127.0.0.1 (a free port); resolves to its base URL. */
+/**
+ * Serves `dir` on 127.0.0.1 (a free port), as a plain static server does: no compression
+ * negotiated, a content-length on every file. Resolves to its base URL and `sent`, the
+ * body bytes sent per path (the test of a first visit's weight reads it).
+ */
 export function serve(dir) {
   const types = { '.html': 'text/html', '.js': 'text/javascript', '.wasm': 'application/wasm',
-    '.png': 'image/png', '.json': 'application/json', '.css': 'text/css', '.svg': 'image/svg+xml',
-    '.webmanifest': 'application/manifest+json' };
+    '.png': 'image/png', '.jpg': 'image/jpeg', '.json': 'application/json', '.css': 'text/css',
+    '.svg': 'image/svg+xml', '.webmanifest': 'application/manifest+json' };
+  const sent = new Map();
   const server = http.createServer((req, res) => {
     const url = new URL(req.url, 'http://x');
     const file = path.join(dir, url.pathname === '/' ? 'index.html' : decodeURIComponent(url.pathname));
@@ -37,10 +42,22 @@ export function serve(dir) {
       res.writeHead(404).end();
       return;
     }
-    res.writeHead(200, { 'content-type': types[path.extname(file)] || 'application/octet-stream' });
+    const { size, mtime } = fs.statSync(file);
+    const modified = new Date(Math.floor(mtime.getTime() / 1000) * 1000);
+    const since = Date.parse(req.headers['if-modified-since'] ?? '');
+    if (since >= modified.getTime()) {
+      res.writeHead(304).end();
+      return;
+    }
+    res.writeHead(200, { 'content-type': types[path.extname(file)] || 'application/octet-stream', 'content-length': size, 'last-modified': modified.toUTCString() });
+    if (req.method === 'HEAD') {
+      res.end();
+      return;
+    }
+    sent.set(url.pathname, (sent.get(url.pathname) ?? 0) + size);
     fs.createReadStream(file).pipe(res);
   });
-  return new Promise((resolve) => server.listen(0, '127.0.0.1', () => resolve({ server, url: `http://127.0.0.1:${server.address().port}/` })));
+  return new Promise((resolve) => server.listen(0, '127.0.0.1', () => resolve({ server, sent, url: `http://127.0.0.1:${server.address().port}/` })));
 }
 
 export const decode = (buf) => PNG.sync.read(buf);
@@ -99,10 +116,11 @@ export async function shootSheet(page, w, h) {
 }
 
 
-/** Chromium with the flags of `backend` (and `extra` flags), and the site served from dist/. */
-export async function launch(backend, extra = []) {
-  assert.ok(fs.existsSync(path.join(DIST, 'index.html')), 'dist/ is missing: run trunk build --release first');
-  const site = await serve(DIST);
+/** Chromium with the flags of `backend` (and `extra` flags), and the site served from
+ * `dir` (dist/ unless given). */
+export async function launch(backend, extra = [], dir = DIST) {
+  assert.ok(fs.existsSync(path.join(dir, 'index.html')), `${dir} has no index.html: run trunk build --release first`);
+  const site = await serve(dir);
   const browser = await chromium.launch({ executablePath: CHROMIUM, headless: true, args: [...COMMON, ...BACKENDS[backend], ...extra] });
   return { site, browser };
 }

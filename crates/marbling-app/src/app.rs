@@ -89,7 +89,7 @@ impl MarblingApp {
             }
             None => (false, "none".to_owned()),
         };
-        let fallback = crate::gallery::ENTRIES[0]
+        let fallback = crate::gallery::entries()[0]
             .design()
             .unwrap_or_else(|_| blank(NEW_SIZE));
         let mut app = Self::with_design(fallback, backend, gpu);
@@ -154,11 +154,12 @@ impl MarblingApp {
             app.session.recent = crate::recent::Recent::decode(&text);
         }
         app.refresh();
-        app.check_fragment();
         // A first visit (no link, no autosave) lands on the gallery; `?landing=0`
-        // (automation) opens the first pattern instead.
+        // (automation) opens the first pattern instead. A link, good or broken, wins
+        // over the landing (check_fragment).
         app.editor.landing =
             app.editor.pristine && platform::query("landing").as_deref() != Some("0");
+        app.check_fragment();
         app
     }
 
@@ -322,6 +323,14 @@ impl MarblingApp {
             return;
         }
         self.editor.last_fragment = fragment.clone();
+        let is_link = |f: &str| {
+            f.split('&')
+                .any(|p| p.starts_with("n=") || p.starts_with("d="))
+        };
+        if fragment.as_deref().is_some_and(is_link) {
+            // What the link holds, or why it cannot be opened, is shown, not the gallery.
+            self.editor.landing = false;
+        }
         if let Some(f) = fragment
             .as_deref()
             .filter(|f| f.split('&').any(|p| p.starts_with("n=")))
@@ -437,6 +446,7 @@ impl eframe::App for MarblingApp {
     }
 
     fn ui(&mut self, ui: &mut egui::Ui, frame: &mut eframe::Frame) {
+        crate::panic_guard::panic_if_requested();
         let ctx = ui.ctx().clone();
         // Mean interval of the last 60 frames, for the `data-frame-ms` hook.
         let dt = f64::from(ctx.input(|i| i.unstable_dt));
@@ -528,6 +538,8 @@ impl eframe::App for MarblingApp {
                 .show_separator_line(false)
                 .show(ui, |ui| self.player_bar(ui));
         }
+        // Set again by the canvas when it is shown this frame (src/hooks.rs).
+        self.hooks.requested = None;
         egui::CentralPanel::default()
             .frame(egui::Frame::central_panel(ui.style()).fill(egui::Color32::TRANSPARENT))
             .show(ui, |ui| {

@@ -2,8 +2,11 @@
 //! written alternately to two storage slots so that a write cut short (a crash, a
 //! closed tab) leaves the previous copy whole; the reader takes the newest readable one.
 //!
-//! Writes are debounced (`MarblingApp::autosave`, below): at most one every
-//! [`MIN_INTERVAL_MS`], and a last one when the page is hidden or the window closes.
+//! A design of at most [`WRITE_AT_ONCE_OPS`] ops is written in the frame of the edit
+//! itself, before that frame is shown: whatever the screen shows survives a reload, a
+//! closed tab or a crash. Larger designs are written at most once every
+//! [`MIN_INTERVAL_MS`] (`MarblingApp::autosave`, below), the waiting one when the page is
+//! hidden or the window closes, and by the panic hook (src/panic_guard.rs).
 
 use crate::platform;
 use marbling_core::{Design, ImageBackground};
@@ -17,8 +20,12 @@ pub const SLOTS: [&str; 2] = ["marbling.autosave.a", "marbling.autosave.b"];
 pub const LEGACY_KEY: &str = "marbling.autosave.v1";
 /// Where an autosave that could not be read is moved, so that nothing overwrites it.
 pub const UNREADABLE_KEY: &str = "marbling.autosave.unreadable";
-/// Shortest time between two autosave writes while edits keep coming, milliseconds.
+/// Shortest time between two autosave writes of a large design while edits keep coming,
+/// milliseconds.
 pub const MIN_INTERVAL_MS: f64 = 1000.0;
+/// Largest design (ops) written at once on every edit: its record encodes in a few
+/// milliseconds in a browser (`autosave::tests::encoding_cost`).
+pub const WRITE_AT_ONCE_OPS: usize = 5_000;
 /// Largest picture background (its `data:` URI, characters) an autosave holds whole:
 /// the two slots share the browser's ~5 MB of storage, so a larger picture is kept at
 /// [`AUTOSAVE_PICTURE_SIDE`] (*Save JSON* keeps it whole).
@@ -93,9 +100,12 @@ fn storable(design: &Design) -> Option<Design> {
     if image.source().len() <= AUTOSAVE_PICTURE_CHARS {
         return None;
     }
-    let mut last = LAST
-        .lock()
-        .unwrap_or_else(std::sync::PoisonError::into_inner);
+    // Never blocks: a panic hook may write an autosave while this lock is held.
+    let Ok(mut last) = LAST.try_lock() else {
+        let mut d = design.clone();
+        d.background_image = Some(image.downscaled(AUTOSAVE_PICTURE_SIDE, 85));
+        return Some(d);
+    };
     let small = match &*last {
         Some((pixels, small)) if Arc::ptr_eq(pixels, image.pixels_arc()) => {
             small.with_fit(image.fit)
@@ -149,6 +159,22 @@ pub fn unsaved() -> MutexGuard<'static, Unsaved> {
     UNSAVED
         .lock()
         .unwrap_or_else(std::sync::PoisonError::into_inner)
+}
+
+/// Writes the waiting autosave now if the store is free (a panic may have come from
+/// inside it); false when it was busy. Never blocks.
+pub fn try_flush(store: impl FnOnce(&str, &str) -> Result<(), String>) -> bool {
+    match UNSAVED.try_lock() {
+        Ok(mut u) => {
+            u.flush(store);
+            true
+        }
+        Err(std::sync::TryLockError::Poisoned(p)) => {
+            p.into_inner().flush(store);
+            true
+        }
+        Err(std::sync::TryLockError::WouldBlock) => false,
+    }
 }
 
 /// Writes the waiting autosave when the page is hidden or closed (registered once).
@@ -249,14 +275,13 @@ impl crate::app::MarblingApp {
         if !self.session.autosave_pending {
             return;
         }
+        let design = self.editor.history.design_shared();
+        let at_once = design.ops.len() <= WRITE_AT_ONCE_OPS;
         let wait = self.session.last_autosave_ms + MIN_INTERVAL_MS - now;
-        if wait > 0.0 {
+        if wait > 0.0 && !at_once {
             let mut u = unsaved();
-            if u.design
-                .as_ref()
-                .is_none_or(|d| **d != *self.editor.history.design())
-            {
-                u.design = Some(Arc::new(self.editor.history.design().clone()));
+            if u.design.as_ref().is_none_or(|d| !Arc::ptr_eq(d, design)) {
+                u.design = Some(design.clone());
             }
             ctx.request_repaint_after(std::time::Duration::from_secs_f64(wait / 1000.0));
             return;
@@ -288,6 +313,16 @@ impl crate::app::MarblingApp {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// index.html preloads the gallery's thumbnails only when no autosave is stored: it
+    /// names the storage keys itself.
+    #[test]
+    fn the_page_knows_the_autosave_keys() {
+        let page = include_str!("../../../index.html");
+        for key in SLOTS.iter().chain([&LEGACY_KEY]) {
+            assert!(page.contains(&format!("'{key}'")), "index.html lacks {key}");
+        }
+    }
     use marbling_core::synth::{Mix, random_design};
 
     fn record(seq: u64, ops: usize) -> Record {

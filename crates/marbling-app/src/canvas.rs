@@ -347,6 +347,7 @@ impl MarblingApp {
             transient: design_key != self.editor.key,
             live: self.rendering.live_frame.clone(),
         };
+        self.hooks.requested = Some(request.exact_frame());
         let acting =
             ui.input(|i| !i.events.is_empty() || i.pointer.any_down() || i.pointer.is_moving());
         if acting {

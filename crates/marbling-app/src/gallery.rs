@@ -1,74 +1,75 @@
-//! The gallery: the traditional patterns (examples/patterns/, see
-//! `marbling_core::patterns`) and three noise-surface designs, bundled at build time.
+//! The gallery: the traditional patterns, made by their recipes in
+//! `marbling_core::patterns` (the same designs as examples/patterns/, which the core's
+//! tests keep in step), and three noise-surface designs bundled from examples/designs/.
 //! Opening the app without a link or autosave lands on it (src/landing.rs).
 
+use marbling_core::Design;
+use marbling_core::patterns::{self, Params, Pattern};
+
+/// Where an entry's design comes from.
+#[derive(Clone, Copy)]
+enum Source {
+    /// A traditional pattern at its defaults (640 × 400, seed 1).
+    Pattern(&'static Pattern),
+    /// A design document bundled at build time.
+    Json(&'static str),
+}
+
 /// One gallery entry.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy)]
 pub struct Entry {
     /// File name, and the `gallery-<id>` control.
     pub id: &'static str,
-    /// The design document.
-    pub json: &'static str,
+    source: Source,
 }
 
-macro_rules! pattern {
-    ($id:literal) => {
-        Entry {
-            id: $id,
-            json: include_str!(concat!("../../../examples/patterns/", $id, ".json")),
-        }
-    };
+impl std::fmt::Debug for Entry {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "Entry({})", self.id)
+    }
 }
 
 macro_rules! design {
     ($id:literal) => {
         Entry {
             id: $id,
-            json: include_str!(concat!("../../../examples/designs/", $id, ".json")),
+            source: Source::Json(include_str!(concat!(
+                "../../../examples/designs/",
+                $id,
+                ".json"
+            ))),
         }
     };
 }
 
 /// Every entry, in gallery order: the patterns in `marbling_core::patterns::all()`
 /// order, then the noise designs.
-pub const ENTRIES: [Entry; 27] = [
-    pattern!("stone"),
-    pattern!("hair-vein"),
-    pattern!("turkish-spot"),
-    pattern!("french-shell"),
-    pattern!("stormont"),
-    pattern!("spanish-wave"),
-    pattern!("west-end"),
-    pattern!("gel-git"),
-    pattern!("chevron"),
-    pattern!("nonpareil"),
-    pattern!("reversed-nonpareil"),
-    pattern!("wave-nonpareil"),
-    pattern!("feather"),
-    pattern!("bouquet"),
-    pattern!("peacock"),
-    pattern!("bird-wing"),
-    pattern!("serpentine"),
-    pattern!("old-dutch"),
-    pattern!("dutch-scallops"),
-    pattern!("sal"),
-    pattern!("french-curl"),
-    pattern!("nightingale-nest"),
-    pattern!("tulip"),
-    pattern!("hearts"),
-    design!("fbm-marbled"),
-    design!("worley-pigment"),
-    design!("on-paper"),
-];
+pub fn entries() -> Vec<Entry> {
+    patterns::all()
+        .into_iter()
+        .map(|p| Entry {
+            id: p.id,
+            source: Source::Pattern(p),
+        })
+        .chain([
+            design!("fbm-marbled"),
+            design!("worley-pigment"),
+            design!("on-paper"),
+        ])
+        .collect()
+}
 
 impl Entry {
-    /// The design (the bundled files are checked by this module's tests).
-    pub fn design(&self) -> Result<marbling_core::Design, marbling_core::DesignError> {
-        marbling_core::Design::from_json(self.json)
+    /// The design (every entry is checked by this module's tests).
+    pub fn design(&self) -> Result<Design, String> {
+        match self.source {
+            Source::Pattern(p) => p.design(&Params::default()),
+            Source::Json(json) => Design::from_json(json).map_err(|e| e.to_string()),
+        }
     }
 
     /// The name shown under the thumbnail: the recipe's name, else the id.
-    pub fn name(&self, design: &marbling_core::Design) -> String {
+    pub fn name(&self, design: &Design) -> String {
         design
             .recipe
             .as_ref()
@@ -81,26 +82,42 @@ mod tests {
     use super::*;
 
     #[test]
-    fn every_pattern_is_in_the_gallery_in_order_and_every_entry_parses() {
-        let ids: Vec<&str> = marbling_core::patterns::all()
-            .iter()
-            .map(|p| p.id)
-            .collect();
+    fn every_pattern_is_in_the_gallery_in_order_and_every_entry_opens() {
+        let entries = entries();
+        let ids: Vec<&str> = patterns::all().iter().map(|p| p.id).collect();
         assert_eq!(
-            ENTRIES
+            entries
                 .iter()
                 .map(|e| e.id)
                 .take(ids.len())
                 .collect::<Vec<_>>(),
             ids
         );
-        for e in &ENTRIES {
+        assert_eq!(entries.len(), ids.len() + 3);
+        for e in &entries {
             let d = e.design().unwrap_or_else(|err| panic!("{}: {err}", e.id));
             assert!(!e.name(&d).is_empty());
         }
         assert_eq!(
-            ENTRIES[0].name(&ENTRIES[0].design().expect("valid")),
+            entries[0].name(&entries[0].design().expect("valid")),
             "Stone (battal)"
+        );
+    }
+
+    /// The gallery opens the very designs of examples/patterns/ (the README's gallery and
+    /// the files a user downloads).
+    #[test]
+    fn a_pattern_entry_is_its_example_file() {
+        let e = entries()[8];
+        let file = std::fs::read_to_string(format!(
+            "{}/../../examples/patterns/{}.json",
+            env!("CARGO_MANIFEST_DIR"),
+            e.id
+        ))
+        .expect("the example file");
+        assert_eq!(
+            e.design().expect("valid"),
+            Design::from_json(&file).expect("valid")
         );
     }
 }

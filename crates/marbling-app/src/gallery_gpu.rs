@@ -165,7 +165,7 @@ mod tests {
         let Some(g) = crate::test_window::gpu_or_skip() else {
             return;
         };
-        let designs: Vec<Design> = crate::gallery::ENTRIES[..2]
+        let designs: Vec<Design> = crate::gallery::entries()[..2]
             .iter()
             .map(|e| e.design().expect("valid"))
             .collect();

@@ -7,15 +7,13 @@ use crate::{platform, recovery};
 impl MarblingApp {
     /// Keeps the `<body>` automation hooks current (only changed values are written).
     pub(crate) fn update_hooks(&mut self, ctx: &egui::Context) {
-        // Recorded: the exact frame of this design and view is in the canvas texture's
-        // commands. Ready: the GPU has also finished it (the queue's work-done callback).
+        // Recorded: the exact frame this frame's canvas asks for — this design, view,
+        // size, antialiasing and picture — is in the canvas texture's commands. Ready: the
+        // GPU has also finished it (the queue's work-done callback). A zoom, pan or resize
+        // asks for another frame, so ready falls to 0 until that one is drawn.
         let (recorded, finished) = {
             let st = self.rendering.status.lock().ok();
-            let drawn = st.as_ref().and_then(|s| {
-                s.drawn
-                    .as_ref()
-                    .map(|r| (r.design_key, r.pending.is_none()))
-            });
+            let drawn = st.as_ref().and_then(|s| s.drawn.clone());
             let finished = st.as_ref().is_some_and(|s| {
                 s.exact_done.load(std::sync::atomic::Ordering::SeqCst) == s.work.exact
             });
@@ -24,7 +22,11 @@ impl MarblingApp {
                     && !self.editor.landing
                     && self.editor.active.is_none()
                     && self.editor.playback.is_none_or(|p| !p.playing)
-                    && drawn == Some((self.editor.key, true)),
+                    && self.hooks.requested.is_some()
+                    && drawn == self.hooks.requested
+                    && drawn
+                        .as_ref()
+                        .is_some_and(|d| d.design_key == self.editor.key),
                 finished,
             )
         };
@@ -193,6 +195,10 @@ impl MarblingApp {
                     let (drawn, total) = g.progress();
                     format!("{drawn}/{total}")
                 }),
+            ),
+            (
+                "data-thumbnails-from",
+                self.panels.gallery.as_ref().map(|g| g.source().to_owned()),
             ),
             (
                 "data-recovered",

@@ -1,11 +1,13 @@
-//! The gallery view: a card per traditional pattern (thumbnails drawn by the GPU
-//! renderer, src/gallery_gpu.rs) and a blank-sheet card, shown in place of the canvas
-//! when the app opens without a link or an autosave, and by the panel's *Gallery*
-//! button. A card opens its design for editing.
+//! The gallery view: a card per traditional pattern (thumbnails from the prerendered
+//! atlas, src/gallery_atlas.rs; drawn by the GPU renderer, src/gallery_gpu.rs, only where
+//! that file cannot be had) and a blank-sheet card, shown in place of the canvas when the
+//! app opens without a link or an autosave, and by the panel's *Gallery* button. A card
+//! opens its design for editing.
 
 use crate::action::Action;
 use crate::app::MarblingApp;
-use crate::gallery::ENTRIES;
+use crate::gallery::entries;
+use crate::gallery_atlas::{AtlasLoad, Loaded};
 use crate::gallery_gpu::{ThumbnailCallback, cell_uv};
 use eframe::egui_wgpu;
 use egui::{Color32, RichText, Sense, vec2};
@@ -15,22 +17,26 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 
 /// The gallery's designs, their names, and how many thumbnails are drawn.
 pub struct GalleryView {
-    /// The designs in [`ENTRIES`] order (an unreadable entry is left out).
+    /// The entries' designs in gallery order (an unreadable entry is left out).
     pub designs: Arc<Vec<Design>>,
-    /// (entry index, name) of each design.
-    pub names: Vec<(usize, String)>,
-    /// Thumbnails in the atlas so far.
+    /// (entry index, entry id, name) of each design.
+    pub names: Vec<(usize, &'static str, String)>,
+    /// Thumbnails in the GPU atlas so far.
     pub drawn: Arc<AtomicUsize>,
+    /// The prerendered thumbnails on their way, and their texture once in.
+    atlas: AtlasLoad,
+    atlas_texture: Option<egui::TextureHandle>,
 }
 
 impl GalleryView {
-    /// Reads the bundled designs.
-    pub fn load() -> Self {
+    /// Reads the bundled designs and starts loading the prerendered thumbnails.
+    pub fn load(ctx: &egui::Context) -> Self {
         let mut designs = Vec::new();
         let mut names = Vec::new();
-        for (i, e) in ENTRIES.iter().enumerate() {
+        let all = entries();
+        for (i, e) in all.iter().enumerate() {
             if let Ok(d) = e.design() {
-                names.push((i, e.name(&d)));
+                names.push((i, e.id, e.name(&d)));
                 designs.push(d);
             }
         }
@@ -38,12 +44,54 @@ impl GalleryView {
             designs: Arc::new(designs),
             names,
             drawn: Arc::default(),
+            atlas: AtlasLoad::start(ctx),
+            atlas_texture: None,
         }
     }
 
-    /// Thumbnails drawn so far, and how many there are.
+    /// Thumbnails shown so far, and how many there are: all of them once the prerendered
+    /// atlas is in.
     pub fn progress(&self) -> (usize, usize) {
-        (self.drawn.load(Ordering::SeqCst), self.designs.len())
+        let total = self.designs.len();
+        match self.atlas_texture {
+            Some(_) => (total, total),
+            None => (self.drawn.load(Ordering::SeqCst), total),
+        }
+    }
+
+    /// Where the thumbnails come from: `atlas` (prerendered), `gpu` (drawn here, when the
+    /// atlas cannot be had) or `waiting` (the atlas is on its way).
+    pub fn source(&self) -> &'static str {
+        match (&self.atlas_texture, self.atlas.state()) {
+            (Some(_), _) => "atlas",
+            (None, Loaded::Failed(_)) => "gpu",
+            (None, _) => "waiting",
+        }
+    }
+
+    /// The prerendered atlas's texture, made on the first call after it came in; `None`
+    /// while it is on its way or when it failed (logged once).
+    fn atlas_texture(&mut self, ctx: &egui::Context) -> Option<egui::TextureId> {
+        if self.atlas_texture.is_none() {
+            match self.atlas.state() {
+                Loaded::Pixels(p) => {
+                    let image = egui::ColorImage::from_rgba_unmultiplied(
+                        [p.width as usize, p.height as usize],
+                        &p.rgba,
+                    );
+                    self.atlas_texture = Some(ctx.load_texture(
+                        "gallery-thumbnails",
+                        image,
+                        egui::TextureOptions::LINEAR,
+                    ));
+                }
+                Loaded::Failed(why) if self.drawn.load(Ordering::SeqCst) == 0 => {
+                    log::warn!("the gallery's thumbnails are drawn here: {why}");
+                }
+                _ => {}
+            }
+        }
+        self.atlas_texture.as_ref().map(egui::TextureHandle::id)
     }
 }
 
@@ -56,10 +104,17 @@ const CARD: egui::Vec2 = vec2(176.0, 110.0);
 impl MarblingApp {
     /// Shows the gallery in place of the canvas.
     pub(crate) fn landing(&mut self, ui: &mut egui::Ui) {
-        let view = self.panels.gallery.get_or_insert_with(GalleryView::load);
+        let ctx = ui.ctx().clone();
+        let view = self
+            .panels
+            .gallery
+            .get_or_insert_with(|| GalleryView::load(&ctx));
+        let atlas = view.atlas_texture(&ctx);
+        let drawn_here = view.source() == "gpu";
         let (drawn, total) = view.progress();
-        if drawn < total && self.rendering.gpu {
-            // One thumbnail a frame, drawn in egui's prepare step.
+        if drawn_here && drawn < total && self.rendering.gpu {
+            // Without the prerendered atlas: one thumbnail a frame, drawn in egui's
+            // prepare step.
             ui.painter().add(egui_wgpu::Callback::new_paint_callback(
                 ui.max_rect(),
                 ThumbnailCallback {
@@ -71,7 +126,11 @@ impl MarblingApp {
         }
         let designs = view.designs.clone();
         let names = view.names.clone();
-        let texture = self.panels.gallery_texture;
+        let texture = if drawn_here {
+            self.panels.gallery_texture
+        } else {
+            atlas
+        };
         let mut open = None;
         let mut blank = false;
         let mut close = false;
@@ -137,14 +196,22 @@ impl MarblingApp {
                                                 .uv(cell_uv(*n, &designs[*n]))
                                                 .sense(Sense::click()),
                                         ),
-                                        None => ui.allocate_exact_size(CARD, Sense::click()).1,
+                                        None => {
+                                            // The atlas is on its way: the paper colour.
+                                            let (rect, r) =
+                                                ui.allocate_exact_size(CARD, Sense::click());
+                                            let p = designs[*n].background;
+                                            ui.painter().rect_filled(
+                                                rect,
+                                                2,
+                                                Color32::from_rgb(p.r, p.g, p.b),
+                                            );
+                                            r
+                                        }
                                     };
-                                    let (entry, name) = &names[*n];
+                                    let (_, id, name) = &names[*n];
                                     ui.label(RichText::new(name).color(LIGHT));
-                                    drawn_controls.push((
-                                        format!("gallery-{}", ENTRIES[*entry].id),
-                                        r.clone(),
-                                    ));
+                                    drawn_controls.push((format!("gallery-{id}"), r.clone()));
                                     if r.clicked() {
                                         open = Some(*n);
                                     }
@@ -169,7 +236,7 @@ impl MarblingApp {
             self.control(name, &r);
         }
         if let Some(n) = open {
-            let name = names[n].1.clone();
+            let name = names[n].2.clone();
             self.editor.landing = false;
             self.apply(Action::Load {
                 design: designs[n].clone(),

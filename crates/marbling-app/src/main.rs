@@ -22,6 +22,7 @@ fn main() -> eframe::Result {
 #[cfg(target_arch = "wasm32")]
 fn main() {
     eframe::WebLogger::init(log::LevelFilter::Warn).ok();
+    marbling_app::panic_guard::install();
     wasm_bindgen_futures::spawn_local(web::run());
 }
 

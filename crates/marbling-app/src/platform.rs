@@ -291,6 +291,37 @@ mod imp {
         f.forget();
     }
 
+    /// Defines `window.marblingPanic()`, which makes the next frame panic: how the
+    /// browser tests check that a panic keeps the design (src/panic_guard.rs).
+    pub fn expose_panic() {
+        use wasm_bindgen::closure::Closure;
+        let Some(w) = window() else { return };
+        let f = Closure::<dyn Fn()>::new(crate::panic_guard::request_panic);
+        let _ = js_sys::Reflect::set(&w, &"marblingPanic".into(), f.as_ref());
+        f.forget();
+    }
+
+    /// Shows `text` in a red bar at the bottom of the page, in plain HTML (for when the
+    /// canvas can no longer draw).
+    pub fn show_alert(text: &str) {
+        let Some(document) = window().and_then(|w| w.document()) else {
+            return;
+        };
+        let Some(body) = document.body() else { return };
+        let Ok(bar) = document.create_element("div") else {
+            return;
+        };
+        let _ = bar.set_attribute("role", "alert");
+        let _ = bar.set_attribute("id", "marbling-alert");
+        let _ = bar.set_attribute(
+            "style",
+            "position:fixed;left:0;right:0;bottom:0;padding:14px 16px;background:#9b1c1c;\
+             color:#fff;font:16px/1.4 system-ui,sans-serif;z-index:10",
+        );
+        bar.set_text_content(Some(text));
+        let _ = body.append_child(&bar);
+    }
+
     /// True when the screen takes touches (`navigator.maxTouchPoints` > 0), read once.
     pub fn touch_screen() -> bool {
         static TOUCH: std::sync::OnceLock<bool> = std::sync::OnceLock::new();

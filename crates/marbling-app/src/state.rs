@@ -220,6 +220,10 @@ pub struct Hooks {
     pub sheet_on_page: Option<[f64; 3]>,
     /// The noise setup and its spec JSON (for `data-noise`, written when it changes).
     pub noise_json: Option<(crate::noise_settings::NoiseSettings, String)>,
+    /// The exact frame this frame's canvas asks for (design, size, view, antialiasing,
+    /// live picture); `None` when no canvas is shown. `data-ready` is 1 only when it is
+    /// the frame drawn.
+    pub requested: Option<crate::canvas_gpu::FrameRequest>,
 }
 
 /// The panels' own state: the status line, file picks, thumbnails, the panel cache and

@@ -14,8 +14,9 @@ use egui::CornerRadius;
 /// Corner radius of buttons, fields, sliders and swatches, points.
 pub const WIDGET_CORNER_RADIUS: u8 = 2;
 
-/// Applies the look to both themes of `ctx`.
+/// Applies the look to both themes of `ctx`, and the app's fonts (src/fonts.rs).
 pub fn apply(ctx: &egui::Context) {
+    ctx.set_fonts(crate::fonts::definitions());
     ctx.all_styles_mut(small_corners);
 }
 

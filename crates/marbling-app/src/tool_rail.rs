@@ -21,7 +21,7 @@ impl MarblingApp {
                 egui::ScrollArea::vertical().show(ui, |ui| {
                     let open = self.panels.rail_panel_open;
                     let more = ui
-                        .add(egui::Button::selectable(open, "☰ Panel").min_size(full))
+                        .add(egui::Button::selectable(open, "≡ Panel").min_size(full))
                         .on_hover_text("All the controls: files, export, ink, history, noise");
                     self.control("rail-panel", &more);
                     if more.clicked() {

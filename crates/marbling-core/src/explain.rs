@@ -104,7 +104,7 @@ pub fn formula(op: &Op) -> Formula {
             true,
         ),
         Op::Comb(c) => (
-            format!("{TINE_FORWARD}, d = minᵢ |(P − O)·N − tᵢ|"),
+            format!("{TINE_FORWARD}, d = min over i of |(P − O)·N − t_i|"),
             TINE_INVERSE.into(),
             format!(
                 "α = {}, λ = {}, {} tines, M = {}",

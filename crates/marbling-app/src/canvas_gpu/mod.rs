@@ -73,7 +73,7 @@ pub struct StandIn {
 impl FrameRequest {
     /// What identifies the exact frame this request asks for (the rest says how to get
     /// there or what to show meanwhile).
-    fn exact_frame(&self) -> FrameRequest {
+    pub(crate) fn exact_frame(&self) -> FrameRequest {
         FrameRequest {
             pending: None,
             stand_in: None,

@@ -1,0 +1,140 @@
+// The editor tells the truth and never drops an edit, tried as a stranger would: links on
+// a first visit (fresh profiles, no `?landing=0`), a reload at once after an edit (no
+// wait), a panic, and `data-ready` after a zoom compared with the CLI's render.
+import { after, before, describe, test } from 'node:test';
+import assert from 'node:assert/strict';
+import { execFileSync } from 'node:child_process';
+import fs from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
+import zlib from 'node:zlib';
+import {
+  MARBLING, READY_MS, attr, clickControl, crop, decode, differing, example, launch, linkFragment,
+  sheet, shootSheet, waitOps, waitReady,
+} from './harness.mjs';
+
+const GEL = example('gel-git');
+const tmp = (name) => path.join(os.tmpdir(), `marbling-trust-${process.pid}-${name}`);
+const noiseLink = (spec) => `#n=${zlib.deflateRawSync(Buffer.from(JSON.stringify(spec))).toString('base64url')}`;
+
+describe('trust: links, reloads, panics and data-ready on webgl2', () => {
+  let browser;
+  let site;
+  before(async () => {
+    ({ browser, site } = await launch('webgl2'));
+  });
+  after(async () => {
+    await browser?.close();
+    site?.server.close();
+  });
+
+  /** A fresh profile (no autosave: a first visit) at `hash`, with its page errors. */
+  async function firstVisit(hash) {
+    const context = await browser.newContext({ viewport: { width: 1100, height: 760 }, deviceScaleFactor: 1, acceptDownloads: true, serviceWorkers: 'block' });
+    const page = await context.newPage();
+    const errors = [];
+    page.on('pageerror', (e) => errors.push(String(e)));
+    await page.goto(`${site.url}${hash}`);
+    return { context, page, errors };
+  }
+
+  test('a link on a first visit wins over the gallery: the design, the noise, or the error', async () => {
+    const gel = linkFragment(GEL.design, 'gel');
+    const cases = [
+      { hash: gel, ops: GEL.design.ops.length },
+      { hash: '#d=!!not-a-link', error: /^share link: / },
+      { hash: noiseLink({ type: 'worley', frequency: 0.04, feature: 'f2', metric: 'euclidean', seed: 5, palette: 'ember' }), mode: 'noise' },
+      { hash: '#n=@@not-base64', error: /^share link: not valid base64url/ },
+    ];
+    for (const c of cases) {
+      const { context, page, errors } = await firstVisit(c.hash);
+      await waitReady(page);
+      assert.equal(await attr(page, 'data-landing'), null, `${c.hash.slice(0, 12)}: the gallery hid the link`);
+      if (c.ops !== undefined) assert.equal(await attr(page, 'data-ops'), String(c.ops));
+      if (c.error) assert.match(await attr(page, 'data-error') ?? '', c.error, `${c.hash.slice(0, 12)}: no error shown`);
+      else assert.equal(await attr(page, 'data-error'), null);
+      if (c.mode) assert.equal(await attr(page, 'data-mode'), c.mode);
+      // The page stays usable: the gallery opens from the panel.
+      await clickControl(page, 'gallery');
+      await page.waitForFunction(() => document.body.dataset.landing === '1', null, { timeout: READY_MS });
+      assert.deepEqual(errors, []);
+      await context.close();
+    }
+  });
+
+  test('an edit survives a reload made at once, from a link, a gallery card and a blank sheet', async () => {
+    for (const way of ['link', 'card', 'blank']) {
+      const { context, page, errors } = await firstVisit(way === 'link' ? linkFragment(GEL.design, 'gel-reload') : '');
+      let n = GEL.design.ops.length;
+      if (way === 'card') {
+        await page.waitForFunction(() => document.body.dataset.landing === '1', null, { timeout: READY_MS });
+        await clickControl(page, 'gallery-gel-git');
+      } else if (way === 'blank') {
+        await page.waitForFunction(() => document.body.dataset.landing === '1', null, { timeout: READY_MS });
+        await clickControl(page, 'gallery-blank');
+        n = 0;
+      }
+      await waitOps(page, n);
+      const s = await sheet(page);
+      await page.keyboard.press('1'); // drop
+      await page.mouse.click(s.x + 150 * s.scale, s.y + 120 * s.scale);
+      await waitOps(page, n + 1);
+      const edited = await shootSheet(page, 300, 200);
+      await page.reload();
+      await waitOps(page, n + 1);
+      const back = await shootSheet(page, 300, 200);
+      assert.equal(await attr(page, 'data-landing'), null, `${way}: the reload landed on the gallery`);
+      const off = differing(edited.img, back.img, 24);
+      assert.ok(off <= 0.01, `${way}: ${(100 * off).toFixed(2)} % of the sheet differs after the reload`);
+      assert.deepEqual(errors, []);
+      await context.close();
+    }
+  });
+
+  test('a panic keeps the design and says so; the reload shows it', async () => {
+    const { context, page } = await firstVisit(linkFragment(GEL.design, 'gel-panic'));
+    const n = GEL.design.ops.length;
+    await waitOps(page, n);
+    const s = await sheet(page);
+    await page.keyboard.press('1');
+    await page.mouse.click(s.x + 200 * s.scale, s.y + 100 * s.scale);
+    await waitOps(page, n + 1);
+    await page.evaluate(() => window.marblingPanic());
+    await page.waitForFunction(() => document.body.dataset.panic !== undefined, null, { timeout: READY_MS });
+    assert.match(await attr(page, 'data-error'), /Something broke; your design is kept/);
+    assert.match(await page.textContent('#marbling-alert'), /your design is kept — reload/);
+    assert.match(await attr(page, 'data-panic'), /window\.marblingPanic\(\) asked for a panic/);
+    await page.reload();
+    await waitOps(page, n + 1);
+    assert.equal(await attr(page, 'data-error'), null);
+    await context.close();
+  });
+
+  test('data-ready after a zoom means the exact frame of that view is on screen', async () => {
+    const { context, page, errors } = await firstVisit(linkFragment(GEL.design, 'gel-zoom'));
+    const { width: w, height: h } = GEL.design;
+    await waitOps(page, GEL.design.ops.length);
+    const before = await sheet(page);
+    // Zoom out about the sheet's middle: the whole sheet stays on screen.
+    await page.mouse.move(before.x + (w / 2) * before.scale, before.y + (h / 2) * before.scale);
+    await page.mouse.wheel(0, 300);
+    // A new view: ready falls until its exact frame is drawn.
+    await page.waitForFunction((scale) => Number(document.body.dataset.view.split(',')[2]) < scale, before.scale, { timeout: READY_MS });
+    await waitReady(page);
+    const shot = await shootSheet(page, w, h);
+    assert.ok(shot.scale < before.scale * 0.95, `the view did not zoom out (${before.scale} → ${shot.scale})`);
+    const cpuFile = tmp('zoom.png');
+    execFileSync(MARBLING, ['render', GEL.file, '-o', cpuFile, '--scale', String(shot.scale), '--aa', 'rgss']);
+    const cpu = decode(fs.readFileSync(cpuFile));
+    const cw = Math.min(cpu.width, shot.img.width), ch = Math.min(cpu.height, shot.img.height);
+    const off = differing(crop(cpu, cw, ch), crop(shot.img, cw, ch), 24);
+    console.log(`data-ready after a zoom to ${shot.scale.toFixed(3)}: ${(100 * off).toFixed(2)} % of ${cw}×${ch} px differ from the CLI render by > 24/255`);
+    assert.ok(off <= 0.01, `${(100 * off).toFixed(2)} % of the zoomed view differs from the CLI render`);
+    // The comparator sees a wrong scale: the render before the zoom differs.
+    const wrongFile = tmp('zoom-wrong.png');
+    execFileSync(MARBLING, ['render', GEL.file, '-o', wrongFile, '--scale', String(before.scale), '--aa', 'rgss']);
+    assert.ok(differing(crop(decode(fs.readFileSync(wrongFile)), cw, ch), crop(shot.img, cw, ch), 24) > 0.05);
+    assert.deepEqual(errors, []);
+    await context.close();
+  });
+});
