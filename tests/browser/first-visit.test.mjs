@@ -10,9 +10,11 @@ import os from 'node:os';
 import path from 'node:path';
 import { DIST, READY_MS, attr, launch } from './harness.mjs';
 
-/** What a first visit may download, bytes: the module compressed (≤ 2.0 MB brotli, the
- * goal of docs/BENCHMARKS.md "The first visit"), the thumbnails, the page and the icons. */
-const FIRST_VISIT_BUDGET = 2.6e6;
+/** What a first visit from a plain static server may download, bytes: the module as
+ * `.gz` (2.40 MB; Chromium's DecompressionStream has no brotli, and a server that
+ * negotiates sends the 1.85 MB brotli form instead), the thumbnails (0.40 MB), the page,
+ * its script and the icons (docs/BENCHMARKS.md, "The first visit"). */
+const FIRST_VISIT_BUDGET = 3.2e6;
 
 /** dist/ without the plain `.wasm` files: only `.wasm.br` and `.wasm.gz` stand for them. */
 function compressedOnlyCopy() {
@@ -40,15 +42,16 @@ describe('a first visit', () => {
     page.on('pageerror', (e) => errors.push(String(e)));
     // When the gallery shows all its cards, on the page's clock.
     await page.addInitScript(() => {
+      document.addEventListener('DOMContentLoaded', () => { window.marblingLoadingText = document.getElementById('loading')?.textContent; });
       new MutationObserver(() => {
         if (document.body?.dataset.thumbnails?.startsWith('27/') && !window.marblingCardsAt) window.marblingCardsAt = performance.now();
       }).observe(document, { attributes: true, subtree: true, attributeFilter: ['data-thumbnails'] });
     });
     await page.goto(site.url);
-    // The loading note is plain HTML, there before the module starts.
-    assert.match(await page.textContent('#loading'), /Loading the app/);
     await page.waitForFunction(() => document.body.dataset.landing === '1' && document.body.dataset.thumbnails === '27/27', null, { timeout: READY_MS });
     assert.equal(await attr(page, 'data-thumbnails-from'), 'atlas', 'the cards come from the prerendered thumbnails');
+    // The loading note is plain HTML, there before the module starts, gone once it runs.
+    assert.match(await page.evaluate(() => window.marblingLoadingText), /Loading the app/);
     assert.equal(await page.$('#loading'), null, 'the loading note is gone once the app runs');
     const timing = await page.evaluate(() => ({
       arrived: performance.getEntriesByName('marbling-wasm-arrived')[0]?.startTime,

@@ -75,6 +75,37 @@ impl Entry {
             .as_ref()
             .map_or_else(|| self.id.replace('-', " "), |r| r.name.clone())
     }
+
+    /// What its card shows before the design is made: name, sheet size (design px) and
+    /// paper colour. A pattern's are known without making it; a bundled design is read.
+    pub fn card(&self) -> Result<Card, String> {
+        match self.source {
+            Source::Pattern(p) => {
+                let params = Params::default();
+                Ok(Card {
+                    name: p.name.to_owned(),
+                    size: (params.width, params.height),
+                    paper: p.background,
+                })
+            }
+            Source::Json(_) => self.design().map(|d| Card {
+                name: self.name(&d),
+                size: (d.width, d.height),
+                paper: d.background,
+            }),
+        }
+    }
+}
+
+/// An entry's card, known without making its design.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Card {
+    /// Shown under the thumbnail.
+    pub name: String,
+    /// The design's size, design pixels (where its thumbnail sits in the atlas cell).
+    pub size: (u32, u32),
+    /// The paper colour, shown while the thumbnails come.
+    pub paper: marbling_core::Rgb8,
 }
 
 #[cfg(test)]
@@ -96,7 +127,10 @@ mod tests {
         assert_eq!(entries.len(), ids.len() + 3);
         for e in &entries {
             let d = e.design().unwrap_or_else(|err| panic!("{}: {err}", e.id));
-            assert!(!e.name(&d).is_empty());
+            let card = e.card().expect("a card");
+            assert_eq!(card.name, e.name(&d), "{}", e.id);
+            assert_eq!(card.size, (d.width, d.height), "{}", e.id);
+            assert_eq!(card.paper, d.background, "{}", e.id);
         }
         assert_eq!(
             entries[0].name(&entries[0].design().expect("valid")),

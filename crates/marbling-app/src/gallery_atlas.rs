@@ -18,12 +18,17 @@ pub const QUALITY: u8 = 60;
 /// Atlas size, pixels.
 pub const SIZE: [u32; 2] = [CELL[0] * COLUMNS, CELL[1] * ROWS];
 
+/// A design's size, design pixels.
+fn size_of(d: &Design) -> (u32, u32) {
+    (d.width, d.height)
+}
+
 /// The atlas of `designs` (exact renders, RGSS, in their cells) on `surround` (sRGB).
 pub fn render_atlas(designs: &[Design], surround: [u8; 3]) -> Result<RgbaImage, String> {
     let [r, g, b] = surround;
     let mut atlas = RgbaImage::filled(SIZE[0], SIZE[1], [r, g, b, 255]);
     for (n, design) in designs.iter().enumerate().take((COLUMNS * ROWS) as usize) {
-        let [x, y, w, _] = cell_pixels(n, design);
+        let [x, y, w, _] = cell_pixels(n, size_of(design));
         let cell = render(
             design,
             &RenderOptions {
@@ -159,7 +164,7 @@ mod tests {
 
     /// Fraction of the pixels of cell `n` differing by more than `threshold` (0..=255).
     fn cell_diff(a: &[u8], b: &[u8], n: usize, design: &Design, threshold: u8) -> f64 {
-        let [x, y, w, h] = cell_pixels(n, design);
+        let [x, y, w, h] = cell_pixels(n, size_of(design));
         let mut over = 0;
         for yy in y..y + h {
             for xx in x..x + w {
@@ -187,8 +192,8 @@ mod tests {
         let mut moved = RgbaImage::filled(SIZE[0], SIZE[1], [0, 0, 0, 255]);
         // Cell k of `cpu` holds entry checked[k]: compare it with that entry's cell.
         for (k, &n) in checked.iter().enumerate() {
-            let [x0, y0, w, h] = cell_pixels(k, &designs[n]);
-            let [x1, y1, _, _] = cell_pixels(n, &designs[n]);
+            let [x0, y0, w, h] = cell_pixels(k, size_of(&designs[n]));
+            let [x1, y1, _, _] = cell_pixels(n, size_of(&designs[n]));
             for yy in 0..h {
                 let from = (((y0 + yy) * SIZE[0] + x0) * 4) as usize;
                 let to = (((y1 + yy) * SIZE[0] + x1) * 4) as usize;
@@ -208,8 +213,8 @@ mod tests {
             );
         }
         // The comparator tells patterns apart: entry 0's render against entry 1's cell.
-        let [x0, y0, w, h] = cell_pixels(0, &designs[0]);
-        let [x1, y1, ..] = cell_pixels(1, &designs[1]);
+        let [x0, y0, w, h] = cell_pixels(0, size_of(&designs[0]));
+        let [x1, y1, ..] = cell_pixels(1, size_of(&designs[1]));
         let mut swapped = RgbaImage::filled(SIZE[0], SIZE[1], [0, 0, 0, 255]);
         for yy in 0..h {
             let from = (((y0 + yy) * SIZE[0] + x0) * 4) as usize;
@@ -231,7 +236,7 @@ mod tests {
         let mut wants = Vec::new();
         let mut gots = Vec::new();
         for (n, d) in designs.iter().enumerate() {
-            let [x, y, w, h] = cell_pixels(n, d);
+            let [x, y, w, h] = cell_pixels(n, size_of(d));
             let small = render(
                 d,
                 &RenderOptions {

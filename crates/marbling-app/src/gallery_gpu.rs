@@ -65,7 +65,7 @@ impl GalleryGpu {
         let Ok(mut prepared) = renderer.prepare(device, queue, design) else {
             return (self.drawn, None);
         };
-        let [x, y, w, h] = cell_pixels(n, design);
+        let [x, y, w, h] = cell_pixels(n, (design.width, design.height));
         let scale = f64::from(w) / f64::from(design.width);
         prepared.set_view(
             queue,
@@ -85,14 +85,14 @@ impl GalleryGpu {
     }
 }
 
-/// Where thumbnail `n` of `design` lies in the atlas, pixels `[x, y, w, h]`: its cell,
-/// letterboxed to the design's shape.
-pub fn cell_pixels(n: usize, design: &Design) -> [u32; 4] {
+/// Where thumbnail `n` of a design of `size` (design pixels) lies in the atlas, pixels
+/// `[x, y, w, h]`: its cell, letterboxed to the design's shape.
+pub fn cell_pixels(n: usize, size: (u32, u32)) -> [u32; 4] {
     let (col, row) = (n as u32 % COLUMNS, n as u32 / COLUMNS);
-    let s = (f64::from(CELL[0]) / f64::from(design.width))
-        .min(f64::from(CELL[1]) / f64::from(design.height));
-    let w = ((f64::from(design.width) * s).round() as u32).clamp(1, CELL[0]);
-    let h = ((f64::from(design.height) * s).round() as u32).clamp(1, CELL[1]);
+    let (width, height) = (f64::from(size.0), f64::from(size.1));
+    let s = (f64::from(CELL[0]) / width).min(f64::from(CELL[1]) / height);
+    let w = ((width * s).round() as u32).clamp(1, CELL[0]);
+    let h = ((height * s).round() as u32).clamp(1, CELL[1]);
     [
         col * CELL[0] + (CELL[0] - w) / 2,
         row * CELL[1] + (CELL[1] - h) / 2,
@@ -101,9 +101,9 @@ pub fn cell_pixels(n: usize, design: &Design) -> [u32; 4] {
     ]
 }
 
-/// Thumbnail `n`'s rectangle in texture coordinates (0..=1).
-pub fn cell_uv(n: usize, design: &Design) -> egui::Rect {
-    let [x, y, w, h] = cell_pixels(n, design).map(|v| v as f32);
+/// Thumbnail `n`'s rectangle in texture coordinates (0..=1), for a design of `size`.
+pub fn cell_uv(n: usize, size: (u32, u32)) -> egui::Rect {
+    let [x, y, w, h] = cell_pixels(n, size).map(|v| v as f32);
     let (tw, th) = ((CELL[0] * COLUMNS) as f32, (CELL[1] * ROWS) as f32);
     egui::Rect::from_min_size(egui::pos2(x / tw, y / th), egui::vec2(w / tw, h / th))
 }
@@ -150,12 +150,10 @@ mod tests {
 
     #[test]
     fn cells_tile_the_atlas_and_letterbox_other_shapes() {
-        let wide = Design::new(640, 400, marbling_core::Rgb8::new(0, 0, 0));
-        assert_eq!(cell_pixels(0, &wide), [0, 0, 240, 150]);
-        assert_eq!(cell_pixels(7, &wide), [240, 150, 240, 150]);
-        let square = Design::new(500, 500, marbling_core::Rgb8::new(0, 0, 0));
-        assert_eq!(cell_pixels(1, &square), [240 + 45, 0, 150, 150]);
-        let uv = cell_uv(COLUMNS as usize, &wide);
+        assert_eq!(cell_pixels(0, (640, 400)), [0, 0, 240, 150]);
+        assert_eq!(cell_pixels(7, (640, 400)), [240, 150, 240, 150]);
+        assert_eq!(cell_pixels(1, (500, 500)), [240 + 45, 0, 150, 150]);
+        let uv = cell_uv(COLUMNS as usize, (640, 400));
         assert!((uv.min.y - 1.0 / ROWS as f32).abs() < 1e-6 && uv.min.x == 0.0);
     }
 
@@ -188,7 +186,7 @@ mod tests {
         })
         .expect("readback");
         for (n, d) in designs.iter().enumerate() {
-            let [x, y, w, h] = cell_pixels(n, d);
+            let [x, y, w, h] = cell_pixels(n, (d.width, d.height));
             let cpu = render(
                 d,
                 &RenderOptions {

@@ -6,7 +6,7 @@
 
 use crate::action::Action;
 use crate::app::MarblingApp;
-use crate::gallery::entries;
+use crate::gallery::{Card, Entry, entries};
 use crate::gallery_atlas::{AtlasLoad, Loaded};
 use crate::gallery_gpu::{ThumbnailCallback, cell_uv};
 use eframe::egui_wgpu;
@@ -15,44 +15,57 @@ use marbling_core::Design;
 use std::sync::Arc;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
-/// The gallery's designs, their names, and how many thumbnails are drawn.
+/// The gallery's cards, their designs once made, and where the thumbnails come from.
 pub struct GalleryView {
-    /// The entries' designs in gallery order (an unreadable entry is left out).
-    pub designs: Arc<Vec<Design>>,
-    /// (entry index, entry id, name) of each design.
-    pub names: Vec<(usize, &'static str, String)>,
+    /// The entries and their cards, in gallery order (an unreadable entry is left out).
+    cards: Vec<(Entry, Card)>,
+    /// Every card's design, made only where the GPU draws the thumbnails (without the
+    /// prerendered atlas); a card's click makes its own.
+    designs: Option<Arc<Vec<Design>>>,
     /// Thumbnails in the GPU atlas so far.
-    pub drawn: Arc<AtomicUsize>,
+    drawn: Arc<AtomicUsize>,
     /// The prerendered thumbnails on their way, and their texture once in.
     atlas: AtlasLoad,
     atlas_texture: Option<egui::TextureHandle>,
 }
 
 impl GalleryView {
-    /// Reads the bundled designs and starts loading the prerendered thumbnails.
+    /// The cards (no design is made yet) and the prerendered thumbnails, on their way.
     pub fn load(ctx: &egui::Context) -> Self {
-        let mut designs = Vec::new();
-        let mut names = Vec::new();
-        let all = entries();
-        for (i, e) in all.iter().enumerate() {
-            if let Ok(d) = e.design() {
-                names.push((i, e.id, e.name(&d)));
-                designs.push(d);
-            }
-        }
+        let cards = entries()
+            .into_iter()
+            .filter_map(|e| e.card().ok().map(|c| (e, c)))
+            .collect();
         Self {
-            designs: Arc::new(designs),
-            names,
+            cards,
+            designs: None,
             drawn: Arc::default(),
             atlas: AtlasLoad::start(ctx),
             atlas_texture: None,
         }
     }
 
+    /// Every card's design, made on the first call.
+    fn designs(&mut self) -> Arc<Vec<Design>> {
+        self.designs
+            .get_or_insert_with(|| {
+                Arc::new(
+                    self.cards
+                        .iter()
+                        .map(|(e, c)| {
+                            e.design()
+                                .unwrap_or_else(|_| Design::new(c.size.0, c.size.1, c.paper))
+                        })
+                        .collect(),
+                )
+            })
+            .clone()
+    }
+
     /// Thumbnails shown so far, and how many there are: all of them once the prerendered
     /// atlas is in.
     pub fn progress(&self) -> (usize, usize) {
-        let total = self.designs.len();
+        let total = self.cards.len();
         match self.atlas_texture {
             Some(_) => (total, total),
             None => (self.drawn.load(Ordering::SeqCst), total),
@@ -118,14 +131,14 @@ impl MarblingApp {
             ui.painter().add(egui_wgpu::Callback::new_paint_callback(
                 ui.max_rect(),
                 ThumbnailCallback {
-                    designs: view.designs.clone(),
+                    designs: view.designs(),
                     drawn: view.drawn.clone(),
                 },
             ));
             ui.ctx().request_repaint();
         }
-        let designs = view.designs.clone();
-        let names = view.names.clone();
+        let shown: Vec<Card> = view.cards.iter().map(|(_, c)| c.clone()).collect();
+        let ids: Vec<&'static str> = view.cards.iter().map(|(e, _)| e.id).collect();
         let texture = if drawn_here {
             self.panels.gallery_texture
         } else {
@@ -161,7 +174,7 @@ impl MarblingApp {
             let gap = ui.spacing().item_spacing.x;
             let cols = (((ui.available_width() + gap) / (CARD.x + gap)).floor() as usize).max(1);
             let cards: Vec<Option<usize>> = std::iter::once(None)
-                .chain((0..designs.len()).map(Some))
+                .chain((0..shown.len()).map(Some))
                 .collect();
             for row in cards.chunks(cols) {
                 ui.horizontal(|ui| {
@@ -193,14 +206,14 @@ impl MarblingApp {
                                     let r = match texture {
                                         Some(id) => ui.add(
                                             egui::Image::new((id, CARD))
-                                                .uv(cell_uv(*n, &designs[*n]))
+                                                .uv(cell_uv(*n, shown[*n].size))
                                                 .sense(Sense::click()),
                                         ),
                                         None => {
                                             // The atlas is on its way: the paper colour.
                                             let (rect, r) =
                                                 ui.allocate_exact_size(CARD, Sense::click());
-                                            let p = designs[*n].background;
+                                            let p = shown[*n].paper;
                                             ui.painter().rect_filled(
                                                 rect,
                                                 2,
@@ -209,9 +222,9 @@ impl MarblingApp {
                                             r
                                         }
                                     };
-                                    let (_, id, name) = &names[*n];
-                                    ui.label(RichText::new(name).color(LIGHT));
-                                    drawn_controls.push((format!("gallery-{id}"), r.clone()));
+                                    ui.label(RichText::new(&shown[*n].name).color(LIGHT));
+                                    drawn_controls
+                                        .push((format!("gallery-{}", ids[*n]), r.clone()));
                                     if r.clicked() {
                                         open = Some(*n);
                                     }
@@ -235,14 +248,21 @@ impl MarblingApp {
         for (name, r) in drawn_controls {
             self.control(name, &r);
         }
-        if let Some(n) = open {
-            let name = names[n].2.clone();
+        let opened = open.and_then(|n| {
+            let view = self.panels.gallery.as_ref()?;
+            let (entry, card) = view.cards.get(n)?;
+            Some((entry.design(), card.name.clone()))
+        });
+        if let Some((design, name)) = opened {
             self.editor.landing = false;
-            self.apply(Action::Load {
-                design: designs[n].clone(),
-                from: name,
-                from_link: false,
-            });
+            match design {
+                Ok(design) => self.apply(Action::Load {
+                    design,
+                    from: name,
+                    from_link: false,
+                }),
+                Err(e) => self.error(format!("{name}: {e}")),
+            }
         } else if blank {
             self.editor.landing = false;
             self.apply(Action::NewSheet);
