@@ -84,20 +84,20 @@ for (const backend of Object.keys(BACKENDS)) {
       await context.close();
     });
 
-    test('A first visit lands on the gallery: GPU thumbnails, a pattern opens, a blank sheet', webgl2Only, async () => {
+    test('A first visit lands on the gallery: prerendered thumbnails, a pattern opens, a blank sheet', webgl2Only, async () => {
       const context = await browser.newContext({ viewport: { width: 1300, height: 820 }, deviceScaleFactor: 1, acceptDownloads: true });
       const page = await context.newPage();
       const errors = [];
       page.on('pageerror', (e) => errors.push(String(e)));
       await page.goto(site.url);
       await page.waitForFunction(() => document.body.dataset.landing === '1', null, { timeout: READY_MS });
-      // Thumbnails are drawn one a frame by the GPU renderer into one atlas.
-      await page.waitForFunction(() => Number((document.body.dataset.thumbnails ?? '0/1').split('/')[0]) >= 2, null, { timeout: READY_MS });
-      assert.match(await attr(page, 'data-thumbnails'), /^\d+\/27$/);
+      // Every card shows its thumbnail from the prerendered atlas.
+      await page.waitForFunction(() => document.body.dataset.thumbnails === '27/27', null, { timeout: READY_MS });
+      assert.equal(await attr(page, 'data-thumbnails-from'), 'atlas');
       assert.equal(await attr(page, 'data-ready'), null, 'no canvas behind the gallery');
       const all = await controls(page);
       for (const id of ['gallery-blank', 'gallery-stone', 'gallery-chevron', 'gallery-hearts', 'gallery-close']) assert.ok(all[id], `no ${id}`);
-      // The stone card shows the stone pattern: the GPU thumbnail against the CPU render.
+      // The stone card shows the stone pattern: the thumbnail against the CPU render.
       const c = all['gallery-stone'];
       const shot = decode(await page.screenshot({ clip: { x: c.x, y: c.y, width: c.w, height: c.h }, timeout: READY_MS }));
       const cpu = tmp(`stone-thumb-${backend}.png`);

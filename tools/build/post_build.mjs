@@ -4,7 +4,9 @@
 //      debuggers: 1.3 MB raw, 0.26 MB of the brotli form).
 //   2. `.br` (brotli, quality 11) and `.gz` (gzip -9) beside the module: index.html's
 //      `marblingFetchWasm` fetches one of them, so any static server sends the small form.
-//   3. web/sw.js's BUILD (a hash of every file's name and size) and FILES (every file but
+//   3. `_headers`: cache advice for static hosts (hashed files immutable, the page
+//      revalidated).
+//   4. web/sw.js's BUILD (a hash of every file's name and size) and FILES (every file but
 //      the plain module, whose compressed forms stand for it).
 // Prints the module's sizes, bytes, as `wasm raw … gzip … brotli …` (docs/BENCHMARKS.md,
 // "The first visit", which also says why binaryen's wasm-opt is not run).
@@ -83,8 +85,18 @@ for (const m of modules) {
   console.error(`wasm raw ${raw.length} gzip ${gz.length} brotli ${br.length} (${m})`);
 }
 
-// 3. The service worker's build version and file list.
-const all = files(staging).filter((f) => f !== 'sw.js');
+// 3. Cache advice for static hosts that read a `_headers` file (Netlify, Cloudflare
+// Pages; others take the same rules from their own configuration): the files whose names
+// carry a content hash never change; the page and the service worker are revalidated.
+fs.writeFileSync(path.join(staging, '_headers'), [
+  '/*', '  Cache-Control: no-cache',
+  ...modules.flatMap((m) => [m, `${m}.br`, `${m}.gz`, m.replace(/_bg\.wasm$/, '.js')])
+    .flatMap((f) => [`/${f}`, '  Cache-Control: public, max-age=31536000, immutable']),
+  '',
+].join('\n'));
+
+// 4. The service worker's build version and file list.
+const all = files(staging).filter((f) => f !== 'sw.js' && f !== '_headers');
 const build = createHash('sha256')
   .update(all.map((f) => `${f} ${fs.statSync(path.join(staging, f)).size}\n`).join(''))
   .digest('hex').slice(0, 16);
