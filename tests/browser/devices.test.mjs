@@ -10,6 +10,7 @@ import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
+import zlib from 'node:zlib';
 import {
   DIST, MARBLING, READY_MS, ROOT, SHOTS, attr, controls, crop, decode, differing, example, launch,
   linkFragment, openPage, serve, sheet, shootSheet, waitOps, waitReady,
@@ -277,22 +278,29 @@ test('installable and offline: manifest, icons, and the service worker serves th
 
 
   // Each build's service worker lists that build's files under a version of its own, so
-  // installing a new build's worker replaces the old cache (web/precache.sh on a staging
-  // folder, as Trunk runs it).
+  // installing a new build's worker replaces the old cache; the module is listed in its
+  // compressed forms only, and its name section is gone (tools/build/post_build.mjs on a
+  // staging folder, as Trunk runs it).
   const stage = fs.mkdtempSync(path.join(os.tmpdir(), 'marbling-stage-'));
   const stageBuild = () => {
     fs.copyFileSync(path.join(ROOT, 'web/sw.js'), path.join(stage, 'sw.js'));
-    execFileSync('sh', [path.join(ROOT, 'web/precache.sh')], { env: { ...process.env, TRUNK_STAGING_DIR: stage } });
+    execFileSync(process.execPath, [path.join(ROOT, 'tools/build/post_build.mjs')], { env: { ...process.env, TRUNK_STAGING_DIR: stage }, stdio: 'pipe' });
     const sw = fs.readFileSync(path.join(stage, 'sw.js'), 'utf8');
     return { version: /const BUILD = '([0-9a-f]{16})'/.exec(sw)?.[1], files: JSON.parse(/const FILES = (\[.*\]);/.exec(sw)[1].replace(/'/g, '"')) };
   };
+  // Two tiny modules: the header, a custom section "name" (dropped) and one "keep" (kept).
+  const header = Buffer.from('0061736d01000000', 'hex');
+  const custom = (name, bytes) => Buffer.concat([Buffer.from([0, 1 + name.length + bytes.length, name.length]), Buffer.from(name), Buffer.from(bytes)]);
   fs.writeFileSync(path.join(stage, 'index.html'), 'page');
-  fs.writeFileSync(path.join(stage, 'app-1.wasm'), 'one');
+  fs.writeFileSync(path.join(stage, 'app-1.wasm'), Buffer.concat([header, custom('name', [1, 2, 3]), custom('keep', [4])]));
   const first = stageBuild();
-  fs.rmSync(path.join(stage, 'app-1.wasm'));
-  fs.writeFileSync(path.join(stage, 'app-2.wasm'), 'two!');
+  assert.deepEqual(fs.readFileSync(path.join(stage, 'app-1.wasm')), Buffer.concat([header, custom('keep', [4])]), 'the name section stays');
+  assert.deepEqual(zlib.gunzipSync(fs.readFileSync(path.join(stage, 'app-1.wasm.gz'))), fs.readFileSync(path.join(stage, 'app-1.wasm')));
+  assert.deepEqual(zlib.brotliDecompressSync(fs.readFileSync(path.join(stage, 'app-1.wasm.br'))), fs.readFileSync(path.join(stage, 'app-1.wasm')));
+  for (const f of fs.readdirSync(stage).filter((f) => f.startsWith('app-1'))) fs.rmSync(path.join(stage, f));
+  fs.writeFileSync(path.join(stage, 'app-2.wasm'), Buffer.concat([header, custom('keep', [5, 6])]));
   const second = stageBuild();
-  assert.deepEqual([first.files, second.files], [['./', 'app-1.wasm', 'index.html'], ['./', 'app-2.wasm', 'index.html']]);
+  assert.deepEqual([first.files, second.files], [['./', 'app-1.wasm.br', 'app-1.wasm.gz', 'index.html'], ['./', 'app-2.wasm.br', 'app-2.wasm.gz', 'index.html']]);
   assert.ok(first.version && second.version && first.version !== second.version, `versions ${first.version}, ${second.version}`);
   fs.rmSync(stage, { recursive: true });
 
