@@ -2,7 +2,7 @@
 # `make fonts`: the app's monospace font, Hack (egui's default, MIT and Bitstream Vera
 # licences: crates/marbling-app/fonts/Hack-LICENSE.txt), cut to the characters a
 # marbling playground shows — Latin-1, Greek, punctuation, arrows, mathematical
-# operators, technical symbols, box drawing, shapes and dingbats — for the web module's
+# operators and geometric shapes — for the web module's
 # size (docs/BENCHMARKS.md, "The first visit"). Ubuntu Light, the proportional font, is
 # used whole (its licence asks a cut copy to be renamed). src/fonts.rs loads both; its
 # test checks that every character of the app's text has a glyph.
@@ -17,7 +17,7 @@ for p in json.load(sys.stdin)["packages"]:
         break')
 out=crates/marbling-app/fonts
 python3 -m fontTools.subset "$src/Hack-Regular.ttf" \
-  --unicodes='U+0020-007E,U+00A0-00FF,U+0131,U+0152-0153,U+0160-0161,U+0178,U+017D-017E,U+0192,U+02C6-02DC,U+0370-03FF,U+2000-206F,U+2070-209F,U+20AC,U+2100-214F,U+2190-21FF,U+2200-22FF,U+2300-23FF,U+2500-259F,U+25A0-25FF,U+2600-26FF,U+2700-27BF,U+FFFD' \
+  --unicodes='U+0020-007E,U+00A0-00FF,U+0131,U+0152-0153,U+0160-0161,U+0178,U+017D-017E,U+0192,U+02C6-02DC,U+0370-03FF,U+2000-206F,U+2070-209F,U+20AC,U+2100-214F,U+2190-21FF,U+2200-22FF,U+25A0-25FF,U+FFFD' \
   --layout-features='*' --no-hinting --desubroutinize \
   --output-file="$out/Hack-Regular-subset.ttf"
 cp "$src/Hack-Regular.txt" "$out/Hack-LICENSE.txt"

@@ -1,13 +1,13 @@
 //! The app's fonts: egui's default Ubuntu Light (proportional) whole, and Hack
 //! (monospace; also where the panels' arrows and shapes come from) cut to the characters
 //! the playground shows by `make fonts` (tools/fonts/subset.sh): the web module carries
-//! 91 KB of Hack instead of 309 KB (docs/BENCHMARKS.md, "The first visit"). The test
+//! 77 KB of Hack instead of 309 KB (docs/BENCHMARKS.md, "The first visit"). The test
 //! below checks that every character of the app's text has a glyph.
 
 use egui::{FontData, FontDefinitions, FontFamily, FontTweak};
 use std::sync::Arc;
 
-/// Hack cut to Latin-1, Greek, punctuation, arrows, operators, shapes and symbols.
+/// Hack cut to Latin-1, Greek, punctuation, arrows, operators and shapes.
 const HACK_SUBSET: &[u8] = include_bytes!("../fonts/Hack-Regular-subset.ttf");
 
 /// Egui's default families, with the cut Hack, and Hack after Ubuntu Light for the
