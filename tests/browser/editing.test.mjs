@@ -144,6 +144,19 @@ for (const backend of Object.keys(BACKENDS)) {
 
     test('Export SVG downloads what `marbling svg` writes', webgl2Only, async () => {
       const { page, context, errors } = await openPage(browser, site);
+      // The trace runs a frame's budget at a time: the page draws while it runs and
+      // shows how far it got, and Cancel stops it without a file.
+      let files = 0;
+      page.on('download', () => files++);
+      await clickControl(page, 'export-svg');
+      await page.waitForFunction(() => /^svg \d+%$/.test(document.body.dataset.exporting ?? ''), null, { timeout: READY_MS });
+      const frames = Number(await attr(page, 'data-frames'));
+      await page.waitForFunction((n) => Number(document.body.dataset.frames) >= n, frames + 2, { timeout: READY_MS });
+      assert.match(await attr(page, 'data-exporting') ?? '', /^svg \d+%$/, 'the trace ended within three frames: nothing was spread out');
+      await clickControl(page, 'export-cancel');
+      await page.waitForFunction(() => document.body.dataset.exporting === undefined, null, { timeout: READY_MS });
+      await page.waitForTimeout(500);
+      assert.equal(files, 0, 'a cancelled export still offered its file');
       const svg = await download(page, 'export-svg');
       assert.equal(svg.name, `marbling-${STONE.design.ops.length}ops-${STONE.design.width}x${STONE.design.height}.svg`);
       const out = tmp(`stone-${backend}.svg`);

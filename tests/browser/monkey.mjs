@@ -91,7 +91,18 @@ export async function run(browser, site, { seed, events }) {
   if ((await attr(page, 'data-landing')) === '1') await clickControl(page, 'gallery-close');
   if ((await attr(page, 'data-mode')) !== 'marbling') await clickControl(page, 'mode-marbling');
   if ((await controls(page))['player-close']) await clickControl(page, 'player-close');
-  const saved = (await download(page, 'save-json')).bytes.toString('utf8');
+  // The 3D view's window floats over the canvas: closed from the panel.
+  if ((await controls(page))['view3d-sphere']) await clickControl(page, 'view3d');
+  let saved;
+  try {
+    saved = (await download(page, 'save-json')).bytes.toString('utf8');
+  } catch (e) {
+    // What the page showed when Save JSON gave nothing: a screenshot and the hooks.
+    const shot = path.join(os.tmpdir(), `marbling-monkey-${seed}-save.png`);
+    await page.screenshot({ path: shot }).catch(() => {});
+    const hooks = await page.evaluate(() => ({ ...document.body.dataset, controls: undefined }));
+    throw new Error(`Save JSON gave no file (${e.message.split('\n')[0]}); page: ${JSON.stringify(hooks)}; screenshot ${shot} ${where}`);
+  }
   const design = JSON.parse(saved);
   // A reload restores it, fitted to the window: the CLI's render of the saved JSON is
   // what the page shows.

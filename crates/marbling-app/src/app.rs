@@ -469,6 +469,7 @@ impl eframe::App for MarblingApp {
         self.advance_playback(&ctx);
         self.follow_recording();
         self.advance_export(frame, &ctx);
+        self.advance_svg_export(&ctx);
         self.advance_noise_export(&ctx);
         self.follow_noise();
         self.hooks.controls.clear();

@@ -235,7 +235,7 @@ impl PngExport {
             self.budget.record_frame(now - last, IDLE_FRAME_MS);
         }
         self.last_draw_ms = Some(now);
-        let per = per_pixel(self.prepared.op_count(), self.antialias.samples().len());
+        let per = per_pixel(self.prepared.walk_cost(), self.antialias.samples().len());
         let pixels = (self.budget.units() / per).max(1);
         let Some((tile, target, refinement)) = &mut self.drawing else {
             return;
@@ -347,22 +347,6 @@ impl crate::app::MarblingApp {
                 Err(e) => self.error(format!("Export PNG: {e}")),
             },
             Err(e) => self.error(format!("Export PNG: {e}")),
-        }
-    }
-
-    /// Export SVG: the design's ink outlines traced forward (T = 1 design pixel).
-    pub(crate) fn export_svg(&mut self) {
-        let design = self.editor.history.design();
-        let opts = marbling_vector::TraceOptions::default();
-        match marbling_vector::design_to_svg(design, &opts) {
-            Ok(svg) => {
-                let name = export_file_name(design, (design.width, design.height), "svg");
-                match platform::save_file(&name, "image/svg+xml", svg.as_bytes()) {
-                    Ok(()) => self.info(format!("exported {name} ({} bytes)", svg.len())),
-                    Err(e) => self.error(e),
-                }
-            }
-            Err(e) => self.error(format!("Export SVG: {e}")),
         }
     }
 }

@@ -50,6 +50,7 @@ pub mod shown;
 mod state;
 mod stroke;
 pub mod style;
+pub mod svg_export;
 #[cfg(test)]
 mod test_window;
 pub mod thumbnails;

@@ -177,6 +177,17 @@ impl MarblingApp {
                     self.rendering.export = None;
                     self.info("export cancelled");
                 }
+            } else if let Some(export) = &self.rendering.svg_export {
+                ui.label(format!(
+                    "tracing the SVG… {:.0} %",
+                    100.0 * export.progress()
+                ));
+                let cancel = ui.button("Cancel");
+                self.control("export-cancel", &cancel);
+                if cancel.clicked() {
+                    self.rendering.svg_export = None;
+                    self.info("export cancelled");
+                }
             } else {
                 let png = ui
                     .button("Export PNG")
@@ -190,7 +201,7 @@ impl MarblingApp {
                     .on_hover_text("Ink outlines traced forward, within 1 px");
                 self.control("export-svg", &svg);
                 if svg.clicked() {
-                    self.export_svg();
+                    self.start_svg_export();
                 }
             }
             let view3d = ui

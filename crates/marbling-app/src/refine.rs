@@ -45,9 +45,11 @@ const SAMPLE_OVERHEAD_OPS: u64 = 4;
 /// for a queue that does not hold frames back).
 pub const MAX_IN_FLIGHT: usize = 12;
 
-/// Op-samples of one pixel of a render of `ops` ops with `samples` samples per pixel.
-pub fn per_pixel(ops: usize, samples: usize) -> u64 {
-    (ops as u64 + SAMPLE_OVERHEAD_OPS) * samples.max(1) as u64
+/// Op-samples of one pixel of a render of ops costing `cost` simple ops
+/// ([`marbling_core::Op::walk_cost`]: a comb counts its tines, a stylus its segments)
+/// with `samples` samples per pixel.
+pub fn per_pixel(cost: u64, samples: usize) -> u64 {
+    (cost + SAMPLE_OVERHEAD_OPS) * samples.max(1) as u64
 }
 
 /// How much refinement a frame draws, op-samples, steered by frame intervals.

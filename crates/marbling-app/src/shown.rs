@@ -50,6 +50,12 @@ impl Shown {
         self.prefix().op_count()
     }
 
+    /// What walking one sample back through the ops shown costs, in simple ops
+    /// ([`Op::walk_cost`]).
+    pub fn walk_cost(&self) -> u64 {
+        self.prefix().ops().map(Op::walk_cost).sum()
+    }
+
     /// How many ops those count as toward [`marbling_core::MAX_OPS`] (every drop of a
     /// pattern counts).
     pub fn counted_ops(&self) -> usize {

@@ -166,6 +166,8 @@ pub struct Rendering {
     pub fast_paint: crate::fast_paint::FastPaint,
     /// A PNG export in progress and the file name it will get.
     pub export: Option<(PngExport, String)>,
+    /// An SVG export in progress (src/svg_export.rs).
+    pub svg_export: Option<crate::svg_export::SvgExport>,
     /// When the user last acted on the page (egui's clock, seconds): the canvas refines
     /// at its idle pace a while after.
     pub last_input_s: f64,
@@ -194,6 +196,7 @@ impl Rendering {
             parked: false,
             fast_paint: Default::default(),
             export: None,
+            svg_export: None,
             last_input_s: 0.0,
             #[cfg(target_arch = "wasm32")]
             video: None,

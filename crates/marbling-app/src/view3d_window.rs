@@ -118,8 +118,13 @@ impl View3dWindow {
             return;
         }
         let mut open = self.open;
+        // It opens at the window's top right, over the canvas: the panel's controls
+        // (Save, Export, the history) stay in reach.
+        let corner = ctx.content_rect().right_top() + egui::vec2(-8.0, 8.0);
         egui::Window::new("3D view")
             .open(&mut open)
+            .pivot(egui::Align2::RIGHT_TOP)
+            .default_pos(corner)
             .default_width(560.0)
             .resizable(true)
             .show(ctx, |ui| {

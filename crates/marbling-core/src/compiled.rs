@@ -291,6 +291,18 @@ impl CompiledOp {
         }
     }
 
+    /// What walking one point back through this op costs, in units of a simple op (a
+    /// comb one per tine, a stylus [`crate::ops::STYLUS_SEGMENT_COST`] per segment, a
+    /// jiggle [`crate::ops::JIGGLE_COST`]).
+    pub fn walk_cost(&self) -> u64 {
+        match self {
+            Self::Tines { offsets, .. } => offsets.len() as u64,
+            Self::Stylus { segments } => crate::ops::STYLUS_SEGMENT_COST * segments.len() as u64,
+            Self::Jiggle { .. } => crate::ops::JIGGLE_COST,
+            _ => 1,
+        }
+    }
+
     /// The ink this op lays, if it lays any.
     pub fn ink(&self) -> Option<Rgb8> {
         match self {
@@ -550,6 +562,19 @@ mod tests {
     use super::*;
     use crate::Back;
     use crate::synth::{Mix, SplitMix64, random_design};
+
+    #[test]
+    fn an_ops_walk_cost_is_that_of_its_compiled_forms() {
+        for mix in [Mix::AllTypes, Mix::Stylus] {
+            let design = random_design(5, 300, 200, 200, mix);
+            for op in &design.ops {
+                let compiled: u64 = CompiledOp::of(op).iter().map(CompiledOp::walk_cost).sum();
+                assert_eq!(op.walk_cost(), compiled, "{op:?}");
+            }
+            // The comparison can fail: combs, styli and jiggles cost more than one.
+            assert!(design.ops.iter().any(|op| op.walk_cost() > 1));
+        }
+    }
 
     fn close(a: Point, b: Point) -> bool {
         (a - b).hypot() <= 1e-9 * (1.0 + a.to_vec2().hypot())

@@ -534,6 +534,12 @@ impl PreparedDesign {
         self.records.len()
     }
 
+    /// What walking one sample back through every op costs, in simple ops
+    /// ([`Op::walk_cost`]): renderers size their tiles by it.
+    pub fn walk_cost(&self) -> u64 {
+        self.uploaded.iter().map(Op::walk_cost).sum()
+    }
+
     /// Records written into the op texture since it was prepared (an update that only
     /// appends writes only the new ones; one record per op for most ops).
     pub fn ops_written(&self) -> u64 {

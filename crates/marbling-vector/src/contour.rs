@@ -15,7 +15,7 @@
 
 use crate::cellhash::CellHasher;
 use crate::dense::take_dense_pixels;
-use crate::labels::{LabelGrid, OUTSIDE};
+use crate::labels::{LabelGrid, LabelWalk, OUTSIDE};
 use crate::simplify::simplify_ring;
 use crate::surface_layers::{Channels, RasterLayer};
 use crate::{Method, Outline, TraceOptions, TraceStats, VectorError};
@@ -52,83 +52,225 @@ pub fn contour_outlines(
     opts: &TraceOptions,
     underlay: Option<&RgbaImage>,
 ) -> Result<Contoured, VectorError> {
+    let grid = label_walk(design, ops, handed, opts).finish_now();
+    let mut job = ContourJob::new(grid, design, ops, handed, opts, underlay)?;
+    while !job.step(usize::MAX) {}
+    Ok(job.finish())
+}
+
+/// The label raster that the contour method reads the regions `handed` off: spacing
+/// `contour_step`·T, coarsened to at most [`MAX_SAMPLES`] samples.
+pub fn label_walk(
+    design: &Design,
+    ops: &[CompiledOp],
+    handed: &[usize],
+    opts: &TraceOptions,
+) -> LabelWalk {
     let area = f64::from(design.width) * f64::from(design.height);
     let step = (opts.spacing() * opts.contour_step).max((area / MAX_SAMPLES).sqrt());
+    LabelWalk::new(design, step, wanted(ops, handed))
+}
+
+/// Which labels are handed regions: label j + 1 for each compiled op j in `handed`.
+fn wanted(ops: &[CompiledOp], handed: &[usize]) -> Vec<bool> {
     let mut wanted = vec![false; ops.len() + 1];
     for &j in handed {
         wanted[j + 1] = true;
     }
-    let mut grid = LabelGrid::new(design, step, &wanted);
-    let size = output_size(design, opts.scale)?;
-    let mut palette = vec![design.background];
-    palette.extend(ops.iter().map(|o| o.ink().unwrap_or(design.background)));
-    let (patch, dense_pixels) = take_dense_pixels(&mut grid, opts.scale, size, &palette, underlay);
-    let dense = if dense_pixels > 0 {
-        Some(RasterLayer::new(patch, Channels::Rgba)?)
-    } else {
-        None
-    };
-    let reach = (opts.contour_reach / opts.scale / step).ceil() as usize;
-    let shift = |inner: u32, out: u32| {
-        let (Some(a), Some(b)) = (palette.get(inner as usize), palette.get(out as usize)) else {
+    wanted
+}
+
+/// Where a visible crossing between two labels sits ([`srgb_blend_shift`] in grid
+/// steps, within ±[`MAX_SHIFT`]).
+struct Shift {
+    /// Colour of each label: the background, then each compiled op's ink.
+    palette: Vec<Rgb8>,
+    /// A noise or image underlay: edges against the background do not move.
+    underlay: bool,
+    /// Output pixels per grid step.
+    step_px: f64,
+}
+
+impl Shift {
+    fn at(&self, inner: u32, out: u32) -> f64 {
+        let (Some(a), Some(b)) = (
+            self.palette.get(inner as usize),
+            self.palette.get(out as usize),
+        ) else {
             return 0.0;
         };
-        if underlay.is_some() && (inner == 0 || out == 0) {
+        if self.underlay && (inner == 0 || out == 0) {
             return 0.0;
         }
-        (srgb_blend_shift(*a, *b) / (step * opts.scale)).clamp(-MAX_SHIFT, MAX_SHIFT)
-    };
-    let found = contours(&grid, &wanted, reach, &shift);
-    // Visible parts may move by one grid step (T/4 by default).
-    let epsilon = step;
-    // Hidden parts of a ring lie `reach` inside newer paint: they may move by half that.
-    let hidden_epsilon = (reach as f64 * step / 2.0).max(epsilon);
-    let traced: Vec<(Outline, usize)> = found
-        .into_par_iter()
-        .filter_map(|(label, rings)| {
-            let op_index = label as usize - 1;
-            let refined = rings.iter().map(Vec::len).sum();
-            let rings: Vec<Vec<Point>> = rings
-                .iter()
-                .map(|ring| {
-                    let (points, hidden): (Vec<Point>, Vec<bool>) = ring.iter().copied().unzip();
-                    simplify_ring(&points, &hidden, epsilon, hidden_epsilon)
-                })
-                .filter(|ring| ring.len() >= 3)
-                .collect();
-            let color = ops[op_index].ink()?;
-            (!rings.is_empty()).then_some((
-                Outline {
-                    op_index,
-                    color,
-                    method: Method::Contour,
-                    rings,
-                },
-                refined,
-            ))
-        })
-        .collect();
-    let mut stats = TraceStats {
-        regions: handed.len(),
-        culled: handed.len() - traced.len(),
-        contour_regions: handed.len(),
-        contour_samples: grid.walked,
-        contour_step: step * opts.scale,
-        dense_pixels,
-        ..TraceStats::default()
-    };
-    let mut outlines = Vec::with_capacity(traced.len());
-    for (outline, refined) in traced {
-        stats.refined_vertices += refined;
-        stats.vertices += outline.vertices();
-        stats.rings += outline.rings.len();
-        outlines.push(outline);
+        (srgb_blend_shift(*a, *b) / self.step_px).clamp(-MAX_SHIFT, MAX_SHIFT)
     }
-    Ok(Contoured {
-        outlines,
-        dense,
-        stats,
-    })
+}
+
+/// The contour method on a finished label raster, a few tiles or regions at a time
+/// ([`ContourJob::step`]): marching squares tile by tile, then each region's rings
+/// linked and simplified.
+pub struct ContourJob {
+    grid: LabelGrid,
+    wanted: Vec<bool>,
+    reach: usize,
+    shift: Shift,
+    /// Ink of each compiled op (None: it lays none).
+    inks: Vec<Option<Rgb8>>,
+    /// Simplification bounds, design pixels: visible parts, parts under newer paint.
+    epsilon: f64,
+    hidden_epsilon: f64,
+    tiles: Vec<(isize, isize)>,
+    next_tile: usize,
+    by_label: HashMap<u32, Vec<Segment>>,
+    /// Labels with segments, ascending (set once every tile is done).
+    labels: Vec<u32>,
+    next_label: usize,
+    outlines: Vec<Outline>,
+    dense: Option<RasterLayer>,
+    stats: TraceStats,
+}
+
+impl ContourJob {
+    /// Takes the dense pixels out of `grid` (the raster of [`label_walk`], complete)
+    /// and readies marching squares for the regions `handed`.
+    pub fn new(
+        mut grid: LabelGrid,
+        design: &Design,
+        ops: &[CompiledOp],
+        handed: &[usize],
+        opts: &TraceOptions,
+        underlay: Option<&RgbaImage>,
+    ) -> Result<Self, VectorError> {
+        let step = grid.step;
+        let size = output_size(design, opts.scale)?;
+        let mut palette = vec![design.background];
+        palette.extend(ops.iter().map(|o| o.ink().unwrap_or(design.background)));
+        let (patch, dense_pixels) =
+            take_dense_pixels(&mut grid, opts.scale, size, &palette, underlay);
+        let dense = if dense_pixels > 0 {
+            Some(RasterLayer::new(patch, Channels::Rgba)?)
+        } else {
+            None
+        };
+        let reach = (opts.contour_reach / opts.scale / step).ceil() as usize;
+        // Visible parts may move by one grid step (T/4 by default); hidden parts lie
+        // `reach` inside newer paint: they may move by half that.
+        let epsilon = step;
+        let hidden_epsilon = (reach as f64 * step / 2.0).max(epsilon);
+        let stats = TraceStats {
+            regions: handed.len(),
+            contour_regions: handed.len(),
+            contour_samples: grid.walked,
+            contour_step: step * opts.scale,
+            dense_pixels,
+            ..TraceStats::default()
+        };
+        Ok(Self {
+            tiles: tiles(&grid),
+            grid,
+            wanted: wanted(ops, handed),
+            reach,
+            shift: Shift {
+                palette,
+                underlay: underlay.is_some(),
+                step_px: step * opts.scale,
+            },
+            inks: ops.iter().map(CompiledOp::ink).collect(),
+            epsilon,
+            hidden_epsilon,
+            next_tile: 0,
+            by_label: HashMap::new(),
+            labels: Vec::new(),
+            next_label: 0,
+            outlines: Vec::new(),
+            dense,
+            stats,
+        })
+    }
+
+    /// Tiles and regions done, and in all (regions are counted once the tiles are done).
+    pub fn parts(&self) -> (usize, usize) {
+        (
+            self.next_tile + self.next_label,
+            self.tiles.len() + self.labels.len(),
+        )
+    }
+
+    /// Runs marching squares on up to `count` tiles, or once every tile is done, links
+    /// and simplifies up to `count` regions; true when every region is done.
+    pub fn step(&mut self, count: usize) -> bool {
+        if self.next_tile < self.tiles.len() {
+            let to = self.next_tile.saturating_add(count).min(self.tiles.len());
+            let is_wanted =
+                |l: u32| l != OUTSIDE && self.wanted.get(l as usize).copied().unwrap_or(false);
+            let shift = |a: u32, b: u32| self.shift.at(a, b);
+            let pieces: Vec<Vec<(u32, Vec<Segment>)>> = self.tiles[self.next_tile..to]
+                .par_iter()
+                .map(|&tile| {
+                    tile_segments(&self.grid, tile, self.reach as isize, &is_wanted, &shift)
+                })
+                .collect();
+            gather(&mut self.by_label, pieces);
+            self.next_tile = to;
+            if to == self.tiles.len() {
+                self.labels = self.by_label.keys().copied().collect();
+                self.labels.sort_unstable();
+            }
+            return false;
+        }
+        let to = self.next_label.saturating_add(count).min(self.labels.len());
+        let segments: Vec<(u32, Vec<Segment>)> = self.labels[self.next_label..to]
+            .iter()
+            .map(|l| (*l, self.by_label.remove(l).unwrap_or_default()))
+            .collect();
+        let traced: Vec<(Outline, usize)> = segments
+            .into_par_iter()
+            .filter_map(|(label, segments)| self.outline(label, &link(&segments)))
+            .collect();
+        for (outline, refined) in traced {
+            self.stats.refined_vertices += refined;
+            self.stats.vertices += outline.vertices();
+            self.stats.rings += outline.rings.len();
+            self.outlines.push(outline);
+        }
+        self.next_label = to;
+        to == self.labels.len()
+    }
+
+    /// The outlines, the dense patch and the counts, once [`ContourJob::step`] is done.
+    pub fn finish(mut self) -> Contoured {
+        self.stats.culled = self.stats.regions - self.outlines.len();
+        Contoured {
+            outlines: self.outlines,
+            dense: self.dense,
+            stats: self.stats,
+        }
+    }
+
+    /// The simplified outline of region `label` from its `rings`, and the vertices
+    /// before simplification; None when nothing of it is left.
+    fn outline(&self, label: u32, rings: &[Ring]) -> Option<(Outline, usize)> {
+        let op_index = label as usize - 1;
+        let refined = rings.iter().map(Vec::len).sum();
+        let rings: Vec<Vec<Point>> = rings
+            .iter()
+            .map(|ring| {
+                let (points, hidden): (Vec<Point>, Vec<bool>) = ring.iter().copied().unzip();
+                simplify_ring(&points, &hidden, self.epsilon, self.hidden_epsilon)
+            })
+            .filter(|ring| ring.len() >= 3)
+            .collect();
+        let color = (*self.inks.get(op_index)?)?;
+        (!rings.is_empty()).then_some((
+            Outline {
+                op_index,
+                color,
+                method: Method::Contour,
+                rings,
+            },
+            refined,
+        ))
+    }
 }
 
 /// Cells per tile side.
@@ -161,27 +303,13 @@ pub fn contours(
     reach: usize,
     shift: &(impl Fn(u32, u32) -> f64 + Sync),
 ) -> Vec<(u32, Vec<Ring>)> {
-    let (nx, ny) = (grid.nx as isize, grid.ny as isize);
-    // Cells (m, n) run from −1 to nx − 1 (and ny − 1): their corners include one
-    // sample of padding on every side, so every ring closes.
-    let tiles: Vec<(isize, isize)> = (-1..ny)
-        .step_by(TILE as usize)
-        .flat_map(|y| (-1..nx).step_by(TILE as usize).map(move |x| (x, y)))
-        .collect();
     let is_wanted = |l: u32| l != OUTSIDE && wanted.get(l as usize).copied().unwrap_or(false);
-    let pieces: Vec<Vec<(u32, Vec<Segment>)>> = tiles
+    let pieces: Vec<Vec<(u32, Vec<Segment>)>> = tiles(grid)
         .par_iter()
-        .map(|&(x0, y0)| {
-            let (x1, y1) = ((x0 + TILE).min(nx), (y0 + TILE).min(ny));
-            tile_segments(grid, (x0, y0, x1, y1), reach as isize, &is_wanted, shift)
-        })
+        .map(|&tile| tile_segments(grid, tile, reach as isize, &is_wanted, shift))
         .collect();
-    let mut by_label: HashMap<u32, Vec<Segment>> = HashMap::new();
-    for tile in pieces {
-        for (label, segments) in tile {
-            by_label.entry(label).or_default().extend(segments);
-        }
-    }
+    let mut by_label = HashMap::new();
+    gather(&mut by_label, pieces);
     let mut out: Vec<(u32, Vec<Ring>)> = by_label
         .into_par_iter()
         .map(|(label, segments)| (label, link(&segments)))
@@ -190,15 +318,39 @@ pub fn contours(
     out
 }
 
-/// Segments of every wanted region in the cells `x0..x1 × y0..y1` (cell (m, n) has
-/// corners (m, n) to (m + 1, n + 1)).
+/// The corners (x0, y0) of the tiles of `grid`'s cells. Cells (m, n) run from −1 to
+/// nx − 1 (and ny − 1): their corners include one sample of padding on every side, so
+/// every ring closes.
+fn tiles(grid: &LabelGrid) -> Vec<(isize, isize)> {
+    let (nx, ny) = (grid.nx as isize, grid.ny as isize);
+    (-1..ny)
+        .step_by(TILE as usize)
+        .flat_map(|y| (-1..nx).step_by(TILE as usize).map(move |x| (x, y)))
+        .collect()
+}
+
+/// Adds the segments of some tiles to those gathered by label.
+fn gather(by_label: &mut HashMap<u32, Vec<Segment>>, pieces: Vec<Vec<(u32, Vec<Segment>)>>) {
+    for tile in pieces {
+        for (label, segments) in tile {
+            by_label.entry(label).or_default().extend(segments);
+        }
+    }
+}
+
+/// Segments of every wanted region in the cells of the tile at `(x0, y0)` (cell (m, n)
+/// has corners (m, n) to (m + 1, n + 1)).
 fn tile_segments(
     grid: &LabelGrid,
-    (x0, y0, x1, y1): (isize, isize, isize, isize),
+    (x0, y0): (isize, isize),
     reach: isize,
     is_wanted: &(impl Fn(u32) -> bool + Sync),
     shift: &(impl Fn(u32, u32) -> f64 + Sync),
 ) -> Vec<(u32, Vec<Segment>)> {
+    let (x1, y1) = (
+        (x0 + TILE).min(grid.nx as isize),
+        (y0 + TILE).min(grid.ny as isize),
+    );
     // The window of samples the masks need: the cell corners, grown by `reach`.
     let (wx0, wy0, wx1, wy1) = (x0 - reach, y0 - reach, x1 + 1 + reach, y1 + 1 + reach);
     let (ww, wh) = ((wx1 - wx0) as usize, (wy1 - wy0) as usize);

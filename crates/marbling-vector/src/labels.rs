@@ -50,57 +50,164 @@ impl LabelGrid {
     /// Only blocks where a label that `wanted` holds (by label) meets another are
     /// walked finely; elsewhere every sample takes its coarse block's label.
     pub fn new(design: &Design, step: f64, wanted: &[bool]) -> Self {
-        let is_wanted = |l: u32| wanted.get(l as usize).copied().unwrap_or(false);
-        let walker = Walker::new(&design.ops);
+        LabelWalk::new(design, step, wanted.to_vec()).finish_now()
+    }
+}
+
+/// The label raster built a batch of rows at a time ([`LabelWalk::step`]), so that a
+/// caller on a UI thread can spread it over frames; [`LabelGrid::new`] runs it whole.
+pub struct LabelWalk {
+    walker: Walker,
+    step: f64,
+    nx: usize,
+    ny: usize,
+    /// Coarse lattice points each way.
+    cx: usize,
+    cy: usize,
+    /// Labels a caller wants outlines of (by label).
+    wanted: Vec<bool>,
+    /// Coarse rows walked so far.
+    coarse: Vec<Vec<u32>>,
+    /// Coarse cells walked sample by sample (set once every coarse row is walked).
+    mixed: Vec<Vec<bool>>,
+    /// Fine labels of the rows done, row-major.
+    labels: Vec<u32>,
+    walked: usize,
+}
+
+/// Rows walked per [`LabelWalk::step`] and thread: one row of a 300-op design is
+/// tens of milliseconds of work on one core.
+const ROWS_PER_STEP: usize = 2;
+
+/// Rows walked per step: [`ROWS_PER_STEP`] for each thread rayon has.
+fn rows_per_step() -> usize {
+    ROWS_PER_STEP * rayon::current_num_threads()
+}
+
+impl LabelWalk {
+    /// A walk of `design`'s labels on a grid of spacing `step` design pixels.
+    pub fn new(design: &Design, step: f64, wanted: Vec<bool>) -> Self {
         let nx = ((f64::from(design.width) / step).ceil() as usize).max(1);
         let ny = ((f64::from(design.height) / step).ceil() as usize).max(1);
-        // Coarse points at fine indices STRIDE·M, far enough to cover the last sample.
-        let (cx, cy) = ((nx - 1) / STRIDE + 2, (ny - 1) / STRIDE + 2);
-        let label = |t: Traced| match t {
-            Traced::Ink(k) => k as u32 + 1,
-            Traced::Background(_) => BACKGROUND,
-        };
-        let walk = |points: &[(usize, usize)], out: &mut Vec<u32>| {
-            let mut batch = Batch::default();
-            for (i, &(m, n)) in points.iter().enumerate() {
-                batch.push((m as f64 + 0.5) * step, (n as f64 + 0.5) * step, i as u32);
+        Self {
+            walker: Walker::new(&design.ops),
+            step,
+            nx,
+            ny,
+            // Coarse points at fine indices STRIDE·M, far enough to cover the last sample.
+            cx: (nx - 1) / STRIDE + 2,
+            cy: (ny - 1) / STRIDE + 2,
+            wanted,
+            coarse: Vec::new(),
+            mixed: Vec::new(),
+            labels: Vec::with_capacity(nx * ny),
+            walked: 0,
+        }
+    }
+
+    /// Rows (coarse, then fine) done and in all.
+    pub fn rows(&self) -> (usize, usize) {
+        (
+            self.coarse.len() + self.labels.len() / self.nx,
+            self.cy + self.ny,
+        )
+    }
+
+    /// Walks the next batch of rows; true when the raster is complete.
+    pub fn step(&mut self) -> bool {
+        if self.coarse.len() < self.cy {
+            let from = self.coarse.len();
+            let to = (from + rows_per_step()).min(self.cy);
+            let cx = self.cx;
+            let rows: Vec<Vec<u32>> = (from..to)
+                .into_par_iter()
+                .map(|my| {
+                    let points: Vec<(usize, usize)> =
+                        (0..cx).map(|mx| (mx * STRIDE, my * STRIDE)).collect();
+                    self.walk(&points)
+                })
+                .collect();
+            self.walked += rows.len() * cx;
+            self.coarse.extend(rows);
+            if self.coarse.len() == self.cy {
+                self.mixed = self.mixed_cells();
             }
-            let mut traced = vec![Traced::Ink(0); points.len()];
-            walker.trace_batch(&mut batch, &mut traced);
-            out.clear();
-            out.extend(traced.into_iter().map(label));
-        };
-        let coarse: Vec<Vec<u32>> = (0..cy)
+            return false;
+        }
+        let from = self.labels.len() / self.nx;
+        let to = (from + rows_per_step()).min(self.ny);
+        let rows: Vec<(Vec<u32>, usize)> = (from..to)
             .into_par_iter()
-            .map(|my| {
-                let points: Vec<(usize, usize)> =
-                    (0..cx).map(|mx| (mx * STRIDE, my * STRIDE)).collect();
-                let mut out = Vec::new();
-                walk(&points, &mut out);
-                out
-            })
+            .map(|n| self.fine_row(n))
             .collect();
-        let corners = |mx: usize, my: usize| {
-            [
-                coarse[my][mx],
-                coarse[my][mx + 1],
-                coarse[my + 1][mx],
-                coarse[my + 1][mx + 1],
-            ]
-        };
-        // Cells whose corners disagree, and their eight neighbours (so that a boundary
-        // bulging between two coarse corners is found too), are walked sample by sample.
+        for (row, walked) in rows {
+            self.labels.extend(row);
+            self.walked += walked;
+        }
+        to == self.ny
+    }
+
+    /// Walks every row left and returns the raster.
+    pub fn finish_now(mut self) -> LabelGrid {
+        while !self.step() {}
+        self.finish()
+    }
+
+    /// The finished raster.
+    fn finish(self) -> LabelGrid {
+        debug_assert_eq!(self.labels.len(), self.nx * self.ny);
+        LabelGrid {
+            nx: self.nx,
+            ny: self.ny,
+            step: self.step,
+            labels: self.labels,
+            walked: self.walked,
+        }
+    }
+
+    /// The labels of fine samples `points` (indices (m, n)), walked as one batch.
+    fn walk(&self, points: &[(usize, usize)]) -> Vec<u32> {
+        let mut batch = Batch::default();
+        for (i, &(m, n)) in points.iter().enumerate() {
+            batch.push(
+                (m as f64 + 0.5) * self.step,
+                (n as f64 + 0.5) * self.step,
+                i as u32,
+            );
+        }
+        let mut traced = vec![Traced::Ink(0); points.len()];
+        self.walker.trace_batch(&mut batch, &mut traced);
+        traced
+            .into_iter()
+            .map(|t| match t {
+                Traced::Ink(k) => k as u32 + 1,
+                Traced::Background(_) => BACKGROUND,
+            })
+            .collect()
+    }
+
+    /// Cells whose corners disagree where a wanted label is among them, and their eight
+    /// neighbours (so that a boundary bulging between two coarse corners is found too):
+    /// these are walked sample by sample.
+    fn mixed_cells(&self) -> Vec<Vec<bool>> {
+        let (cx, cy, coarse) = (self.cx, self.cy, &self.coarse);
+        let is_wanted = |l: u32| self.wanted.get(l as usize).copied().unwrap_or(false);
         let differs: Vec<Vec<bool>> = (0..cy - 1)
             .map(|my| {
                 (0..cx - 1)
                     .map(|mx| {
-                        let c = corners(mx, my);
+                        let c = [
+                            coarse[my][mx],
+                            coarse[my][mx + 1],
+                            coarse[my + 1][mx],
+                            coarse[my + 1][mx + 1],
+                        ];
                         c.iter().any(|&l| l != c[0]) && c.iter().any(|&l| is_wanted(l))
                     })
                     .collect()
             })
             .collect();
-        let mixed: Vec<Vec<bool>> = (0..cy - 1)
+        (0..cy - 1)
             .map(|my| {
                 (0..cx - 1)
                     .map(|mx| {
@@ -110,7 +217,13 @@ impl LabelGrid {
                     })
                     .collect()
             })
-            .collect();
+            .collect()
+    }
+
+    /// Fine row `n`: each sample walked where its cell (or the cell before, on a coarse
+    /// line) is mixed, else its coarse block's label; and how many were walked.
+    fn fine_row(&self, n: usize) -> (Vec<u32>, usize) {
+        let (cx, cy) = (self.cx, self.cy);
         // Cells holding fine index i along one axis: i / STRIDE, and the one before
         // when i lies on a coarse line.
         let cells_of = |i: usize, cells: usize| {
@@ -118,51 +231,32 @@ impl LabelGrid {
             let before = (i.is_multiple_of(STRIDE) && c > 0).then(|| c - 1);
             (c, before)
         };
-        let rows: Vec<(Vec<u32>, usize)> = (0..ny)
-            .into_par_iter()
-            .map(|n| {
-                let mut row = vec![BACKGROUND; nx];
-                let mut todo = Vec::new();
-                let (ry, ry_before) = cells_of(n, cy - 1);
-                for (m, slot) in row.iter_mut().enumerate() {
-                    if m.is_multiple_of(STRIDE) && n.is_multiple_of(STRIDE) {
-                        *slot = coarse[n / STRIDE][m / STRIDE];
-                        continue;
-                    }
-                    let (rx, rx_before) = cells_of(m, cx - 1);
-                    let refine = [Some(rx), rx_before].into_iter().flatten().any(|x| {
-                        [Some(ry), ry_before]
-                            .into_iter()
-                            .flatten()
-                            .any(|y| mixed[y][x])
-                    });
-                    if refine {
-                        todo.push((m, n));
-                    } else {
-                        *slot = coarse[ry][rx];
-                    }
-                }
-                let mut out = Vec::new();
-                walk(&todo, &mut out);
-                for (&(m, _), &l) in todo.iter().zip(&out) {
-                    row[m] = l;
-                }
-                (row, todo.len())
-            })
-            .collect();
-        let mut labels = Vec::with_capacity(nx * ny);
-        let mut walked = cx * cy;
-        for (row, n) in rows {
-            labels.extend(row);
-            walked += n;
+        let mut row = vec![BACKGROUND; self.nx];
+        let mut todo = Vec::new();
+        let (ry, ry_before) = cells_of(n, cy - 1);
+        for (m, slot) in row.iter_mut().enumerate() {
+            if m.is_multiple_of(STRIDE) && n.is_multiple_of(STRIDE) {
+                *slot = self.coarse[n / STRIDE][m / STRIDE];
+                continue;
+            }
+            let (rx, rx_before) = cells_of(m, cx - 1);
+            let refine = [Some(rx), rx_before].into_iter().flatten().any(|x| {
+                [Some(ry), ry_before]
+                    .into_iter()
+                    .flatten()
+                    .any(|y| self.mixed[y][x])
+            });
+            if refine {
+                todo.push((m, n));
+            } else {
+                *slot = self.coarse[ry][rx];
+            }
         }
-        Self {
-            nx,
-            ny,
-            step,
-            labels,
-            walked,
+        let out = self.walk(&todo);
+        for (&(m, _), &l) in todo.iter().zip(&out) {
+            row[m] = l;
         }
+        (row, todo.len())
     }
 }
 

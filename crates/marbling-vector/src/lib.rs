@@ -150,4 +150,4 @@ pub use options::TraceOptions;
 pub use outline::{Method, Outline, TraceStats, VectorDesign};
 pub use raster::{Blend, rasterize, render_vector};
 pub use svg::{design_to_svg, to_svg};
-pub use trace::{check_traceable, trace, trace_with_progress};
+pub use trace::{Tracer, check_traceable, trace, trace_with_progress};

@@ -65,7 +65,7 @@ impl CanvasCallback {
             }
             let exact_done = gpu.refining.as_ref().is_some_and(|(_, r)| r.is_done());
             if !dragging && !exact_done {
-                if gpu.exact_tile(device, queue, &self.ctx, shown.op_count(), tiles) {
+                if gpu.exact_tile(device, queue, &self.ctx, shown.walk_cost(), tiles) {
                     status.work.exact += 1;
                     status.drawn = Some(exact.clone());
                     when_done(queue, &status.exact_done, status.work.exact, &self.ctx);

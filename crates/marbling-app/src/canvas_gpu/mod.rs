@@ -275,10 +275,10 @@ impl CanvasGpu {
         }
     }
 
-    /// The largest tile of a render of `ops` ops with `samples` samples per pixel that
-    /// fits a `tiles`-th of this frame's budget, pixels.
-    fn tile_pixels(&self, ops: usize, samples: usize, tiles: usize) -> u64 {
-        (self.budget.units() / tiles.max(1) as u64 / per_pixel(ops, samples)).max(1)
+    /// The largest tile of a render of ops costing `cost` ([`Op::walk_cost`]) with
+    /// `samples` samples per pixel that fits a `tiles`-th of this frame's budget, pixels.
+    fn tile_pixels(&self, cost: u64, samples: usize, tiles: usize) -> u64 {
+        (self.budget.units() / tiles.max(1) as u64 / per_pixel(cost, samples)).max(1)
     }
 
     /// Draws the next tile of the exact frame, a `tiles`-th of the frame's budget; true
@@ -288,7 +288,7 @@ impl CanvasGpu {
         device: &wgpu::Device,
         queue: &wgpu::Queue,
         ctx: &egui::Context,
-        ops: usize,
+        cost: u64,
         tiles: usize,
     ) -> bool {
         let Some(samples) = self
@@ -298,7 +298,7 @@ impl CanvasGpu {
         else {
             return false;
         };
-        let pixels = self.tile_pixels(ops, samples, tiles);
+        let pixels = self.tile_pixels(cost, samples, tiles);
         let (Some((_, refinement)), Some((target, _)), Some((_, prepared))) =
             (&mut self.refining, &self.target, &self.prepared)
         else {
@@ -346,7 +346,7 @@ impl CanvasGpu {
             let (w, h) = cache.cache_size();
             self.building = Some((key, cache, Refinement::new([0, 0, w, h])));
         }
-        let pixels = self.tile_pixels(shown.op_count(), 1, tiles);
+        let pixels = self.tile_pixels(shown.walk_cost(), 1, tiles);
         let Some((_, cache, refinement)) = &mut self.building else {
             return Ok(false);
         };

@@ -75,6 +75,11 @@ pub enum Op {
     Stylus(Stylus),
 }
 
+/// Walk cost of one segment of a stylus path, in simple ops ([`Op::walk_cost`]).
+pub const STYLUS_SEGMENT_COST: u64 = 8;
+/// Walk cost of a jiggle, in simple ops ([`Op::walk_cost`]).
+pub const JIGGLE_COST: u64 = 8;
+
 /// Result of walking one point back through one operation.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Back {
@@ -152,6 +157,20 @@ impl Op {
     pub fn counted_ops(&self) -> usize {
         match self {
             Op::Drops(d) | Op::Sprays(d) => d.len(),
+            _ => 1,
+        }
+    }
+
+    /// What walking one point back through this op costs, in units of a simple op:
+    /// the sum of [`crate::CompiledOp::walk_cost`] over its compiled forms (a drop
+    /// pattern one per drop, a finite comb one per tine, a stylus eight per segment of
+    /// its path, a jiggle eight). Renderers size their work by it.
+    pub fn walk_cost(&self) -> u64 {
+        match self {
+            Op::Drops(d) | Op::Sprays(d) => d.len() as u64,
+            Op::Comb(c) => c.tines.len() as u64,
+            Op::Stylus(s) => STYLUS_SEGMENT_COST * s.path.len().saturating_sub(1) as u64,
+            Op::Jiggle(_) => JIGGLE_COST,
             _ => 1,
         }
     }

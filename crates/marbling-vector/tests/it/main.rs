@@ -6,5 +6,6 @@ mod comparator;
 mod contour;
 mod exact;
 mod lossy;
+mod resumable;
 mod svg_resvg;
 mod tolerance;
