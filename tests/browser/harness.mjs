@@ -198,3 +198,28 @@ export function linkFragment(design, name) {
   const link = execFileSync(MARBLING, ['link', file, '--base', 'http://x/']).toString().trim();
   return link.slice(link.indexOf('#'));
 }
+
+/** A 64×48 PNG: left half blue, right half yellow. */
+export function twoColourPng() {
+  const png = new PNG({ width: 64, height: 48 });
+  for (let y = 0; y < 48; y++) {
+    for (let x = 0; x < 64; x++) {
+      const i = (y * 64 + x) * 4;
+      const c = x < 32 ? [30, 60, 220] : [240, 210, 20];
+      png.data.set([...c, 255], i);
+    }
+  }
+  return PNG.sync.write(png);
+}
+
+/** Drops `bytes` as file `name` on the page's canvas (a real drop event with a DataTransfer). */
+export async function dropFile(page, name, mime, bytes) {
+  await page.evaluate(({ name, mime, data }) => {
+    const dt = new DataTransfer();
+    dt.items.add(new File([Uint8Array.from(atob(data), (c) => c.charCodeAt(0))], name, { type: mime }));
+    const canvas = document.querySelector('canvas');
+    for (const type of ['dragenter', 'dragover', 'drop']) {
+      canvas.dispatchEvent(new DragEvent(type, { dataTransfer: dt, bubbles: true, cancelable: true }));
+    }
+  }, { name, mime, data: Buffer.from(bytes).toString('base64') });
+}

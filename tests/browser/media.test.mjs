@@ -6,8 +6,9 @@ import { after, before, describe, test } from 'node:test';
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import path from 'node:path';
-import { PNG } from 'pngjs';
-import { READY_MS, SHOTS, attr, clickControl, launch, linkFragment, openPage, shootSheet } from './harness.mjs';
+import {
+  READY_MS, SHOTS, attr, clickControl, dropFile, launch, linkFragment, openPage, shootSheet, twoColourPng,
+} from './harness.mjs';
 
 const INK = [200, 30, 40];
 /** A 160×120 sheet with one big red drop in the middle (the marbling the video shows through). */
@@ -15,31 +16,6 @@ const DESIGN = {
   version: 1, width: 160, height: 120, background: '#ffffff',
   ops: [{ type: 'drop', center: [80, 60], radius: 30, color: '#c81e28' }],
 };
-
-/** A 64×48 PNG: left half blue, right half yellow. */
-function twoColourPng() {
-  const png = new PNG({ width: 64, height: 48 });
-  for (let y = 0; y < 48; y++) {
-    for (let x = 0; x < 64; x++) {
-      const i = (y * 64 + x) * 4;
-      const c = x < 32 ? [30, 60, 220] : [240, 210, 20];
-      png.data.set([...c, 255], i);
-    }
-  }
-  return PNG.sync.write(png);
-}
-
-/** Drops `bytes` as file `name` on the page's canvas (a real drop event with a DataTransfer). */
-async function dropFile(page, name, mime, bytes) {
-  await page.evaluate(({ name, mime, data }) => {
-    const dt = new DataTransfer();
-    dt.items.add(new File([Uint8Array.from(atob(data), (c) => c.charCodeAt(0))], name, { type: mime }));
-    const canvas = document.querySelector('canvas');
-    for (const type of ['dragenter', 'dragover', 'drop']) {
-      canvas.dispatchEvent(new DragEvent(type, { dataTransfer: dt, bubbles: true, cancelable: true }));
-    }
-  }, { name, mime, data: Buffer.from(bytes).toString('base64') });
-}
 
 const pixel = (img, fx, fy) => {
   const i = (Math.floor(fy * img.height) * img.width + Math.floor(fx * img.width)) * 4;

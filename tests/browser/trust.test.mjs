@@ -1,6 +1,7 @@
 // The editor tells the truth and never drops an edit, tried as a stranger would: links on
 // a first visit (fresh profiles, no `?landing=0`), a reload at once after an edit (no
-// wait), a panic, and `data-ready` after a zoom compared with the CLI's render.
+// wait) for every way in, quick Ctrl+Z presses, a panic, and `data-ready` after a zoom
+// compared with the CLI's render on both backends.
 import { after, before, describe, test } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
@@ -9,8 +10,8 @@ import os from 'node:os';
 import path from 'node:path';
 import zlib from 'node:zlib';
 import {
-  MARBLING, READY_MS, attr, clickControl, crop, decode, differing, example, launch, linkFragment,
-  sheet, shootSheet, waitOps, waitReady,
+  MARBLING, READY_MS, attr, clickControl, crop, decode, differing, dropFile, example, launch,
+  linkFragment, sheet, shootSheet, twoColourPng, waitOps, waitReady,
 } from './harness.mjs';
 
 const GEL = example('gel-git');
@@ -28,15 +29,7 @@ describe('trust: links, reloads, panics and data-ready on webgl2', () => {
     site?.server.close();
   });
 
-  /** A fresh profile (no autosave: a first visit) at `hash`, with its page errors. */
-  async function firstVisit(hash) {
-    const context = await browser.newContext({ viewport: { width: 1100, height: 760 }, deviceScaleFactor: 1, acceptDownloads: true, serviceWorkers: 'block' });
-    const page = await context.newPage();
-    const errors = [];
-    page.on('pageerror', (e) => errors.push(String(e)));
-    await page.goto(`${site.url}${hash}`);
-    return { context, page, errors };
-  }
+  const firstVisit = (hash) => freshVisit(browser, site, hash);
 
   test('a link on a first visit wins over the gallery: the design, the noise, or the error', async () => {
     const gel = linkFragment(GEL.design, 'gel');
@@ -62,33 +55,94 @@ describe('trust: links, reloads, panics and data-ready on webgl2', () => {
     }
   });
 
-  test('an edit survives a reload made at once, from a link, a gallery card and a blank sheet', async () => {
-    for (const way of ['link', 'card', 'blank']) {
-      const { context, page, errors } = await firstVisit(way === 'link' ? linkFragment(GEL.design, 'gel-reload') : '');
-      let n = GEL.design.ops.length;
-      if (way === 'card') {
-        await page.waitForFunction(() => document.body.dataset.landing === '1', null, { timeout: READY_MS });
-        await clickControl(page, 'gallery-gel-git');
-      } else if (way === 'blank') {
-        await page.waitForFunction(() => document.body.dataset.landing === '1', null, { timeout: READY_MS });
-        await clickControl(page, 'gallery-blank');
-        n = 0;
-      }
-      await waitOps(page, n);
+  /** Waits until the page holds `n` ops and shows the exact frame. */
+  const waitFrame = async (page, n) => {
+    await waitOps(page, n);
+    await waitReady(page);
+  };
+
+  test('an edit survives a reload made at once, for every way in', async () => {
+    const spec = { type: 'worley', frequency: 0.04, feature: 'f2', metric: 'euclidean', seed: 5, palette: 'ember' };
+    // Each way in: the fragment of the first visit, and what brings the page to an
+    // editable design of `n` ops.
+    const ways = {
+      link: { hash: linkFragment(GEL.design, 'gel-reload'), n: GEL.design.ops.length },
+      card: { n: GEL.design.ops.length, go: (page) => clickControl(page, 'gallery-gel-git') },
+      blank: { n: 0, go: (page) => clickControl(page, 'gallery-blank') },
+      json: {
+        n: GEL.design.ops.length,
+        go: async (page) => {
+          await clickControl(page, 'gallery-blank');
+          await waitOps(page, 0);
+          const [chooser] = await Promise.all([page.waitForEvent('filechooser', { timeout: READY_MS }), clickControl(page, 'open')]);
+          await chooser.setFiles(GEL.file);
+        },
+      },
+      picture: {
+        n: 0,
+        go: async (page) => {
+          await clickControl(page, 'gallery-blank');
+          await waitFrame(page, 0);
+          const paper = await shootSheet(page, 300, 200);
+          await dropFile(page, 'halves.png', 'image/png', twoColourPng());
+          // The picture shows where the paper did.
+          for (let t = Date.now(); differing(paper.img, (await shootSheet(page, 300, 200)).img, 24) < 0.05;) {
+            assert.ok(Date.now() - t < READY_MS, 'the dropped picture never showed');
+          }
+        },
+      },
+      noise: {
+        hash: noiseLink(spec),
+        go: async (page) => {
+          // The linked noise becomes the background of the design behind it.
+          await page.waitForFunction(() => document.body.dataset.mode === 'noise', null, { timeout: READY_MS });
+          await clickControl(page, 'noise-background');
+          await clickControl(page, 'mode-marbling');
+          await page.waitForFunction(() => document.body.dataset.mode === 'marbling', null, { timeout: READY_MS });
+          return Number(await attr(page, 'data-ops'));
+        },
+      },
+    };
+    for (const [way, w] of Object.entries(ways)) {
+      const { context, page, errors } = await firstVisit(w.hash ?? '');
+      if (!w.hash) await page.waitForFunction(() => document.body.dataset.landing === '1', null, { timeout: READY_MS });
+      const n = (await w.go?.(page)) ?? w.n;
+      await waitFrame(page, n);
+      const before = await shootSheet(page, 300, 200);
       const s = await sheet(page);
       await page.keyboard.press('1'); // drop
       await page.mouse.click(s.x + 150 * s.scale, s.y + 120 * s.scale);
-      await waitOps(page, n + 1);
+      await waitFrame(page, n + 1);
       const edited = await shootSheet(page, 300, 200);
+      assert.ok(differing(before.img, edited.img, 24) > 0.001, `${way}: the drop changed nothing on screen`);
       await page.reload();
-      await waitOps(page, n + 1);
-      const back = await shootSheet(page, 300, 200);
+      await waitFrame(page, n + 1);
       assert.equal(await attr(page, 'data-landing'), null, `${way}: the reload landed on the gallery`);
+      assert.equal(await attr(page, 'data-mode'), 'marbling', `${way}: the reload showed another mode`);
+      const back = await shootSheet(page, 300, 200);
       const off = differing(edited.img, back.img, 24);
       assert.ok(off <= 0.01, `${way}: ${(100 * off).toFixed(2)} % of the sheet differs after the reload`);
-      assert.deepEqual(errors, []);
+      assert.deepEqual(errors, [], way);
+      console.log(`${way}: ${n + 1} ops after the reload, ${(100 * off).toFixed(3)} % of the sheet differs`);
       await context.close();
     }
+  });
+
+  test('every Ctrl+Z counts, however fast they come', async () => {
+    const { context, page, errors } = await firstVisit(linkFragment(GEL.design, 'gel-undo'));
+    const n = GEL.design.ops.length;
+    await waitOps(page, n);
+    const s = await sheet(page);
+    await page.keyboard.press('1');
+    for (let k = 0; k < 6; k++) await page.mouse.click(s.x + (60 + 30 * k) * s.scale, s.y + 100 * s.scale);
+    await waitOps(page, n + 6);
+    // Six presses with no wait: a slow frame collects several.
+    for (let k = 0; k < 6; k++) await page.keyboard.press('Control+z');
+    await waitOps(page, n);
+    await page.waitForTimeout(500);
+    assert.equal(await attr(page, 'data-ops'), String(n));
+    assert.deepEqual(errors, []);
+    await context.close();
   });
 
   test('a panic keeps the design and says so; the reload shows it', async () => {
@@ -110,31 +164,59 @@ describe('trust: links, reloads, panics and data-ready on webgl2', () => {
     await context.close();
   });
 
-  test('data-ready after a zoom means the exact frame of that view is on screen', async () => {
-    const { context, page, errors } = await firstVisit(linkFragment(GEL.design, 'gel-zoom'));
-    const { width: w, height: h } = GEL.design;
-    await waitOps(page, GEL.design.ops.length);
-    const before = await sheet(page);
-    // Zoom out about the sheet's middle: the whole sheet stays on screen.
-    await page.mouse.move(before.x + (w / 2) * before.scale, before.y + (h / 2) * before.scale);
-    await page.mouse.wheel(0, 300);
-    // A new view: ready falls until its exact frame is drawn.
-    await page.waitForFunction((scale) => Number(document.body.dataset.view.split(',')[2]) < scale, before.scale, { timeout: READY_MS });
-    await waitReady(page);
-    const shot = await shootSheet(page, w, h);
-    assert.ok(shot.scale < before.scale * 0.95, `the view did not zoom out (${before.scale} → ${shot.scale})`);
-    const cpuFile = tmp('zoom.png');
-    execFileSync(MARBLING, ['render', GEL.file, '-o', cpuFile, '--scale', String(shot.scale), '--aa', 'rgss']);
-    const cpu = decode(fs.readFileSync(cpuFile));
-    const cw = Math.min(cpu.width, shot.img.width), ch = Math.min(cpu.height, shot.img.height);
-    const off = differing(crop(cpu, cw, ch), crop(shot.img, cw, ch), 24);
-    console.log(`data-ready after a zoom to ${shot.scale.toFixed(3)}: ${(100 * off).toFixed(2)} % of ${cw}×${ch} px differ from the CLI render by > 24/255`);
-    assert.ok(off <= 0.01, `${(100 * off).toFixed(2)} % of the zoomed view differs from the CLI render`);
-    // The comparator sees a wrong scale: the render before the zoom differs.
-    const wrongFile = tmp('zoom-wrong.png');
-    execFileSync(MARBLING, ['render', GEL.file, '-o', wrongFile, '--scale', String(before.scale), '--aa', 'rgss']);
-    assert.ok(differing(crop(decode(fs.readFileSync(wrongFile)), cw, ch), crop(shot.img, cw, ch), 24) > 0.05);
-    assert.deepEqual(errors, []);
-    await context.close();
+  test('data-ready after a zoom means the exact frame of that view is on screen', () => readyAfterZoom(browser, site, 'webgl2'));
+});
+
+/** A fresh profile (no autosave: a first visit) at `hash`, with its page errors. */
+async function freshVisit(browser, site, hash) {
+  const context = await browser.newContext({ viewport: { width: 1100, height: 760 }, deviceScaleFactor: 1, acceptDownloads: true, serviceWorkers: 'block' });
+  const page = await context.newPage();
+  const errors = [];
+  page.on('pageerror', (e) => errors.push(String(e)));
+  await page.goto(`${site.url}${hash}`);
+  return { context, page, errors };
+}
+
+/** Zooms out on a design opened by link; at `data-ready` the screenshot must be the
+ * CLI's render at the shown scale (and not the one before the zoom). */
+async function readyAfterZoom(browser, site, backend) {
+  const { context, page, errors } = await freshVisit(browser, site, linkFragment(GEL.design, `gel-zoom-${backend}`));
+  const { width: w, height: h } = GEL.design;
+  await waitOps(page, GEL.design.ops.length);
+  const before = await sheet(page);
+  // Zoom out about the sheet's middle: the whole sheet stays on screen.
+  await page.mouse.move(before.x + (w / 2) * before.scale, before.y + (h / 2) * before.scale);
+  await page.mouse.wheel(0, 300);
+  // A new view: ready falls until its exact frame is drawn.
+  await page.waitForFunction((scale) => Number(document.body.dataset.view.split(',')[2]) < scale, before.scale, { timeout: READY_MS });
+  await waitReady(page);
+  const shot = await shootSheet(page, w, h);
+  assert.ok(shot.scale < before.scale * 0.95, `the view did not zoom out (${before.scale} → ${shot.scale})`);
+  const cpuFile = tmp(`zoom-${backend}.png`);
+  execFileSync(MARBLING, ['render', GEL.file, '-o', cpuFile, '--scale', String(shot.scale), '--aa', 'rgss']);
+  const cpu = decode(fs.readFileSync(cpuFile));
+  const cw = Math.min(cpu.width, shot.img.width), ch = Math.min(cpu.height, shot.img.height);
+  const off = differing(crop(cpu, cw, ch), crop(shot.img, cw, ch), 24);
+  console.log(`${backend}: data-ready after a zoom to ${shot.scale.toFixed(3)}: ${(100 * off).toFixed(2)} % of ${cw}×${ch} px differ from the CLI render by > 24/255`);
+  assert.ok(off <= 0.01, `${(100 * off).toFixed(2)} % of the zoomed view differs from the CLI render`);
+  // The comparator sees a wrong scale: the render before the zoom differs.
+  const wrongFile = tmp(`zoom-wrong-${backend}.png`);
+  execFileSync(MARBLING, ['render', GEL.file, '-o', wrongFile, '--scale', String(before.scale), '--aa', 'rgss']);
+  assert.ok(differing(crop(decode(fs.readFileSync(wrongFile)), cw, ch), crop(shot.img, cw, ch), 24) > 0.05);
+  assert.deepEqual(errors, []);
+  await context.close();
+}
+
+describe('data-ready on webgpu', () => {
+  let browser;
+  let site;
+  before(async () => {
+    ({ browser, site } = await launch('webgpu'));
   });
+  after(async () => {
+    await browser?.close();
+    site?.server.close();
+  });
+
+  test('data-ready after a zoom means the exact frame of that view is on screen', () => readyAfterZoom(browser, site, 'webgpu'));
 });

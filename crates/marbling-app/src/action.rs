@@ -217,14 +217,13 @@ impl MarblingApp {
             }
         };
         if changed {
-            // The address bar's link no longer shows the design: drop it, so a reload
-            // shows the edited design (from the autosave) instead of the link's.
-            if self
-                .editor
-                .last_fragment
-                .as_deref()
-                .is_some_and(|f| f.split('&').any(|p| p.starts_with("d=")))
-            {
+            // The address bar's link (a design, or a noise the design may now be marbling)
+            // no longer shows what is on screen: drop it, so a reload shows the edited
+            // design (from the autosave) instead of the link's.
+            if self.editor.last_fragment.as_deref().is_some_and(|f| {
+                f.split('&')
+                    .any(|p| p.starts_with("d=") || p.starts_with("n="))
+            }) {
                 platform::clear_fragment();
                 self.editor.last_fragment = None;
             }

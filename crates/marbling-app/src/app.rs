@@ -386,20 +386,22 @@ impl MarblingApp {
     }
 
     fn handle_shortcuts(&mut self, ctx: &egui::Context) {
-        use egui::{Key, KeyboardShortcut, Modifiers};
+        use egui::{Key, Modifiers};
         crate::accessibility::handle_shortcut(ctx);
-        let redo = KeyboardShortcut::new(Modifiers::COMMAND | Modifiers::SHIFT, Key::Z);
-        let redo_y = KeyboardShortcut::new(Modifiers::COMMAND, Key::Y);
-        let undo = KeyboardShortcut::new(Modifiers::COMMAND, Key::Z);
-        let (r, u) = ctx.input_mut(|i| {
+        // Every press counts, however many arrive in one frame (a slow frame on a
+        // software GPU collects several). Redo (with Shift) is taken first: undo's
+        // shortcut would match it too.
+        let (redos, undos) = ctx.input_mut(|i| {
             (
-                i.consume_shortcut(&redo) || i.consume_shortcut(&redo_y),
-                i.consume_shortcut(&undo),
+                i.count_and_consume_key(Modifiers::COMMAND | Modifiers::SHIFT, Key::Z)
+                    + i.count_and_consume_key(Modifiers::COMMAND, Key::Y),
+                i.count_and_consume_key(Modifiers::COMMAND, Key::Z),
             )
         });
-        if r {
+        for _ in 0..redos {
             self.apply(Action::Redo);
-        } else if u {
+        }
+        for _ in 0..undos {
             self.apply(Action::Undo);
         }
         // Number keys 1–9 and 0 pick the first ten tools in panel order (when no text
@@ -571,6 +573,15 @@ impl eframe::App for MarblingApp {
             &mut self.hooks.controls,
         );
         self.autosave(frame, &ctx);
+        let now_s = ctx.input(|i| i.time);
+        if self
+            .hooks
+            .memory
+            .as_ref()
+            .is_none_or(|(at, _)| now_s - at >= crate::memory::EVERY_S)
+        {
+            self.hooks.memory = Some((now_s, crate::memory::report(frame)));
+        }
         self.update_hooks(&ctx);
     }
 

@@ -170,6 +170,10 @@ impl MarblingApp {
             ("data-fast-paint", Some(self.rendering.fast_paint.hook())),
             ("data-controls", Some(controls)),
             ("data-exporting", exporting),
+            (
+                "data-memory",
+                self.hooks.memory.as_ref().map(|(_, m)| m.clone()),
+            ),
             ("data-mode", Some(self.editor.mode.name().to_owned())),
             (
                 "data-noise",

@@ -28,6 +28,7 @@ pub mod ink_sets;
 mod labels;
 pub mod landing;
 pub mod layout;
+mod memory;
 pub mod mode;
 mod noise_controls;
 pub mod noise_data;

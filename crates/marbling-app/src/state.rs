@@ -227,6 +227,8 @@ pub struct Hooks {
     /// live picture); `None` when no canvas is shown. `data-ready` is 1 only when it is
     /// the frame drawn.
     pub requested: Option<crate::canvas_gpu::FrameRequest>,
+    /// `data-memory` (src/memory.rs) and when it was taken (egui's clock, seconds).
+    pub memory: Option<(f64, String)>,
 }
 
 /// The panels' own state: the status line, file picks, thumbnails, the panel cache and

@@ -6,9 +6,10 @@ use crate::app::MarblingApp;
 use marbling_core::Design;
 use marbling_vector::{TraceOptions, Tracer, to_svg};
 
-/// CPU time the trace takes per frame, milliseconds (one step may run over: a step is
-/// one op traced forward or a batch of label rows).
-pub const FRAME_BUDGET_MS: f64 = 25.0;
+/// CPU time the trace takes per frame, milliseconds: half of the idle frame interval
+/// the canvas aims at (one step may run over: a step is a share of one op's regions, a
+/// few label rows, or a few contour tiles or regions).
+pub const FRAME_BUDGET_MS: f64 = 50.0;
 
 /// A running SVG export.
 pub struct SvgExport {

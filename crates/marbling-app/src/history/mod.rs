@@ -13,6 +13,9 @@ use crate::shown::Shown;
 use marbling_core::{Design, ImageBackground, MAX_OPS, NoiseBackground, Op, Overlay, Rgb8};
 use std::sync::Arc;
 
+/// Abandoned branches kept, newest last: older ones are dropped.
+pub const MAX_BRANCHES: usize = 16;
+
 /// The paper under the ink: background colour, noise or picture background and grain
 /// overlays.
 #[derive(Clone, Debug, PartialEq)]
@@ -322,7 +325,8 @@ impl History {
         self.steps.push(step);
     }
 
-    /// Keeps steps `at..` and the undone steps as a branch, then drops them.
+    /// Keeps steps `at..` and the undone steps as a branch, then drops them; only the newest
+    /// [`MAX_BRANCHES`] branches are kept.
     fn abandon_from(&mut self, at: usize) {
         let fork = self.fold(at);
         let mut abandoned = self.steps.split_off(at.min(self.steps.len()));
@@ -345,6 +349,10 @@ impl History {
                 steps: abandoned,
                 design,
             });
+            // Each branch holds two designs: the oldest go, so that editing for hours
+            // holds a bounded history.
+            let over = self.branches.len().saturating_sub(MAX_BRANCHES);
+            self.branches.drain(..over);
         }
     }
 

@@ -141,6 +141,23 @@ fn a_new_step_after_undo_keeps_the_undone_steps_as_a_branch() {
 }
 
 #[test]
+fn only_the_newest_branches_are_kept() {
+    let mut h = History::new(blank());
+    h.push_ops(vec![spray(0.0)]).expect("a value");
+    // Undo then edit, again and again: each round abandons one step.
+    for i in 1..=MAX_BRANCHES + 5 {
+        h.push_ops(vec![spray(i as f64)]).expect("a value");
+        h.undo();
+        h.push_ops(vec![spray(-(i as f64))]).expect("a value");
+        h.undo();
+    }
+    assert_eq!(h.branches().len(), MAX_BRANCHES);
+    // The newest branch is the last round's.
+    let newest = &h.branches()[MAX_BRANCHES - 1].design;
+    assert_eq!(xs(newest), vec![0.0, (MAX_BRANCHES + 5) as f64]);
+}
+
+#[test]
 fn earlier_states_fold_over_documents_and_paper() {
     let mut h = History::new(blank());
     h.push_ops(vec![spray(1.0)]).expect("a value");
