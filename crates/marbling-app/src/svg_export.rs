@@ -14,6 +14,9 @@ pub const FRAME_BUDGET_MS: f64 = 50.0;
 /// A running SVG export.
 pub struct SvgExport {
     tracer: Tracer,
+    /// The largest share of the work seen done (the tracer's total grows as it learns
+    /// how many label rows and regions there are; what is shown never goes back).
+    done: f32,
     /// The download's file name.
     pub name: String,
 }
@@ -24,14 +27,27 @@ impl SvgExport {
         let name = crate::export::export_file_name(design, (design.width, design.height), "svg");
         let tracer =
             Tracer::new(design.clone(), &TraceOptions::default()).map_err(|e| e.to_string())?;
-        Ok(Self { tracer, name })
+        Ok(Self {
+            tracer,
+            done: 0.0,
+            name,
+        })
     }
 
     /// Traces until `now()` passes `budget_ms` from the start; true once complete.
     pub fn advance(&mut self, budget_ms: f64, now: impl Fn() -> f64) -> Result<bool, String> {
-        self.tracer
+        let complete = self
+            .tracer
             .advance(budget_ms, now)
-            .map_err(|e| e.to_string())
+            .map_err(|e| e.to_string())?;
+        let (done, total) = self.tracer.progress();
+        let share = if complete || total == 0 {
+            f32::from(complete)
+        } else {
+            done as f32 / total as f32
+        };
+        self.done = self.done.max(share);
+        Ok(complete)
     }
 
     /// The SVG document of the completed trace.
@@ -40,14 +56,9 @@ impl SvgExport {
         Ok(to_svg(&traced))
     }
 
-    /// Share of the work done, [0, 1].
+    /// Share of the work done, [0, 1]; it never goes back.
     pub fn progress(&self) -> f32 {
-        let (done, total) = self.tracer.progress();
-        if total == 0 {
-            0.0
-        } else {
-            done as f32 / total as f32
-        }
+        self.done
     }
 }
 
@@ -113,6 +124,7 @@ mod tests {
             last = export.progress();
         }
         assert!(frames > 4, "{frames} frames: the trace was not spread out");
+        assert_eq!(export.progress(), 1.0);
         assert_eq!(export.name, "marbling-60ops-160x120.svg");
         let whole =
             marbling_vector::design_to_svg(&design, &TraceOptions::default()).expect("traceable");
