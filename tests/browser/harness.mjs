@@ -2,6 +2,7 @@
 // pixel comparison of screenshots, and readers of the app's automation hooks on <body>
 // (the `data-*` attributes listed in the README; positions in CSS px).
 import assert from 'node:assert/strict';
+import { after, before } from 'node:test';
 import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
 import os from 'node:os';
@@ -115,6 +116,20 @@ export async function shootSheet(page, w, h) {
   return { img: decode(await page.screenshot({ clip, timeout: READY_MS })), dpr, ...s };
 }
 
+
+/**
+ * Chromium on `backend` for the tests of the enclosing `describe`: launched before them,
+ * closed after. Returns an object whose `browser` and `site` are set once launched.
+ */
+export function sharedBrowser(backend) {
+  const shared = {};
+  before(async () => Object.assign(shared, await launch(backend)));
+  after(async () => {
+    await shared.browser?.close();
+    shared.site?.server.close();
+  });
+  return shared;
+}
 
 /** Chromium with the flags of `backend` (and `extra` flags), and the site served from
  * `dir` (dist/ unless given). */

@@ -2,8 +2,8 @@
 // no panic, no page error, no error no event asked for, the saved design rendered by the
 // CLI is what the page shows, and a reload restores it. A failure names its seed and
 // last events; `node monkey.mjs --events 20000 --seed N` runs a long one.
-import { after, before, describe, test } from 'node:test';
-import { launch } from './harness.mjs';
+import { describe, test } from 'node:test';
+import { sharedBrowser } from './harness.mjs';
 import { run } from './monkey.mjs';
 
 /** Seeds run in `make test`: fixed, so a failure reproduces. */
@@ -12,19 +12,11 @@ const SEEDS = [7, 11];
 const EVENTS = 40;
 
 describe('the monkey on webgl2', () => {
-  let browser;
-  let site;
-  before(async () => {
-    ({ browser, site } = await launch('webgl2'));
-  });
-  after(async () => {
-    await browser?.close();
-    site?.server.close();
-  });
+  const shared = sharedBrowser('webgl2');
 
   for (const seed of SEEDS) {
     test(`seed ${seed}: ${EVENTS} random events leave a design the CLI renders and a reload restores`, async () => {
-      const r = await run(browser, site, { seed, events: EVENTS });
+      const r = await run(shared.browser, shared.site, { seed, events: EVENTS });
       console.log(`monkey seed ${seed}: ${r.ops} ops left, ${(100 * r.off).toFixed(3)} % off the CLI render`);
     });
   }

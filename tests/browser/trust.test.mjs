@@ -2,7 +2,7 @@
 // a first visit (fresh profiles, no `?landing=0`), a reload at once after an edit (no
 // wait) for every way in, quick Ctrl+Z presses, a panic, and `data-ready` after a zoom
 // compared with the CLI's render on both backends.
-import { after, before, describe, test } from 'node:test';
+import { describe, test } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
@@ -10,8 +10,8 @@ import os from 'node:os';
 import path from 'node:path';
 import zlib from 'node:zlib';
 import {
-  MARBLING, READY_MS, attr, clickControl, crop, decode, differing, dropFile, example, launch,
-  linkFragment, sheet, shootSheet, twoColourPng, waitOps, waitReady,
+  MARBLING, READY_MS, attr, clickControl, crop, decode, differing, dropFile, example,
+  linkFragment, sharedBrowser, sheet, shootSheet, twoColourPng, waitOps, waitReady,
 } from './harness.mjs';
 
 const GEL = example('gel-git');
@@ -19,17 +19,8 @@ const tmp = (name) => path.join(os.tmpdir(), `marbling-trust-${process.pid}-${na
 const noiseLink = (spec) => `#n=${zlib.deflateRawSync(Buffer.from(JSON.stringify(spec))).toString('base64url')}`;
 
 describe('trust: links, reloads, panics and data-ready on webgl2', () => {
-  let browser;
-  let site;
-  before(async () => {
-    ({ browser, site } = await launch('webgl2'));
-  });
-  after(async () => {
-    await browser?.close();
-    site?.server.close();
-  });
-
-  const firstVisit = (hash) => freshVisit(browser, site, hash);
+  const shared = sharedBrowser('webgl2');
+  const firstVisit = (hash) => freshVisit(shared.browser, shared.site, hash);
 
   test('a link on a first visit wins over the gallery: the design, the noise, or the error', async () => {
     const gel = linkFragment(GEL.design, 'gel');
@@ -164,7 +155,7 @@ describe('trust: links, reloads, panics and data-ready on webgl2', () => {
     await context.close();
   });
 
-  test('data-ready after a zoom means the exact frame of that view is on screen', () => readyAfterZoom(browser, site, 'webgl2'));
+  test('data-ready after a zoom means the exact frame of that view is on screen', () => readyAfterZoom(shared.browser, shared.site, 'webgl2'));
 });
 
 /** A fresh profile (no autosave: a first visit) at `hash`, with its page errors. */
@@ -208,15 +199,6 @@ async function readyAfterZoom(browser, site, backend) {
 }
 
 describe('data-ready on webgpu', () => {
-  let browser;
-  let site;
-  before(async () => {
-    ({ browser, site } = await launch('webgpu'));
-  });
-  after(async () => {
-    await browser?.close();
-    site?.server.close();
-  });
-
-  test('data-ready after a zoom means the exact frame of that view is on screen', () => readyAfterZoom(browser, site, 'webgpu'));
+  const shared = sharedBrowser('webgpu');
+  test('data-ready after a zoom means the exact frame of that view is on screen', () => readyAfterZoom(shared.browser, shared.site, 'webgpu'));
 });
