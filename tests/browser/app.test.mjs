@@ -136,7 +136,7 @@ for (const backend of Object.keys(BACKENDS)) {
       await context.close();
     });
 
-    // Progressive exact rendering (crates/marbling-app/src/refine.rs): a 5,000-op link is
+    // Progressive exact rendering (crates/marbling-app/src/gpu/refine.rs): a 5,000-op link is
     // drawn in tiles over many frames; `data-ready` says 1 only after the last one, and
     // the picture is then the CLI's. An edit after that shows the preview at once (the
     // design before the edit, with the new drop walked over it) while the tiles sharpen

@@ -319,7 +319,7 @@ for (const backend of Object.keys(BACKENDS)) {
       await context.close();
     });
 
-    test('the Noise panel: a seamless export, a layer on 2×2 tiles, and seed 004 weather data', { skip: backend !== 'webgpu' }, async () => {
+    test('the Noise panel: a seamless export, a layer on 2×2 tiles, and Khlebnikov et al. 2013 weather data', { skip: backend !== 'webgpu' }, async () => {
       // A tall page: the whole Noise panel fits without scrolling.
       const { page, context, errors } = await openPage(browser, site, '', { width: 1300, height: 1500 });
       await clickControl(page, 'mode-noise');
@@ -348,7 +348,7 @@ for (const backend of Object.keys(BACKENDS)) {
       assert.deepEqual([layered.layers[0].type, layered.layers[0].combine, layered.layers[0].weight], ['worley', 'add', 0.5]);
       await page.waitForFunction(() => document.body.dataset.noisePreview === 'tiles 256x256', null, { timeout: READY_MS });
       await page.screenshot({ path: path.join(SHOTS, `noise-tiles-${backend}.png`), timeout: READY_MS });
-      // Seed 004: the weather data drives a Gabor, drawn by the CPU preview.
+      // Khlebnikov et al. 2013: the weather data drives a Gabor, drawn by the CPU preview.
       await clickControl(page, 'noise-weather');
       await page.waitForFunction(() => JSON.parse(document.body.dataset.noise).frequency_field?.data === 'weather', null, { timeout: READY_MS });
       const spec = JSON.parse(await attr(page, 'data-noise'));

@@ -1,5 +1,5 @@
 //! Writes the gallery's prerendered thumbnails, `web/gallery-thumbnails.jpg`
-//! (src/gallery_atlas.rs): `make gallery` runs it after a pattern or gallery entry changes.
+//! (src/gpu/gallery_atlas.rs): `make gallery` runs it after a pattern or gallery entry changes.
 
 use marbling_app::gallery::entries;
 use marbling_app::gallery_atlas::{FILE_NAME, encode, render_atlas};

@@ -3,9 +3,9 @@
 //! says what happens then (history step, refresh, autosave, recent designs, link).
 
 use crate::app::MarblingApp;
-use crate::history::Surface;
-use crate::mode::Mode;
+use crate::marbling::history::Surface;
 use crate::platform;
+use crate::shell::mode::Mode;
 use marbling_core::{Design, Op, Rgb8};
 
 /// What the user asked for.
@@ -85,14 +85,14 @@ impl MarblingApp {
                 self.editor.landing = false;
                 None
             }
-            Action::Commit(ops) => Some(crate::canvas_gpu::StandIn {
+            Action::Commit(ops) => Some(crate::gpu::canvas_gpu::StandIn {
                 key: self.editor.key,
                 op: match ops.as_slice() {
-                    [op] if crate::canvas::previewable(op) => Some(op.clone()),
+                    [op] if crate::marbling::canvas::previewable(op) => Some(op.clone()),
                     _ => None,
                 },
             }),
-            _ => Some(crate::canvas_gpu::StandIn {
+            _ => Some(crate::gpu::canvas_gpu::StandIn {
                 key: self.editor.key,
                 op: None,
             }),
@@ -151,14 +151,14 @@ impl MarblingApp {
             }
             Action::Play(on) => {
                 self.editor.history.view(None);
-                self.editor.playback = on.then(crate::playback::Playback::start);
+                self.editor.playback = on.then(crate::marbling::playback::Playback::start);
                 self.refresh();
                 self.fit_if_resized(shown_size);
                 return;
             }
             Action::Seek { position, playing } => {
                 let steps = self.editor.history.design().gesture_sizes().len();
-                let mut p = crate::playback::Playback::at(position, steps);
+                let mut p = crate::marbling::playback::Playback::at(position, steps);
                 p.playing = playing && p.step < steps;
                 self.editor.playback = Some(p);
                 self.refresh();
@@ -266,7 +266,7 @@ impl MarblingApp {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::history::EditError;
+    use crate::marbling::history::EditError;
     use marbling_core::{MAX_OPS, Point, Spray};
 
     fn app() -> MarblingApp {
@@ -297,7 +297,7 @@ mod tests {
         assert!(a.editor.history.design().ops.is_empty());
         assert_eq!(a.session.recent.entries.len(), 1);
         assert!(a.session.autosave_pending && a.session.recent_pending);
-        a.editor.view = Some(crate::view::ViewState::fit(
+        a.editor.view = Some(crate::marbling::view::ViewState::fit(
             &a.editor.shown.design,
             [800.0, 600.0],
         ));
@@ -344,7 +344,7 @@ mod tests {
         assert!(std::sync::Arc::ptr_eq(&a.editor.shown.design, &design));
         a.apply(Action::Play(false));
         assert!(a.editor.playback.is_none());
-        assert_eq!(a.editor.shown, crate::shown::Shown::all(design));
+        assert_eq!(a.editor.shown, crate::marbling::shown::Shown::all(design));
     }
 
     #[test]

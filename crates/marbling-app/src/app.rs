@@ -1,16 +1,16 @@
 //! The playground app: state, what changes it, and the frame loop.
 
 use crate::action::Action;
-use crate::autosave;
-use crate::canvas_gpu::CanvasGpu;
-use crate::gpu_errors::GpuErrors;
-use crate::history::Surface;
-use crate::mode::Mode;
+use crate::gpu::canvas_gpu::CanvasGpu;
+use crate::gpu::gpu_errors::GpuErrors;
+use crate::gpu::recovery::{self, LostFlag, ParkedState};
+use crate::marbling::history::Surface;
+use crate::marbling::tools::{Gesture, ToolKind, ToolSettings};
 use crate::platform;
-use crate::prefs::Prefs;
-use crate::recovery::{self, LostFlag, ParkedState};
+use crate::shell::mode::Mode;
 use crate::state::{Editor, Hooks, Panels, Rendering, Session};
-use crate::tools::{Gesture, ToolKind, ToolSettings};
+use crate::store::autosave;
+use crate::store::prefs::Prefs;
 use crate::{History, INK_SETS};
 use marbling_core::{Antialias, Design, DesignError, Rgb8, decode_share, share_fragment};
 use std::sync::Arc;
@@ -61,17 +61,17 @@ impl MarblingApp {
     /// Creates the app: GPU resources, then the design from a share link, else the
     /// autosave, else the first gallery example.
     pub fn new(cc: &eframe::CreationContext<'_>) -> Self {
-        crate::style::apply(&cc.egui_ctx);
+        crate::shell::style::apply(&cc.egui_ctx);
         let lost = LostFlag::default();
         let gpu_errors = GpuErrors::default();
         let mut gallery_texture = None;
         let (gpu, backend) = match &cc.wgpu_render_state {
             Some(rs) => {
                 let gpu = CanvasGpu::new(&rs.device, rs.target_format);
-                let gallery = crate::gallery_gpu::GalleryGpu::new(
+                let gallery = crate::gpu::gallery_gpu::GalleryGpu::new(
                     &rs.device,
                     &rs.queue,
-                    crate::canvas_gpu::SURROUND,
+                    crate::gpu::canvas_gpu::SURROUND,
                 );
                 let mut renderer = rs.renderer.write();
                 gallery_texture = Some(renderer.register_native_texture(
@@ -89,7 +89,7 @@ impl MarblingApp {
             }
             None => (false, "none".to_owned()),
         };
-        let fallback = crate::gallery::entries()[0]
+        let fallback = crate::shell::gallery::entries()[0]
             .design()
             .unwrap_or_else(|_| blank(NEW_SIZE));
         let mut app = Self::with_design(fallback, backend, gpu);
@@ -133,14 +133,14 @@ impl MarblingApp {
                 autosave::UNREADABLE_KEY
             ));
         }
-        if let Some(text) = load(crate::prefs::KEY) {
-            match crate::prefs::Prefs::decode(&text, app.prefs) {
+        if let Some(text) = load(crate::store::prefs::KEY) {
+            match crate::store::prefs::Prefs::decode(&text, app.prefs) {
                 Ok(p) => app.prefs = p,
                 Err(e) => log::warn!("{e}"),
             }
         }
         app.session.stored_prefs.0 = Some(app.prefs);
-        if let Some(text) = load(crate::noise_settings::KEY) {
+        if let Some(text) = load(crate::noise::settings::KEY) {
             let restored = marbling_noise::NoiseSpec::from_json(&text)
                 .map_err(|e| e.to_string())
                 .and_then(|spec| app.editor.noise.with_spec(spec, &app.editor.noise_data));
@@ -150,8 +150,8 @@ impl MarblingApp {
             }
         }
         app.session.stored_noise = Some(app.editor.noise.clone());
-        if let Some(text) = load(crate::recent::KEY) {
-            app.session.recent = crate::recent::Recent::decode(&text);
+        if let Some(text) = load(crate::store::recent::KEY) {
+            app.session.recent = crate::store::recent::Recent::decode(&text);
         }
         app.refresh();
         // A first visit (no link, no autosave) lands on the gallery; `?landing=0`
@@ -233,7 +233,9 @@ impl MarblingApp {
                     .and_then(|layer| self.editor.noise.design(size, layer))
             };
             match noise {
-                Ok(noise) => self.editor.shown = crate::shown::Shown::all(Arc::new(noise)),
+                Ok(noise) => {
+                    self.editor.shown = crate::marbling::shown::Shown::all(Arc::new(noise))
+                }
                 Err(e) => self.error(format!("noise: {e}")),
             }
             return;
@@ -387,7 +389,7 @@ impl MarblingApp {
 
     fn handle_shortcuts(&mut self, ctx: &egui::Context) {
         use egui::{Key, Modifiers};
-        crate::accessibility::handle_shortcut(ctx);
+        crate::shell::accessibility::handle_shortcut(ctx);
         // Every press counts, however many arrive in one frame (a slow frame on a
         // software GPU collects several). Redo (with Shift) is taken first: undo's
         // shortcut would match it too.
@@ -407,7 +409,10 @@ impl MarblingApp {
         // Number keys 1–9 and 0 pick the first ten tools in panel order (when no text
         // field has focus).
         if !ctx.egui_wants_keyboard_input() {
-            for (key, tool) in crate::tools::TOOL_KEYS.into_iter().zip(ToolKind::ALL) {
+            for (key, tool) in crate::marbling::tools::TOOL_KEYS
+                .into_iter()
+                .zip(ToolKind::ALL)
+            {
                 if ctx.input(|i| i.key_pressed(key) && i.modifiers.is_none()) {
                     self.prefs.tool = tool;
                 }
@@ -443,12 +448,12 @@ impl eframe::App for MarblingApp {
     /// The grey around the sheet: the canvas is drawn unfilled over it, and the canvas's
     /// paint callback draws only the sheet.
     fn clear_color(&self, _visuals: &egui::Visuals) -> [f32; 4] {
-        let [r, g, b] = crate::canvas_gpu::SURROUND;
+        let [r, g, b] = crate::gpu::canvas_gpu::SURROUND;
         egui::Color32::from_rgb(r, g, b).to_normalized_gamma_f32()
     }
 
     fn ui(&mut self, ui: &mut egui::Ui, frame: &mut eframe::Frame) {
-        crate::panic_guard::panic_if_requested();
+        crate::automation::panic_guard::panic_if_requested();
         let ctx = ui.ctx().clone();
         // Mean interval of the last 60 frames, for the `data-frame-ms` hook.
         let dt = f64::from(ctx.input(|i| i.unstable_dt));
@@ -457,7 +462,7 @@ impl eframe::App for MarblingApp {
         }
         self.hooks.frame_times.push_back(dt);
         self.hooks.frames += 1;
-        if crate::device_pixels::fit_backing_store() {
+        if crate::gpu::device_pixels::fit_backing_store() {
             ctx.request_repaint();
         }
         self.check_device_lost();
@@ -483,22 +488,24 @@ impl eframe::App for MarblingApp {
         let layer = ui.layer_id();
         let shape_count = || crate::fast_paint::FastPaint::mark(&ctx, layer);
         let panel_start = shape_count();
-        // Phones and tablets get their own arrangement (src/layout.rs); the gallery
+        // Phones and tablets get their own arrangement (src/shell/layout.rs); the gallery
         // takes the whole of a narrow screen (its cards open designs; "Back to the
         // editor" brings the controls back).
-        let layout =
-            crate::layout::Layout::for_screen(ui.max_rect().size(), platform::touch_screen());
+        let layout = crate::shell::layout::Layout::for_screen(
+            ui.max_rect().size(),
+            platform::touch_screen(),
+        );
         self.panels.layout = layout;
         let narrow = ui.max_rect().width() < 720.0;
         let gallery_only = self.editor.landing && (narrow || layout.touch());
         let side_panel = match layout {
             _ if gallery_only => false,
-            crate::layout::Layout::Desktop => true,
-            crate::layout::Layout::Portrait => {
+            crate::shell::layout::Layout::Desktop => true,
+            crate::shell::layout::Layout::Portrait => {
                 self.bottom_sheet(ui, frame);
                 false
             }
-            crate::layout::Layout::Landscape => {
+            crate::shell::layout::Layout::Landscape => {
                 self.tool_rail(ui);
                 self.panels.rail_panel_open
             }
@@ -514,7 +521,7 @@ impl eframe::App for MarblingApp {
                 .size_range(240.0..=360.0)
                 .show(ui, |ui| {
                     if layout.touch() {
-                        crate::layout::touch_spacing(ui);
+                        crate::shell::layout::touch_spacing(ui);
                     }
                     egui::ScrollArea::vertical().show(ui, |ui| self.side_panel(ui, frame));
                 });
@@ -541,7 +548,7 @@ impl eframe::App for MarblingApp {
                 .show_separator_line(false)
                 .show(ui, |ui| self.player_bar(ui));
         }
-        // Set again by the canvas when it is shown this frame (src/hooks.rs).
+        // Set again by the canvas when it is shown this frame (src/automation/hooks.rs).
         self.hooks.requested = None;
         egui::CentralPanel::default()
             .frame(egui::Frame::central_panel(ui.style()).fill(egui::Color32::TRANSPARENT))
@@ -578,9 +585,9 @@ impl eframe::App for MarblingApp {
             .hooks
             .memory
             .as_ref()
-            .is_none_or(|(at, _)| now_s - at >= crate::memory::EVERY_S)
+            .is_none_or(|(at, _)| now_s - at >= crate::automation::memory::EVERY_S)
         {
-            self.hooks.memory = Some((now_s, crate::memory::report(frame)));
+            self.hooks.memory = Some((now_s, crate::automation::memory::report(frame)));
         }
         self.update_hooks(&ctx);
     }

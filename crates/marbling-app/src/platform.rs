@@ -292,11 +292,11 @@ mod imp {
     }
 
     /// Defines `window.marblingPanic()`, which makes the next frame panic: how the
-    /// browser tests check that a panic keeps the design (src/panic_guard.rs).
+    /// browser tests check that a panic keeps the design (src/automation/panic_guard.rs).
     pub fn expose_panic() {
         use wasm_bindgen::closure::Closure;
         let Some(w) = window() else { return };
-        let f = Closure::<dyn Fn()>::new(crate::panic_guard::request_panic);
+        let f = Closure::<dyn Fn()>::new(crate::automation::panic_guard::request_panic);
         let _ = js_sys::Reflect::set(&w, &"marblingPanic".into(), f.as_ref());
         f.forget();
     }

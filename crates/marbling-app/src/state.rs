@@ -2,22 +2,23 @@
 //! structures its apps): the document being edited ([`Editor`]), what is kept in the
 //! page's storage ([`Session`]), the GPU renderer's side ([`Rendering`]), the automation
 //! hooks ([`Hooks`]) and the panels' own state ([`Panels`]); the tool preferences are
-//! [`crate::prefs::Prefs`]. Everything that changes the document goes through
+//! [`crate::store::prefs::Prefs`]. Everything that changes the document goes through
 //! `MarblingApp::apply` (src/action.rs).
 
+use crate::History;
 use crate::app::{ActiveGesture, Message, NEW_SIZE};
-use crate::canvas_gpu::{CanvasStatus, StandIn};
-use crate::export::{ExportSize, PngExport};
-use crate::gpu_errors::GpuErrors;
-use crate::mode::Mode;
-use crate::noise_panel::NoiseAnalysis;
-use crate::noise_settings::NoiseSettings;
+use crate::gpu::canvas_gpu::{CanvasStatus, StandIn};
+use crate::gpu::gpu_errors::GpuErrors;
+use crate::gpu::recovery::LostFlag;
+use crate::marbling::playback::Playback;
+use crate::marbling::shown::Shown;
+use crate::marbling::view::ViewState;
+use crate::noise::panel::NoiseAnalysis;
+use crate::noise::settings::NoiseSettings;
 use crate::platform::PickSlot;
-use crate::playback::Playback;
-use crate::recovery::LostFlag;
-use crate::shown::Shown;
-use crate::view::ViewState;
-use crate::{History, prefs::Prefs, recent::Recent};
+use crate::shell::mode::Mode;
+use crate::store::export::{ExportSize, PngExport};
+use crate::store::{prefs::Prefs, recent::Recent};
 use marbling_core::Design;
 use std::borrow::Cow;
 use std::collections::{HashMap, VecDeque};
@@ -44,8 +45,8 @@ pub struct Editor {
     /// Two fingers are on the canvas: the view follows them unsnapped (snapping every
     /// frame would let the pinch's anchor drift), and is snapped when they lift.
     pub pinching: bool,
-    /// The fingers on the canvas (src/fingers.rs).
-    pub fingers: crate::fingers::Fingers,
+    /// The fingers on the canvas (src/marbling/fingers.rs).
+    pub fingers: crate::marbling::fingers::Fingers,
     /// The tool being dragged.
     pub active: Option<ActiveGesture>,
     /// Seed of the next gesture's random choices.
@@ -55,11 +56,11 @@ pub struct Editor {
     /// Player speed, steps per second.
     pub play_speed: f64,
     /// The player's explain view: formulas, deformation grid, arrows and area probe.
-    pub explain: crate::player::Explain,
+    pub explain: crate::marbling::player::Explain,
     /// True while the design is the start-up example nobody has touched (a link then
     /// replaces it instead of stacking on it).
     pub pristine: bool,
-    /// The gallery is shown in place of the canvas (src/landing.rs).
+    /// The gallery is shown in place of the canvas (src/shell/landing.rs).
     pub landing: bool,
     /// The address bar's fragment last loaded.
     pub last_fragment: Option<String>,
@@ -75,11 +76,11 @@ pub struct Editor {
     /// spec builds its CPU field); `None` until asked for.
     pub noise_layer: Option<Result<marbling_core::NoiseLayer, String>>,
     /// The data sets loaded for data-driven noise.
-    pub noise_data: crate::noise_data::NoiseData,
+    pub noise_data: crate::noise::data::NoiseData,
     /// The CPU picture of what the noise background cannot show.
-    pub noise_preview: Option<crate::noise_preview::NoisePreview>,
+    pub noise_preview: Option<crate::noise::preview::NoisePreview>,
     /// A running Export PNG of the noise.
-    pub noise_export: Option<crate::noise_export::NoiseExport>,
+    pub noise_export: Option<crate::noise::export::NoiseExport>,
 }
 
 impl Editor {
@@ -99,7 +100,7 @@ impl Editor {
             next_seed: 1,
             playback: None,
             play_speed: 0.8,
-            explain: crate::player::Explain::default(),
+            explain: crate::marbling::player::Explain::default(),
             pristine: false,
             landing: false,
             last_fragment: None,
@@ -108,7 +109,7 @@ impl Editor {
             noise_shown: None,
             noise_analysis: None,
             noise_layer: None,
-            noise_data: crate::noise_data::NoiseData::default(),
+            noise_data: crate::noise::data::NoiseData::default(),
             noise_preview: None,
             noise_export: None,
         }
@@ -126,7 +127,7 @@ pub struct Session {
     /// The preferences last stored, and when.
     pub stored_prefs: (Option<Prefs>, f64),
     /// The noise setup last stored.
-    pub stored_noise: Option<crate::noise_settings::NoiseSettings>,
+    pub stored_noise: Option<crate::noise::settings::NoiseSettings>,
     /// *Recent designs*.
     pub recent: Recent,
     /// True when the recent list must be written.
@@ -166,16 +167,16 @@ pub struct Rendering {
     pub fast_paint: crate::fast_paint::FastPaint,
     /// A PNG export in progress and the file name it will get.
     pub export: Option<(PngExport, String)>,
-    /// An SVG export in progress (src/svg_export.rs).
-    pub svg_export: Option<crate::svg_export::SvgExport>,
+    /// An SVG export in progress (src/store/svg_export.rs).
+    pub svg_export: Option<crate::store::svg_export::SvgExport>,
     /// When the user last acted on the page (egui's clock, seconds): the canvas refines
     /// at its idle pace a while after.
     pub last_input_s: f64,
-    /// The live video playing as the background (src/video.rs).
+    /// The live video playing as the background (src/media/video.rs).
     #[cfg(target_arch = "wasm32")]
-    pub video: Option<crate::video::LiveVideo>,
+    pub video: Option<crate::media::video::LiveVideo>,
     /// The video's latest frame, shown as the design's picture.
-    pub live_frame: Option<crate::video::LiveFrame>,
+    pub live_frame: Option<crate::media::video::LiveFrame>,
     /// How video frames are laid on the sheet.
     pub video_fit: marbling_core::ImageFit,
     /// Where a picked video file delivers.
@@ -222,12 +223,12 @@ pub struct Hooks {
     /// The sheet's top-left corner on the page and CSS pixels per design pixel.
     pub sheet_on_page: Option<[f64; 3]>,
     /// The noise setup and its spec JSON (for `data-noise`, written when it changes).
-    pub noise_json: Option<(crate::noise_settings::NoiseSettings, String)>,
+    pub noise_json: Option<(crate::noise::settings::NoiseSettings, String)>,
     /// The exact frame this frame's canvas asks for (design, size, view, antialiasing,
     /// live picture); `None` when no canvas is shown. `data-ready` is 1 only when it is
     /// the frame drawn.
-    pub requested: Option<crate::canvas_gpu::FrameRequest>,
-    /// `data-memory` (src/memory.rs) and when it was taken (egui's clock, seconds).
+    pub requested: Option<crate::gpu::canvas_gpu::FrameRequest>,
+    /// `data-memory` (src/automation/memory.rs) and when it was taken (egui's clock, seconds).
     pub memory: Option<(f64, String)>,
 }
 
@@ -240,14 +241,14 @@ pub struct Panels {
     pub pick: PickSlot,
     /// Where a data file pick (noise playground) delivers.
     pub data_pick: PickSlot,
-    /// Where a picked or pasted picture delivers (src/image_input.rs).
+    /// Where a picked or pasted picture delivers (src/media/picture.rs).
     pub image_pick: PickSlot,
     /// *Copy link* found the picture too large for a link, for the design of this key:
     /// the downscale-or-save offer is shown.
     pub picture_link_offer: Option<u64>,
-    /// The gallery's designs and thumbnails (src/landing.rs), read on first show.
-    pub gallery: Option<crate::landing::GalleryView>,
-    /// The GPU thumbnail atlas (src/gallery_gpu.rs) as egui knows it.
+    /// The gallery's designs and thumbnails (src/shell/landing.rs), read on first show.
+    pub gallery: Option<crate::shell::landing::GalleryView>,
+    /// The GPU thumbnail atlas (src/gpu/gallery_gpu.rs) as egui knows it.
     pub gallery_texture: Option<egui::TextureId>,
     /// Thumbnails of recent designs, by share fragment (made on first show; `None`: too
     /// large to draw one quickly, or unreadable).
@@ -256,22 +257,22 @@ pub struct Panels {
     pub new_size: [u32; 2],
     /// The size Export PNG renders at.
     pub export_size: ExportSize,
-    /// The player being filmed (src/recorder.rs).
-    pub recorder: Option<crate::recorder::Recorder>,
-    /// The 3D view window (src/view3d_window.rs).
-    pub view3d: crate::view3d_window::View3dWindow,
+    /// The player being filmed (src/media/recorder.rs).
+    pub recorder: Option<crate::media::recorder::Recorder>,
+    /// The 3D view window (src/media/view3d.rs).
+    pub view3d: crate::media::view3d::View3dWindow,
     /// The portrait layout's bottom sheet: its tab, and whether it is open.
-    pub sheet_tab: crate::layout::SheetTab,
+    pub sheet_tab: crate::shell::layout::SheetTab,
     pub sheet_open: bool,
     /// The landscape layout's full side panel beside the tool rail is open.
     pub rail_panel_open: bool,
     /// The layout of the last frame (for `data-layout`).
-    pub layout: crate::layout::Layout,
+    pub layout: crate::shell::layout::Layout,
     /// The explain view's geometry and what it was computed for (shown design's key,
     /// settings).
     pub explain_cache: Option<(
-        (u64, crate::player::Explain),
-        Arc<crate::player::ExplainGeometry>,
+        (u64, crate::marbling::player::Explain),
+        Arc<crate::marbling::player::ExplainGeometry>,
     )>,
 }
 
@@ -289,12 +290,12 @@ impl Default for Panels {
             new_size: NEW_SIZE,
             export_size: ExportSize::Screen,
             recorder: None,
-            view3d: crate::view3d_window::View3dWindow::default(),
+            view3d: crate::media::view3d::View3dWindow::default(),
             explain_cache: None,
-            sheet_tab: crate::layout::SheetTab::Tools,
+            sheet_tab: crate::shell::layout::SheetTab::Tools,
             sheet_open: true,
             rail_panel_open: false,
-            layout: crate::layout::Layout::Desktop,
+            layout: crate::shell::layout::Layout::Desktop,
         }
     }
 }

@@ -17,7 +17,7 @@
 //!   its noise at the sample's **output design point** (fixed to the paper: it does not
 //!   move when the ink is combed); `pigment-grain` at the point where the walk ended —
 //!   the back-traced point for background samples, or the point inside the drop/spray
-//!   disc that covered the sample — so it flows with the ink (seed 000: flatness vs
+//!   disc that covered the sample — so it flows with the ink (Bénard et al. 2010: flatness vs
 //!   coherent motion). Paper grain is applied after pigment grain (the order does not
 //!   change the product).
 //! - Inside a design a noise spec may not `tile`, stack `layers` or carry its own

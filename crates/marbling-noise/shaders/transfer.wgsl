@@ -1,5 +1,5 @@
 // transfer.wgsl — noise to intensity and colour: default grey map, smoothstep threshold,
-// seed 004's cubic spline decay and HSV value blend (keep in sync with
+// Khlebnikov et al. (2013)'s cubic spline decay and HSV value blend (keep in sync with
 // crates/marbling-noise/src/transfer.rs and render.rs).
 
 // 0.5 + n/6 clamped: +-3 sigma spans black to white.

@@ -1,4 +1,4 @@
-//! Curl noise (Bridson et al. 2007; seed 003 ch. 5): v = (∂ψ/∂y, −∂ψ/∂x) of an fBm
+//! Curl noise (Bridson et al. 2007; Kung 2019 ch. 5): v = (∂ψ/∂y, −∂ψ/∂x) of an fBm
 //! potential ψ, divergence free by construction, from analytic Perlin derivatives.
 //! Keep in sync with `curl` in `shaders/curl.wgsl`.
 

@@ -1,4 +1,4 @@
-//! Data grids that drive a noise (seed 004: frequency, orientation and colour from three
+//! Data grids that drive a noise (Khlebnikov et al. 2013: frequency, orientation and colour from three
 //! scalar attributes): a PNG (8- or 16-bit, 1–3 channels), a CSV grid (one channel), or
 //! the built-in analytic `weather` field. Values are normalised to [0, 1]; each channel
 //! keeps its name and the physical range the normalised values stand for (for legends).

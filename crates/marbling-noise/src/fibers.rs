@@ -1,4 +1,4 @@
-//! Paper and canvas height fields after Kaplan & Cohen 2005 (seed 002): many short
+//! Paper and canvas height fields after Kaplan & Cohen 2005: many short
 //! rectangular fibers of a given length and width are "drawn" into a height field (the
 //! height counts the fibers covering a point), randomly oriented for paper, along the
 //! cardinal directions with weights for woven canvas, with optional impurities (small dark

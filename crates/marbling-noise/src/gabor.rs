@@ -1,5 +1,5 @@
 //! Sparse Gabor convolution noise (Lagae, Lefebvre, Drettakis & Dutré 2009; NPR use after
-//! Bénard et al., seed 000; random phase and spatially varying parameters after seed
+//! Bénard et al., Bénard et al. 2010; random phase and spatially varying parameters after seed
 //! 004 / Lagae et al. 2011).
 //!
 //! n(x) = Σᵢ wᵢ·g(x − xᵢ) with the kernel
@@ -33,7 +33,7 @@ pub enum GaborKind {
     Anisotropic,
     /// Each impulse draws a uniform orientation in [0, 2π): a ring-shaped spectrum.
     Isotropic,
-    /// Orientation ω₀ and a uniform random phase φ ∈ [0, 2π) per impulse (seed 004);
+    /// Orientation ω₀ and a uniform random phase φ ∈ [0, 2π) per impulse (Khlebnikov et al. 2013);
     /// its variance has no oscillating term, so it is independent of F₀.
     RandomPhase,
 }

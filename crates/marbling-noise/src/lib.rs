@@ -5,9 +5,9 @@
 //! Noises: sparse Gabor (anisotropic, isotropic, random phase; orientation and frequency
 //! optionally driven by another field), Perlin fBm, value noise, Worley (F1, F2, F2 − F1
 //! × Euclidean, Manhattan, Chebyshev), white noise, curl noise, paper and canvas fibers;
-//! tileable variants; transfer functions (thresholds, seed 004's spline decay, curves,
+//! tileable variants; transfer functions (thresholds, Khlebnikov et al. (2013)'s spline decay, curves,
 //! HSV value blend) and colour ramps; layers combined by add, multiply, max, min or mask;
-//! Gabor parameters driven by data grids (seed 004); JSON specs with path-named errors.
+//! Gabor parameters driven by data grids (Khlebnikov et al. 2013); JSON specs with path-named errors.
 //!
 //! Conventions: positions in output pixels, x right, y down; frequencies in cycles per
 //! output pixel; angles in radians from +x towards +y. Every noise is normalised to zero
@@ -65,7 +65,7 @@ pub use spec::{
     Blend, BlendBase, DecayValue, DriveSource, DriveSpec, FieldError, MAX_IMPULSES, NOISE_TYPES,
     NoiseSpec, Source, SpecError, Tile, Transfer,
 };
-pub use spec_edit::{EDIT_FLOOR, SEED004_FEATURE};
+pub use spec_edit::{EDIT_FLOOR, FEATURE_PX};
 pub use transfer::{
     SplineDecay, SplineDecayTable, Threshold, hsv_to_rgb, hsv_value_blend, rgb_to_hsv, smoothstep,
 };

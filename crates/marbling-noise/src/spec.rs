@@ -60,7 +60,7 @@ pub struct DriveSpec {
 pub enum DriveSource {
     /// A noise (no transfer, palette or blend), unit variance: `{"noise": SPEC}`.
     Noise(Box<NoiseSpec>),
-    /// A data channel in [0, 1]: `{"data": NAME, "channel": K}` (seed 004).
+    /// A data channel in [0, 1]: `{"data": NAME, "channel": K}` (Khlebnikov et al. 2013).
     Data(DataRef),
 }
 
@@ -158,7 +158,7 @@ pub enum Source {
 pub enum Transfer {
     /// Smoothstep threshold.
     Threshold(Threshold),
-    /// Seed 004's spline decay with mean intensity `value`.
+    /// Khlebnikov et al. (2013)'s spline decay with mean intensity `value`.
     SplineDecay(DecayValue),
     /// A monotone cubic remap of the default intensity through control points.
     Curve(Curve),
@@ -171,11 +171,11 @@ pub enum DecayValue {
     Constant(f32),
     /// v rising from 0 at the left edge to 1 at the right edge (a legend strip).
     RampX,
-    /// v read from a data channel (seed 004: the attribute shown by the frequency).
+    /// v read from a data channel (Khlebnikov et al. 2013: the attribute shown by the frequency).
     Data(DataRef),
 }
 
-/// Seed 004's HSV value blend of the intensity into a base colour.
+/// Khlebnikov et al. (2013)'s HSV value blend of the intensity into a base colour.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Blend {
     /// β, the share of the base colour's value kept (0.6 in the paper).
@@ -191,7 +191,7 @@ pub enum BlendBase {
     Color(Rgb),
     /// A ramp across the image, left to right.
     Ramp(ColorRamp),
-    /// A ramp sampled at a data channel's value (seed 004's colour-coded attribute).
+    /// A ramp sampled at a data channel's value (Khlebnikov et al. (2013)'s colour-coded attribute).
     Data {
         /// The colours.
         ramp: ColorRamp,

@@ -1,7 +1,7 @@
 //! Changing a spec in code, as an editor does: the starting values of each noise type,
-//! the type's name, the seed, and the spec rescaled for a zoom (seed 004's
+//! the type's name, the seed, and the spec rescaled for a zoom (Khlebnikov et al. (2013)'s
 //! zoom-independent rule: every frequency × a power of two, or for a data-driven Gabor
-//! the paper's continuous frequency control), and seed 004's weather example.
+//! the paper's continuous frequency control), and Khlebnikov et al. (2013)'s weather example.
 
 use crate::data::DataRef;
 use crate::fbm::{Basis, FbmParams};
@@ -128,9 +128,9 @@ impl Source {
     }
 }
 
-/// Seed 004's screen-space feature sizes s and S, pixels: the range the human visual
+/// Khlebnikov et al. (2013)'s screen-space feature sizes s and S, pixels: the range the human visual
 /// system reads best.
-pub const SEED004_FEATURE: [f32; 2] = [4.0, 40.0];
+pub const FEATURE_PX: [f32; 2] = [4.0, 40.0];
 
 /// √(−ln t/π) for the Gabor truncation t: a = this / G makes a kernel span G pixels.
 fn kernel_span() -> f32 {
@@ -161,7 +161,7 @@ impl Source {
 }
 
 impl NoiseSpec {
-    /// Whether a data channel drives the Gabor frequency (seed 004's first attribute).
+    /// Whether a data channel drives the Gabor frequency (Khlebnikov et al. (2013)'s first attribute).
     #[must_use]
     pub fn has_data_frequency(&self) -> bool {
         matches!(
@@ -176,12 +176,12 @@ impl NoiseSpec {
         )
     }
 
-    /// Seed 004's frequency control (eq. 3–5) with F₀ = `f0` (= Z/S at zoom Z): the
+    /// Khlebnikov et al. (2013)'s frequency control (eq. 3–5) with F₀ = `f0` (= Z/S at zoom Z): the
     /// frequency drive spans log₂(S/s) octaves, so features run from S/Z (v = 0) down to
     /// s/Z (v = 1) design pixels, and the bandwidth makes a kernel span one
     /// period at v = 0. Specs without a data frequency drive are returned unchanged.
     #[must_use]
-    pub fn seed004(&self, f0: f32) -> NoiseSpec {
+    pub fn zoom_independent(&self, f0: f32) -> NoiseSpec {
         let mut s = self.clone();
         if !self.has_data_frequency() {
             return s;
@@ -193,7 +193,7 @@ impl NoiseSpec {
             ..
         } = &mut s.source
         {
-            let [small, large] = SEED004_FEATURE;
+            let [small, large] = FEATURE_PX;
             *frequency = ranges::GABOR_FREQUENCY.clamp(f64::from(f0), EDIT_FLOOR) as f32;
             *bandwidth =
                 ranges::BANDWIDTH.clamp(f64::from(kernel_span() * *frequency), EDIT_FLOOR) as f32;
@@ -202,7 +202,7 @@ impl NoiseSpec {
         s
     }
 
-    /// Seed 004's weather figure with the built-in `weather` data: random-phase Gabor
+    /// Khlebnikov et al. (2013)'s weather figure with the built-in `weather` data: random-phase Gabor
     /// whose frequency and mean intensity (spline decay) show the temperature, whose
     /// orientation shows the wind direction, HSV-blended (β = 0.6) into `palette` at the
     /// pressure. Features span 40 to 4 pixels at zoom 1.
@@ -235,7 +235,7 @@ impl NoiseSpec {
                 frequency_field: drive(1, 1.0),
             })
         };
-        gabor.seed004(1.0 / SEED004_FEATURE[1])
+        gabor.zoom_independent(1.0 / FEATURE_PX[1])
     }
 
     /// A spec of `source` alone: no tiling, transfer, palette or blend.
@@ -376,11 +376,11 @@ mod tests {
     }
 
     #[test]
-    fn seed004_keeps_features_between_4_and_40_screen_pixels() {
+    fn zoom_independent_keeps_features_between_4_and_40_screen_pixels() {
         let spec = NoiseSpec::weather_example(ColorRamp::named("viridis").expect("named"), 1);
         assert!(spec.has_data_frequency());
         for zoom in [0.5f32, 1.0, 3.0] {
-            let s = spec.seed004(zoom / SEED004_FEATURE[1]);
+            let s = spec.zoom_independent(zoom / FEATURE_PX[1]);
             let Source::Gabor {
                 frequency,
                 bandwidth,

@@ -1,7 +1,7 @@
 //! Transfer functions from noise (zero mean, unit variance) to intensity in [0, 1]:
 //! smoothstep thresholds (stipples from isotropic Gabor, hatching from anisotropic Gabor,
-//! cross-hatching as the product of two), the C² cubic spline decay of seed 004 whose mean
-//! intensity tracks a value v ∈ [0, 1], and seed 004's HSV value blend with β.
+//! cross-hatching as the product of two), the C² cubic spline decay of Khlebnikov et al. 2013 whose mean
+//! intensity tracks a value v ∈ [0, 1], and Khlebnikov et al. (2013)'s HSV value blend with β.
 //! Keep in sync with `shaders/transfer.wgsl`.
 
 use crate::ramp::Rgb;
@@ -41,7 +41,7 @@ impl Threshold {
     }
 }
 
-/// Seed 004's cubic spline decay D(t) = (2q/γ³)|t|³ − (3q/γ²)t² + q for |t| ≤ γ, else 0:
+/// Khlebnikov et al. (2013)'s cubic spline decay D(t) = (2q/γ³)|t|³ − (3q/γ²)t² + q for |t| ≤ γ, else 0:
 /// peak q at t = 0, support [−γ, γ], max |D′| = 3q/(2γ).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SplineDecay {
@@ -95,7 +95,7 @@ impl SplineDecay {
         s * h / 3.0
     }
 
-    /// The decay whose mean intensity on unit-variance Gaussian noise is `v` (seed 004,
+    /// The decay whose mean intensity on unit-variance Gaussian noise is `v` (Khlebnikov et al. 2013,
     /// eq. 6), by bisection on γ ∈ [0, 40]; `v` is clamped to [0, 0.998] (v → 1 needs an
     /// infinitely wide support).
     #[must_use]
@@ -114,7 +114,7 @@ impl SplineDecay {
     }
 }
 
-/// γ(v) tabulated at 257 evenly spaced v ∈ [0, 1] and interpolated linearly, as seed 004
+/// γ(v) tabulated at 257 evenly spaced v ∈ [0, 1] and interpolated linearly, as Khlebnikov et al. 2013
 /// does for per-pixel values.
 #[derive(Clone, Debug)]
 pub struct SplineDecayTable {
@@ -187,7 +187,7 @@ pub fn hsv_to_rgb(hsv: [f32; 3]) -> Rgb {
     [r + m, g + m, b + m]
 }
 
-/// Seed 004 eq. 9: keeps hue and saturation of `color` and sets its value to
+/// Khlebnikov et al. 2013 eq. 9: keeps hue and saturation of `color` and sets its value to
 /// β·C_v + (1 − β)·`intensity` (β = 0.6 in the paper).
 #[must_use]
 pub fn hsv_value_blend(color: Rgb, intensity: f32, beta: f32) -> Rgb {

@@ -151,7 +151,7 @@ impl egui_wgpu::CallbackTrait for FlatShapes {
 mod tests {
     use super::layer_shapes::count as shape_count;
     use super::*;
-    use crate::test_window::{FORMAT, Window, differing};
+    use crate::gpu::test_window::{FORMAT, Window, differing};
     use egui::{Color32, Pos2, Stroke};
 
     /// One frame with a canvas and, over it, what the tool overlay paints: thick and

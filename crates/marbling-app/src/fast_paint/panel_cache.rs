@@ -330,7 +330,7 @@ impl egui_wgpu::CallbackTrait for PanelCopy {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::test_window::{CLEAR, Window, differing};
+    use crate::gpu::test_window::{CLEAR, Window, differing};
 
     const SIZE: [u32; 2] = [320, 240];
 

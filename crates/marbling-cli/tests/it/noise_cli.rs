@@ -257,7 +257,7 @@ fn tileable_exports_continue_across_opposite_edges() {
     );
 }
 
-/// Seed 004 from the command line: a spec whose drives, decay and colour read a CSV grid
+/// Khlebnikov et al. 2013 from the command line: a spec whose drives, decay and colour read a CSV grid
 /// and a PNG beside it; a missing or corrupt data file is named.
 #[test]
 fn data_driven_specs_read_their_data_beside_the_spec() {

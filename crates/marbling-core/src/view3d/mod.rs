@@ -1,4 +1,4 @@
-//! The 3D view (seed 001, figures 6–7): the design on a sphere, vase, cylinder, book or
+//! The 3D view (Lu et al. 2012, figures 6–7): the design on a sphere, vase, cylinder, book or
 //! plane, seen through an orbit camera, every sample evaluated **exactly** — the ray's
 //! hit gives texture coordinates, hence a design point, which walks back through every
 //! op ([`crate::point_color`]), so edges stay sharp however close the camera goes. For

@@ -1,4 +1,4 @@
-//! Seed 004's data-driven Gabor: a data image's first channel sets the local frequency
+//! Khlebnikov et al. (2013)'s data-driven Gabor: a data image's first channel sets the local frequency
 //! (F₀·2^(amount·v)) and its second the orientation (ω₀ + amount·v). Measured by a DFT
 //! of two 64² windows: the spectral peak of each follows its region's data.
 

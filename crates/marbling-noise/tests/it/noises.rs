@@ -164,7 +164,7 @@ fn tileable_variants_wrap() {
 
 #[test]
 fn spline_decay_mean_intensity_tracks_value_on_gabor() {
-    // Seed 004: on random-phase Gabor noise the mean of D(n) equals v.
+    // Khlebnikov et al. 2013: on random-phase Gabor noise the mean of D(n) equals v.
     let n = sample_grid(
         &spec(r#"{"type":"gabor","kind":"random-phase","frequency":0.1,"orientation":0.4,"bandwidth":0.06,"seed":12}"#),
         256,

@@ -1,0 +1,413 @@
+//! The canvas: the exactly rendered design, pan and zoom, the tools' gestures and
+//! their footprints.
+
+use crate::app::{ActiveGesture, MarblingApp};
+use crate::fast_paint::FastPaint;
+use crate::gpu::canvas_gpu::{CanvasCallback, CanvasPlacement, FrameRequest, StandIn};
+use crate::marbling::footprint;
+use crate::marbling::tools::{Gesture, ToolKind, ops_for};
+use crate::marbling::view::ViewState;
+use eframe::egui_wgpu;
+use egui::{Color32, PointerButton, Pos2, Rect, Sense, Vec2};
+use marbling_core::{Op, Point, Rgb8};
+
+impl MarblingApp {
+    /// Draws the canvas and handles its input.
+    pub(crate) fn canvas(&mut self, ui: &mut egui::Ui, frame: &mut eframe::Frame) {
+        let (rect, response) = ui.allocate_exact_size(ui.available_size(), Sense::click_and_drag());
+        self.control("canvas", &response);
+        let painter = ui.painter_at(rect);
+        let size = [f64::from(rect.width()), f64::from(rect.height())];
+        let ppp = f64::from(ui.ctx().pixels_per_point());
+        // Refit on a new window size or pixel ratio (a rotated phone, a hi-DPI page's
+        // first frames), not when a panel's content changes the canvas a little.
+        let window = ui.ctx().content_rect().size();
+        let canvas_key = [f64::from(window.x), f64::from(window.y), ppp];
+        let refit = match (self.editor.view, self.editor.fit) {
+            (None, _) => true,
+            (Some(v), Some((fitted, key))) => v == fitted && key != canvas_key,
+            (Some(_), None) => false,
+        };
+        if refit {
+            let v = ViewState::fit(&self.editor.shown.design, size).snapped(ppp);
+            self.editor.view = Some(v);
+            self.editor.fit = Some((v, canvas_key));
+        }
+        let view = self.editor.view.unwrap_or_default();
+        let pointer = response.hover_pos();
+        let local = |p: Pos2| [f64::from(p.x - rect.min.x), f64::from(p.y - rect.min.y)];
+
+        self.navigate(ui, &response, rect, ppp);
+        let view = self.editor.view.unwrap_or(view);
+        if self.editor.mode == crate::shell::mode::Mode::Marbling {
+            self.drive_tool(ui, &response, rect, &view);
+        }
+
+        // The design's rectangle on screen, clipped to the canvas.
+        let tl = view.to_screen(Point::ZERO);
+        let (w, h) = self.editor.shown.size();
+        let br = view.to_screen(Point::new(f64::from(w), f64::from(h)));
+        let sheet = Rect::from_min_max(
+            rect.min + Vec2::new(tl[0] as f32, tl[1] as f32),
+            rect.min + Vec2::new(br[0] as f32, br[1] as f32),
+        );
+        let placement = CanvasPlacement::new(rect, sheet, ppp);
+        if self.rendering.gpu {
+            self.paint_design(ui, frame, rect, placement, &view);
+        } else {
+            let [r, g, b] = crate::gpu::canvas_gpu::SURROUND;
+            painter.rect_filled(rect, 0.0, Color32::from_rgb(r, g, b));
+            painter.text(
+                rect.center(),
+                egui::Align2::CENTER_CENTER,
+                "No GPU renderer available",
+                egui::FontId::proportional(18.0),
+                Color32::WHITE,
+            );
+        }
+        if self.editor.mode == crate::shell::mode::Mode::Noise {
+            self.paint_noise_preview(ui, &painter, sheet);
+        }
+        // The sheet's outline and the tool overlay: untextured shapes, drawn by the
+        // flat-mesh pipeline (src/fast_paint/flat_overlay.rs) when fast paint is on.
+        let overlay_start = FastPaint::mark(ui.ctx(), painter.layer_id());
+        painter.rect_stroke(
+            sheet,
+            0.0,
+            egui::Stroke::new(1.0, Color32::from_gray(20)),
+            egui::StrokeKind::Outside,
+        );
+        let design_pointer = pointer.map(|p| view.to_design(local(p)));
+        // For automation: the sheet's top-left on the page and the CSS pixels per design
+        // pixel (egui points are CSS pixels; the hooks use no other unit).
+        self.hooks.sheet_on_page = Some([
+            placement.sheet_px[0] / ppp,
+            placement.sheet_px[1] / ppp,
+            view.zoom,
+        ]);
+        if let Some(p) = self.editor.playback {
+            // The player draws the step's tool moving, and the explain view.
+            if let Some(g) = self.explain_geometry() {
+                crate::marbling::player_drawing::draw_explain(
+                    &painter.with_clip_rect(sheet),
+                    rect,
+                    &view,
+                    &g.grid,
+                    &g.arrows,
+                    &g.probe,
+                );
+            }
+            let design = self.editor.history.design();
+            if let Some((op, e)) = p.easing_op(design, &design.step_bounds()) {
+                crate::marbling::player_drawing::draw_tool(&painter, rect, &view, op, e, (w, h));
+            }
+        } else if self.editor.mode == crate::shell::mode::Mode::Marbling {
+            footprint::draw(&painter, rect, &view, self, design_pointer);
+        }
+        let overlay_end = FastPaint::mark(ui.ctx(), painter.layer_id());
+        self.rendering.fast_paint.overlay(
+            ui.ctx(),
+            frame.wgpu_render_state().map(|rs| rs.target_format),
+            painter.layer_id(),
+            overlay_start..overlay_end,
+        );
+    }
+
+    /// Pan (middle drag, space + drag, two fingers) and zoom (wheel, pinch).
+    /// After each zoom the view is snapped to physical pixels (`ppp` per point), so every
+    /// zoom level samples exactly the points of a CPU render at that scale (whole-pixel
+    /// pans keep it snapped).
+    fn navigate(&mut self, ui: &egui::Ui, response: &egui::Response, rect: Rect, ppp: f64) {
+        let (steps, any_touches) =
+            ui.input(|i| (self.editor.fingers.feed(&i.events), i.any_touches()));
+        if !any_touches {
+            // No finger is down (also after a lift the canvas did not see).
+            self.editor.fingers = Default::default();
+        }
+        let Some(view) = self.editor.view.as_mut() else {
+            return;
+        };
+        let before = *view;
+        let space = ui.input(|i| i.key_down(egui::Key::Space));
+        if response.dragged_by(PointerButton::Middle)
+            || (space && response.dragged_by(PointerButton::Primary))
+        {
+            let d = response.drag_delta();
+            view.pan([f64::from(d.x), f64::from(d.y)]);
+        }
+        // Two fingers: the design point under their midpoint follows the midpoint (pan),
+        // and the pinch zooms about it, move by move (src/marbling/fingers.rs).
+        for step in &steps {
+            view.pan([f64::from(step.pan.x), f64::from(step.pan.y)]);
+            let c = step.about - rect.min;
+            view.zoom_about(step.zoom, [f64::from(c.x), f64::from(c.y)]);
+        }
+        let two_fingers = self.editor.fingers.count() >= 2 || !steps.is_empty();
+        if two_fingers || ui.input(|i| i.multi_touch().is_some()) {
+            // egui's own pinch summary (zoom_delta) is the same motion: not twice.
+        } else if let Some(p) = response.hover_pos() {
+            let (scroll, zoom) = ui.input(|i| (wheel_points(i), i.zoom_delta()));
+            let factor = f64::from(zoom) * (scroll * 0.002).exp();
+            if (factor - 1.0).abs() > 1e-6 {
+                view.zoom_about(
+                    factor,
+                    [f64::from(p.x - rect.min.x), f64::from(p.y - rect.min.y)],
+                );
+            }
+        }
+        let pinching = two_fingers;
+        let pinch_ended = std::mem::replace(&mut self.editor.pinching, pinching) && !pinching;
+        if (view.zoom != before.zoom && !pinching) || pinch_ended {
+            *view = view.snapped(ppp);
+        }
+    }
+
+    /// Press starts a gesture, drags extend it, release commits its ops.
+    fn drive_tool(
+        &mut self,
+        ui: &egui::Ui,
+        response: &egui::Response,
+        rect: Rect,
+        view: &ViewState,
+    ) {
+        let (pressed, down, released, pos, dt, space, touches) = ui.input(|i| {
+            (
+                i.pointer.primary_pressed(),
+                i.pointer.primary_down(),
+                i.pointer.primary_released(),
+                i.pointer.interact_pos(),
+                f64::from(i.stable_dt).min(0.1),
+                i.key_down(egui::Key::Space),
+                i.multi_touch().is_some() || self.editor.fingers.count() >= 2,
+            )
+        });
+        let to_design =
+            |p: Pos2| view.to_design([f64::from(p.x - rect.min.x), f64::from(p.y - rect.min.y)]);
+        if touches || space {
+            self.editor.active = None;
+            return;
+        }
+        if self.editor.playback.is_some() && self.editor.explain.on {
+            // While explaining, a click on the sheet moves the area probe.
+            if pressed
+                && response.hovered()
+                && let Some(p) = pos
+            {
+                let (_, r) = self
+                    .editor
+                    .explain
+                    .probe_circle(self.editor.history.design());
+                self.editor.explain.probe = Some((to_design(p), r));
+            }
+            return;
+        }
+        if pressed
+            && response.hovered()
+            && let Some(p) = pos
+        {
+            self.editor.playback = None;
+            let mut gesture = Gesture::new(to_design(p));
+            gesture.pixel = 1.0 / view.zoom.max(1e-9);
+            self.editor.active = Some(ActiveGesture {
+                tool: self.prefs.tool,
+                gesture,
+                seed: self.editor.next_seed,
+            });
+            self.editor.next_seed += 1;
+        }
+        if let Some(active) = &mut self.editor.active {
+            if down {
+                if let Some(p) = pos.map(to_design)
+                    && active.gesture.end() != p
+                {
+                    active.gesture.path.push(p);
+                }
+                active.gesture.held_seconds += dt;
+                ui.ctx().request_repaint();
+            }
+            if released || !down {
+                let done = self.editor.active.take();
+                if let Some(a) = done {
+                    let inks = self.inks();
+                    let ops = ops_for(a.tool, &self.prefs.settings, &a.gesture, &inks, a.seed);
+                    // Cycling colours: the next click starts with the colour after the
+                    // last drop's.
+                    if a.tool == ToolKind::Drop && self.prefs.settings.cycle_colors {
+                        let laid = ops.first().map_or(0, Op::counted_ops);
+                        self.prefs.ink = inks[laid % inks.len()];
+                    }
+                    self.apply(crate::action::Action::Commit(ops));
+                }
+            }
+        }
+    }
+
+    /// The ops the current gesture would add if released now.
+    pub(crate) fn pending_ops(&self) -> Vec<Op> {
+        match &self.editor.active {
+            Some(a) => ops_for(
+                a.tool,
+                &self.prefs.settings,
+                &a.gesture,
+                &self.inks(),
+                a.seed,
+            ),
+            None => Vec::new(),
+        }
+    }
+
+    /// The ink, then (cycling colours) the rest of the palette after it.
+    pub(crate) fn inks(&self) -> Vec<Rgb8> {
+        let ink = self.prefs.ink;
+        if !self.prefs.settings.cycle_colors {
+            return vec![ink];
+        }
+        let palette = crate::INK_SETS[self.prefs.palette.min(crate::INK_SETS.len() - 1)].inks;
+        match palette.iter().position(|&c| c == ink) {
+            Some(i) => palette[i..].iter().chain(&palette[..i]).copied().collect(),
+            None => std::iter::once(ink)
+                .chain(palette.iter().copied())
+                .collect(),
+        }
+    }
+
+    /// Asks the GPU for the frame (exact, or live preview while dragging) and shows it,
+    /// with the grey around the sheet, in one paint callback covering the canvas.
+    fn paint_design(
+        &mut self,
+        ui: &egui::Ui,
+        frame: &mut eframe::Frame,
+        rect: Rect,
+        placement: CanvasPlacement,
+        view: &ViewState,
+    ) {
+        if frame.wgpu_render_state().is_none() {
+            return;
+        }
+        let ppp = f64::from(ui.ctx().pixels_per_point());
+        let size = [
+            ((f64::from(rect.width()) * ppp).round() as u32).max(1),
+            ((f64::from(rect.height()) * ppp).round() as u32).max(1),
+        ];
+        let pending = self.pending_ops();
+        let stand_in = self
+            .editor
+            .stand_in
+            .clone()
+            .filter(|(key, _)| *key == self.editor.key)
+            .map(|(_, s)| s);
+        let (shown, design_key, single) = match pending.as_slice() {
+            [] => (self.editor.shown.clone(), self.editor.key, None),
+            [op] if previewable(op) => {
+                (self.editor.shown.clone(), self.editor.key, Some(op.clone()))
+            }
+            many => {
+                // Several ops at once (spray, a rake of separate tines): exact render of
+                // the design with them after it, keyed by what they are, so the preview
+                // follows every change of the stroke (the GPU writes only new ops).
+                (
+                    self.editor.shown.then(many),
+                    (self.editor.key.wrapping_mul(1_000_003) ^ fingerprint(many)) | (1 << 63),
+                    None,
+                )
+            }
+        };
+        let antialias = if single.is_some() {
+            let dt = f64::from(ui.input(|i| i.unstable_dt));
+            let samples = self.prefs.antialias.samples().len();
+            self.rendering.fast_paint.preview_frame(dt, samples);
+            self.rendering
+                .fast_paint
+                .preview_antialias(self.prefs.antialias)
+        } else if self.rendering.live_frame.is_some() {
+            // Live video: one sample per pixel, so frames keep coming (the 640×480
+            // video is coarser than the canvas anyway); *Use this frame* keeps the
+            // antialiasing setting.
+            marbling_core::Antialias::None
+        } else {
+            self.rendering.fast_paint.end_drag();
+            self.prefs.antialias
+        };
+        let request = FrameRequest {
+            design_key,
+            size,
+            scale: view.zoom * ppp,
+            origin: [view.origin.x, view.origin.y],
+            antialias,
+            pending: single,
+            // A gesture's several ops drawn exactly: the design's cache stands in.
+            stand_in: if design_key == self.editor.key {
+                stand_in
+            } else {
+                Some(StandIn {
+                    key: self.editor.key,
+                    op: None,
+                })
+            },
+            transient: design_key != self.editor.key,
+            live: self.rendering.live_frame.clone(),
+        };
+        self.hooks.requested = Some(request.exact_frame());
+        let acting =
+            ui.input(|i| !i.events.is_empty() || i.pointer.any_down() || i.pointer.is_moving());
+        if acting {
+            self.rendering.last_input_s = ui.input(|i| i.time);
+        }
+        let idle = ui.input(|i| i.time) - self.rendering.last_input_s > IDLE_AFTER_S;
+        let callback = CanvasCallback {
+            shown,
+            request,
+            placement,
+            status: self.rendering.status.clone(),
+            ctx: ui.ctx().clone(),
+            active: !idle,
+        };
+        ui.painter()
+            .add(egui_wgpu::Callback::new_paint_callback(rect, callback));
+    }
+}
+
+/// Seconds without input after which the canvas refines at its idle pace.
+const IDLE_AFTER_S: f64 = 0.3;
+
+/// A hash of `ops`' exact values (two lists differ in it unless they are equal, with
+/// the odds of a 64-bit hash collision).
+fn fingerprint(ops: &[Op]) -> u64 {
+    use std::hash::{Hash, Hasher};
+    let mut h = std::collections::hash_map::DefaultHasher::new();
+    for op in ops {
+        // Debug prints every f64 exactly (shortest round-trip form).
+        format!("{op:?}").hash(&mut h);
+    }
+    h.finish()
+}
+
+/// Vertical wheel movement this frame, points (up is positive), taken from the raw
+/// events rather than egui's smoothed scroll so one notch is one exact re-render, not a
+/// dozen animated ones. Ctrl/Cmd+wheel is left to egui's zoom (`zoom_delta`).
+fn wheel_points(i: &egui::InputState) -> f64 {
+    if i.modifiers.command || i.modifiers.ctrl {
+        return 0.0;
+    }
+    i.events
+        .iter()
+        .map(|e| match e {
+            egui::Event::MouseWheel { unit, delta, .. } => {
+                let per_unit = match unit {
+                    egui::MouseWheelUnit::Point => 1.0,
+                    egui::MouseWheelUnit::Line => 40.0,
+                    egui::MouseWheelUnit::Page => f64::from(i.content_rect().height()),
+                };
+                f64::from(delta.y) * per_unit
+            }
+            _ => 0.0,
+        })
+        .sum()
+}
+
+/// Whether the live preview can walk `op` alone over the cached design: one GPU record
+/// (not a drop pattern, a finite comb or a stylus) and not a spray droplet (sprays come
+/// many to a gesture, drawn exactly).
+pub(crate) fn previewable(op: &Op) -> bool {
+    !matches!(op, Op::Spray(_)) && marbling_gpu::encode::encode_op(op).is_some()
+}

@@ -1,0 +1,8 @@
+//! Pictures, live video and the 3D view: backgrounds from outside the program and the
+//! design seen on objects.
+
+pub(crate) mod picture;
+pub(crate) mod recorder;
+pub(crate) mod video;
+pub(crate) mod video_panel;
+pub(crate) mod view3d;

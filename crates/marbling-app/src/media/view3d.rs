@@ -1,0 +1,380 @@
+//! The 3D view window: the design on a sphere, vase, cylinder, book or plane, turned
+//! with an orbit camera (drag; wheel or pinch to zoom, double-click to reset), every
+//! sample evaluated exactly by the GPU (`marbling_gpu::View3dRenderer`). "As a 2048²
+//! texture" shows, side by side, what texture mapping the same design would look like:
+//! sharp edges on the left at any zoom, blur on the right in close-up (Lu et al. 2012,
+//! figures 6–7). Frames are drawn only when the design, camera or size change; while
+//! the camera moves they take one sample per pixel, then antialiased once it stops.
+
+use crate::gpu::canvas_gpu::CANVAS_FORMAT;
+use eframe::egui_wgpu;
+use marbling_core::view3d::{Camera, MAX_ZOOM, Shape, View3d};
+use marbling_core::{Antialias, Design};
+use marbling_gpu::{ExactRenderer, PreparedDesign, RenderTarget, View3dRenderer};
+
+/// Side of the baked texture of the comparison, pixels (the paper's figure 6).
+pub const COMPARE_TEXTURE: u32 = 2048;
+/// Degrees the camera turns per point dragged.
+const TURN_PER_POINT: f64 = 0.4;
+/// Largest zoom the window offers (close enough to see a texel of an 8000² texture).
+const WINDOW_MAX_ZOOM: f64 = 2000.0;
+
+/// What one frame was drawn for (a new frame is drawn when it changes).
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Drawn {
+    design_key: u64,
+    view: View3d,
+    compare: bool,
+}
+
+/// The GPU side: the exact pipeline, one 3D renderer and target per pane, the design.
+struct Panes {
+    exact: ExactRenderer,
+    renderers: [View3dRenderer; 2],
+    targets: [RenderTarget; 2],
+    textures: [egui::TextureId; 2],
+    prepared: Option<(u64, PreparedDesign)>,
+    /// The design key the comparison's texture was baked from.
+    baked: Option<u64>,
+}
+
+/// The 3D view window's state.
+pub struct View3dWindow {
+    /// Whether the window is open.
+    pub open: bool,
+    /// The object.
+    pub shape: Shape,
+    /// Camera turn and elevation, degrees.
+    pub yaw: f64,
+    /// See `yaw`.
+    pub pitch: f64,
+    /// Magnification (1: the object fills the pane).
+    pub zoom: f64,
+    /// Show the baked-texture comparison beside the exact view.
+    pub compare: bool,
+    /// The design point the camera centres on (set by a click), or the object's centre.
+    pub look_at: Option<marbling_core::Point>,
+    panes: Option<Panes>,
+    drawn: Option<Drawn>,
+    /// Frames drawn since the window opened (read by automation).
+    pub frames: u64,
+    /// The last GPU problem, shown in the window.
+    error: Option<String>,
+}
+
+impl Default for View3dWindow {
+    fn default() -> Self {
+        Self {
+            open: false,
+            shape: Shape::Vase,
+            yaw: 20.0,
+            pitch: 12.0,
+            zoom: 1.0,
+            compare: false,
+            look_at: None,
+            panes: None,
+            drawn: None,
+            frames: 0,
+            error: None,
+        }
+    }
+}
+
+impl View3dWindow {
+    /// Puts the camera back where it starts.
+    pub fn reset_camera(&mut self) {
+        let d = Self::default();
+        (self.yaw, self.pitch, self.zoom, self.look_at) = (d.yaw, d.pitch, d.zoom, d.look_at);
+    }
+
+    /// The 3D view of a pane of `size` pixels.
+    fn view(&self, size: [u32; 2], antialias: Antialias, texture: Option<u32>) -> View3d {
+        View3d {
+            shape: self.shape,
+            camera: Camera {
+                yaw: Some(self.yaw),
+                pitch: Some(self.pitch),
+                zoom: self.zoom,
+                look_at: self.look_at,
+            },
+            width: size[0],
+            height: size[1],
+            antialias,
+            texture,
+        }
+    }
+
+    /// Shows the window (when open) for `design`, whose content changes with
+    /// `design_key`; `controls` records named controls for automation.
+    pub fn show(
+        &mut self,
+        ctx: &egui::Context,
+        frame: &eframe::Frame,
+        design: &Design,
+        design_key: u64,
+        controls: &mut Vec<(std::borrow::Cow<'static, str>, egui::Rect)>,
+    ) {
+        if !self.open {
+            return;
+        }
+        let mut open = self.open;
+        // It opens at the window's top right, over the canvas: the panel's controls
+        // (Save, Export, the history) stay in reach.
+        let corner = ctx.content_rect().right_top() + egui::vec2(-8.0, 8.0);
+        egui::Window::new("3D view")
+            .open(&mut open)
+            .pivot(egui::Align2::RIGHT_TOP)
+            .default_pos(corner)
+            .default_width(560.0)
+            .resizable(true)
+            .show(ctx, |ui| {
+                self.contents(ui, frame, design, design_key, controls)
+            });
+        self.open = open;
+        if !self.open {
+            // Frees the GPU memory of the panes.
+            self.panes = None;
+            self.drawn = None;
+        }
+    }
+
+    fn contents(
+        &mut self,
+        ui: &mut egui::Ui,
+        frame: &eframe::Frame,
+        design: &Design,
+        design_key: u64,
+        controls: &mut Vec<(std::borrow::Cow<'static, str>, egui::Rect)>,
+    ) {
+        ui.horizontal_wrapped(|ui| {
+            for shape in Shape::ALL {
+                let r = ui.selectable_value(&mut self.shape, shape, shape.name());
+                controls.push((format!("view3d-{}", shape.name()).into(), r.rect));
+            }
+        });
+        ui.horizontal_wrapped(|ui| {
+            let r = ui
+                .checkbox(&mut self.compare, "as a 2048² texture")
+                .on_hover_text(
+                    "Beside the exact view, the same design baked into a 2048-pixel texture, \
+                     as texture mapping would draw it: zoom in to see the difference",
+                );
+            controls.push(("view3d-compare".into(), r.rect));
+            let r = ui.add(
+                egui::Slider::new(&mut self.zoom, 1.0..=WINDOW_MAX_ZOOM)
+                    .logarithmic(true)
+                    .text("zoom"),
+            );
+            controls.push(("view3d-zoom".into(), r.rect));
+            if ui.button("Reset view").clicked() {
+                self.reset_camera();
+            }
+        });
+        ui.label(
+            egui::RichText::new(
+                "Drag to turn · click to centre a spot · wheel or pinch to zoom · double-click to reset",
+            )
+                .small(),
+        );
+        let Some(rs) = frame.wgpu_render_state() else {
+            ui.label("The 3D view needs the GPU renderer.");
+            return;
+        };
+        let ppp = ui.ctx().pixels_per_point();
+        let avail = ui.available_size();
+        let panes = if self.compare { 2.0 } else { 1.0 };
+        let gap = 6.0;
+        let width = ((avail.x - gap * (panes - 1.0)) / panes).clamp(120.0, 1400.0);
+        let height = (width * 0.75).min(avail.y.max(160.0)).max(100.0);
+        let size_pt = egui::vec2(width, height);
+        let size_px = [
+            (size_pt.x * ppp).round().max(16.0) as u32,
+            (size_pt.y * ppp).round().max(16.0) as u32,
+        ];
+        let mut interacting = false;
+        let textures = self.ensure_panes(rs, size_px);
+        ui.horizontal(|ui| {
+            for (i, tex) in textures.iter().take(panes as usize).enumerate() {
+                let image = egui::Image::new((*tex, size_pt)).sense(egui::Sense::click_and_drag());
+                let r = ui.add(image);
+                controls.push((format!("view3d-pane-{i}").into(), r.rect));
+                interacting |= self.orbit(ui, &r, design, size_px);
+            }
+        });
+        if let Some(e) = &self.error {
+            ui.colored_label(egui::Color32::from_rgb(230, 90, 80), e);
+        }
+        let antialias = if interacting {
+            Antialias::None
+        } else {
+            Antialias::Rgss
+        };
+        self.draw(rs, design, design_key, size_px, antialias);
+    }
+
+    /// Turns and zooms the camera from the pointer over pane `r` (of `size` pixels,
+    /// showing `design`); true while it moves.
+    fn orbit(
+        &mut self,
+        ui: &egui::Ui,
+        r: &egui::Response,
+        design: &Design,
+        size: [u32; 2],
+    ) -> bool {
+        let mut moved = false;
+        if r.double_clicked() {
+            self.reset_camera();
+            moved = true;
+        } else if r.clicked()
+            && let Some(pos) = r.interact_pointer_pos()
+        {
+            // The design point under the pointer becomes the centre (the object's
+            // surface there faces the camera as it does now).
+            let view = self.view(size, Antialias::None, None);
+            let k = size[0] as f32 / r.rect.width();
+            let (px, py) = ((pos - r.rect.min) * k).into();
+            let rig = view.rig(design);
+            let ray = rig.ray(
+                f64::from(px),
+                f64::from(py),
+                f64::from(size[0]),
+                f64::from(size[1]),
+            );
+            if let Some(hit) = view.object(design).hit(rig.origin, ray)
+                && let marbling_core::view3d::Material::Design(u, v) = hit.material
+            {
+                self.look_at = Some(marbling_core::Point::new(
+                    u * f64::from(design.width),
+                    v * f64::from(design.height),
+                ));
+                moved = true;
+            }
+        }
+        if r.dragged() {
+            let d = r.drag_delta();
+            // Slower when close, so a close-up can still be aimed.
+            let k = TURN_PER_POINT / self.zoom.sqrt();
+            self.yaw -= f64::from(d.x) * k;
+            self.pitch = (self.pitch + f64::from(d.y) * k).clamp(-85.0, 85.0);
+            moved = true;
+        }
+        if r.hovered() {
+            let (scroll, pinch) = ui.input(|i| (i.smooth_scroll_delta.y, i.zoom_delta()));
+            let factor = f64::from(pinch) * (f64::from(scroll) * 0.002).exp();
+            if factor != 1.0 {
+                self.zoom = (self.zoom * factor).clamp(1.0, WINDOW_MAX_ZOOM.min(MAX_ZOOM));
+                moved = true;
+            }
+        }
+        moved
+    }
+
+    /// The panes' textures for `size` pixels, (re)made when the size changes.
+    fn ensure_panes(
+        &mut self,
+        rs: &egui_wgpu::RenderState,
+        size: [u32; 2],
+    ) -> [egui::TextureId; 2] {
+        let device = &rs.device;
+        let new_targets =
+            || [0, 1].map(|_| RenderTarget::new(device, size[0], size[1], CANVAS_FORMAT));
+        match &mut self.panes {
+            Some(p) if [p.targets[0].width, p.targets[0].height] == size => {}
+            Some(p) => {
+                p.targets = new_targets();
+                let mut renderer = rs.renderer.write();
+                for (t, id) in p.targets.iter().zip(p.textures) {
+                    renderer.update_egui_texture_from_wgpu_texture(
+                        device,
+                        &t.view,
+                        wgpu::FilterMode::Linear,
+                        id,
+                    );
+                }
+                self.drawn = None;
+            }
+            None => {
+                let targets = new_targets();
+                let mut renderer = rs.renderer.write();
+                let textures = targets.each_ref().map(|t| {
+                    renderer.register_native_texture(device, &t.view, wgpu::FilterMode::Linear)
+                });
+                let exact = ExactRenderer::new(device, CANVAS_FORMAT);
+                let renderers = [0, 1].map(|_| View3dRenderer::new(device, &exact));
+                self.panes = Some(Panes {
+                    exact,
+                    renderers,
+                    targets,
+                    textures,
+                    prepared: None,
+                    baked: None,
+                });
+                self.drawn = None;
+            }
+        }
+        self.panes
+            .as_ref()
+            .map_or([egui::TextureId::default(); 2], |p| p.textures)
+    }
+
+    /// Draws the panes when what they show changed.
+    fn draw(
+        &mut self,
+        rs: &egui_wgpu::RenderState,
+        design: &Design,
+        design_key: u64,
+        size: [u32; 2],
+        antialias: Antialias,
+    ) {
+        let now = Drawn {
+            design_key,
+            view: self.view(size, antialias, None),
+            compare: self.compare,
+        };
+        if self.drawn == Some(now) {
+            return;
+        }
+        let count = if self.compare { 2 } else { 1 };
+        let views: Vec<View3d> = (0..count)
+            .map(|i| self.view(size, antialias, (i == 1).then_some(COMPARE_TEXTURE)))
+            .collect();
+        let Some(panes) = &mut self.panes else { return };
+        let (device, queue) = (&rs.device, &rs.queue);
+        let prepared = match panes.prepared.take() {
+            Some((_, mut p)) => panes
+                .exact
+                .update(device, queue, &mut p, design.into())
+                .map(|()| p),
+            None => panes.exact.prepare(device, queue, design),
+        };
+        let mut prepared = match prepared {
+            Ok(p) => p,
+            Err(e) => {
+                self.error = Some(format!("cannot show the design in 3D: {e}"));
+                self.drawn = Some(now);
+                return;
+            }
+        };
+        self.error = None;
+        for (i, view) in views.iter().enumerate() {
+            let texture = view.texture;
+            if let Some(side) = texture
+                && panes.baked != Some(design_key)
+            {
+                panes.renderers[i].bake(device, queue, &panes.exact, &mut prepared, side);
+                panes.baked = Some(design_key);
+            }
+            panes.renderers[i].set_view(queue, &mut prepared, design, view);
+            let mut encoder =
+                device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: None });
+            {
+                let mut pass = panes.targets[i].begin_pass(&mut encoder);
+                panes.renderers[i].draw(device, &mut pass, &prepared);
+            }
+            queue.submit([encoder.finish()]);
+        }
+        panes.prepared = Some((design_key, prepared));
+        self.drawn = Some(now);
+        self.frames += 1;
+    }
+}

@@ -1,0 +1,352 @@
+//! Export PNG and SVG (the app's actions are at the end of the file). Export PNG: an
+//! exact render of the design at a print size on the app's own GPU
+//! device, read back tile by tile asynchronously (a browser cannot block on the GPU),
+//! one tile in flight at a time, then PNG-encoded and handed to the user. Each tile is
+//! drawn in parts over successive frames, as much a frame as keeps frames at
+//! [`IDLE_FRAME_MS`] (the canvas's [`FrameBudget`]), so no submission holds the GPU for
+//! long and the page stays live.
+//!
+//! The pixels are those of `marbling render --backend gpu` at the same scale: the same
+//! WGSL pass, sample positions and sRGB handling, so an export matches the CLI.
+
+use crate::gpu::refine::{FrameBudget, IDLE_FRAME_MS, Refinement, per_pixel};
+use crate::platform;
+use crate::shell::mode::Mode;
+use marbling_core::{Antialias, Design, RgbaImage, output_size};
+use marbling_gpu::{ExactRenderer, PreparedDesign, RenderTarget, View, copy_to_buffer, tile_grid};
+use std::sync::{Arc, Mutex};
+
+/// Format of the export tiles: the shader sRGB-encodes into it itself, like the CPU.
+const EXPORT_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8Unorm;
+
+/// Side of the tiles read back, pixels (each drawn in parts within the frame budget).
+pub const EXPORT_TILE_SIDE: u32 = 1024;
+
+/// The output sizes offered by Export PNG.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ExportSize {
+    /// One output pixel per design pixel (the design's own size).
+    Screen,
+    /// Two output pixels per design pixel.
+    Double,
+    /// This many pixels wide, the height following the design's aspect ratio.
+    Width(u32),
+}
+
+impl ExportSize {
+    /// The choices shown in the panel, in order.
+    pub const CHOICES: [ExportSize; 4] = [
+        ExportSize::Screen,
+        ExportSize::Double,
+        ExportSize::Width(4096),
+        ExportSize::Width(8192),
+    ];
+
+    /// The label shown in the panel.
+    pub fn label(self) -> String {
+        match self {
+            ExportSize::Screen => "1×".to_owned(),
+            ExportSize::Double => "2×".to_owned(),
+            ExportSize::Width(w) => format!("{w} px"),
+        }
+    }
+
+    /// The automation name of its radio button (`export-size-…` in `data-controls`).
+    pub fn control_name(self) -> &'static str {
+        match self {
+            ExportSize::Screen => "export-size-1x",
+            ExportSize::Double => "export-size-2x",
+            ExportSize::Width(4096) => "export-size-4096",
+            ExportSize::Width(8192) => "export-size-8192",
+            ExportSize::Width(_) => "export-size-width",
+        }
+    }
+
+    /// Output pixels per design pixel for `design`.
+    pub fn scale(self, design: &Design) -> f64 {
+        match self {
+            ExportSize::Screen => 1.0,
+            ExportSize::Double => 2.0,
+            ExportSize::Width(w) => f64::from(w) / f64::from(design.width.max(1)),
+        }
+    }
+}
+
+/// What one [`PngExport::step`] achieved.
+#[derive(Debug)]
+pub enum ExportStep {
+    /// Still rendering: `done` of `total` tiles are read back.
+    Working {
+        /// Tiles finished.
+        done: usize,
+        /// Tiles in all.
+        total: usize,
+    },
+    /// Every tile is in; the image is complete.
+    Finished(RgbaImage),
+}
+
+/// A tile of the output: x, y, width, height (pixels).
+type Tile = (u32, u32, u32, u32);
+
+/// The outcome of a tile's buffer mapping, filled in by wgpu's callback.
+type MapSlot = Arc<Mutex<Option<Result<(), wgpu::BufferAsyncError>>>>;
+
+/// A tile drawn and copied, waiting for its buffer to map.
+struct InFlight {
+    tile: Tile,
+    buffer: wgpu::Buffer,
+    padded: u32,
+    mapped: MapSlot,
+}
+
+/// An export in progress.
+pub struct PngExport {
+    renderer: ExactRenderer,
+    prepared: PreparedDesign,
+    scale: f64,
+    antialias: Antialias,
+    tiles: Vec<Tile>,
+    next: usize,
+    /// The tile being drawn, its texture and the parts drawn so far.
+    drawing: Option<(Tile, RenderTarget, Refinement)>,
+    in_flight: Option<InFlight>,
+    image: Option<RgbaImage>,
+    budget: FrameBudget,
+    /// When the last step drew, ms (the interval to the next steers the budget).
+    last_draw_ms: Option<f64>,
+    /// Parts drawn (submissions), for tests.
+    parts: usize,
+}
+
+impl PngExport {
+    /// Starts exporting `design` at `scale` on `device`; fails when the output is too
+    /// large or the design does not fit the device.
+    pub fn start(
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        design: &Design,
+        scale: f64,
+        antialias: Antialias,
+    ) -> Result<Self, String> {
+        let (width, height) = output_size(design, scale).map_err(|e| e.to_string())?;
+        let renderer = ExactRenderer::new(device, EXPORT_FORMAT);
+        let prepared = renderer
+            .prepare(device, queue, design)
+            .map_err(|e| e.to_string())?;
+        let side = EXPORT_TILE_SIDE.min(device.limits().max_texture_dimension_2d);
+        Ok(Self {
+            renderer,
+            prepared,
+            scale,
+            antialias,
+            tiles: tile_grid(width, height, side),
+            next: 0,
+            drawing: None,
+            in_flight: None,
+            image: Some(RgbaImage::filled(width, height, [0, 0, 0, 255])),
+            budget: FrameBudget::default(),
+            last_draw_ms: None,
+            parts: 0,
+        })
+    }
+
+    /// Uses tiles of at most `side` × `side` pixels (call before the first step).
+    pub fn with_tile_side(mut self, side: u32) -> Self {
+        let (w, h) = self.size();
+        self.tiles = tile_grid(w, h, side);
+        self
+    }
+
+    /// Output size, pixels.
+    pub fn size(&self) -> (u32, u32) {
+        self.image.as_ref().map_or((0, 0), |i| (i.width, i.height))
+    }
+
+    /// Submissions drawn so far (each a part of a tile within the frame budget).
+    pub fn parts(&self) -> usize {
+        self.parts
+    }
+
+    /// Advances the export without blocking: collects a tile whose read-back finished,
+    /// draws the next part of the tile being drawn (or begins the next tile), and asks
+    /// for a drawn tile to be read back. Call once per frame until it returns `Finished`.
+    pub fn step(
+        &mut self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+    ) -> Result<ExportStep, String> {
+        // Native backends deliver map callbacks from `poll`; on the web it is a no-op.
+        let _ = device.poll(wgpu::PollType::Poll);
+        if let Some(flight) = &self.in_flight {
+            let outcome = flight.mapped.lock().ok().and_then(|mut m| m.take());
+            match outcome {
+                None => return Ok(self.progress()),
+                Some(Err(e)) => return Err(format!("reading the export back failed: {e}")),
+                Some(Ok(())) => {
+                    let flight = self.in_flight.take().ok_or("export state lost")?;
+                    self.collect(&flight)?;
+                }
+            }
+        }
+        if self.drawing.is_none() && self.next < self.tiles.len() {
+            self.begin_tile(device, queue, self.tiles[self.next]);
+            self.next += 1;
+        }
+        if self.drawing.is_some() {
+            self.draw_part(device, queue);
+            return Ok(self.progress());
+        }
+        self.image
+            .take()
+            .map(ExportStep::Finished)
+            .ok_or_else(|| "the export has already finished".to_owned())
+    }
+
+    fn progress(&self) -> ExportStep {
+        ExportStep::Working {
+            done: self.next
+                - usize::from(self.in_flight.is_some())
+                - usize::from(self.drawing.is_some()),
+            total: self.tiles.len(),
+        }
+    }
+
+    /// Begins drawing `tile` into a texture of its own.
+    fn begin_tile(&mut self, device: &wgpu::Device, queue: &wgpu::Queue, tile: Tile) {
+        let (x0, y0, w, h) = tile;
+        self.prepared.set_view(
+            queue,
+            &View {
+                scale: self.scale,
+                offset: [f64::from(x0), f64::from(y0)],
+                antialias: self.antialias,
+            },
+        );
+        let target = RenderTarget::new(device, w, h, EXPORT_FORMAT);
+        self.drawing = Some((tile, target, Refinement::new([0, 0, w, h])));
+    }
+
+    /// Draws the next part of the tile being drawn, as large as this frame's budget;
+    /// after its last part, copies the tile to a buffer and asks for it to be mapped.
+    fn draw_part(&mut self, device: &wgpu::Device, queue: &wgpu::Queue) {
+        let now = crate::platform::now_ms();
+        if let Some(last) = self.last_draw_ms {
+            self.budget.record_frame(now - last, IDLE_FRAME_MS);
+        }
+        self.last_draw_ms = Some(now);
+        let per = per_pixel(self.prepared.walk_cost(), self.antialias.samples().len());
+        let pixels = (self.budget.units() / per).max(1);
+        let Some((tile, target, refinement)) = &mut self.drawing else {
+            return;
+        };
+        let mut encoder =
+            device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: None });
+        if let Some(part) = refinement.next_tile(pixels) {
+            let mut pass = target.begin_pass_keeping(&mut encoder);
+            self.renderer.draw_rect(&mut pass, &self.prepared, part);
+            self.parts += 1;
+        }
+        if !refinement.is_done() {
+            queue.submit([encoder.finish()]);
+            return;
+        }
+        let tile = *tile;
+        let (buffer, padded) = copy_to_buffer(device, &mut encoder, target);
+        queue.submit([encoder.finish()]);
+        self.drawing = None;
+        let mapped: MapSlot = Arc::default();
+        let slot = mapped.clone();
+        buffer.map_async(wgpu::MapMode::Read, .., move |r| {
+            if let Ok(mut s) = slot.lock() {
+                *s = Some(r);
+            }
+        });
+        self.in_flight = Some(InFlight {
+            tile,
+            buffer,
+            padded,
+            mapped,
+        });
+    }
+
+    /// Copies a mapped tile into the image.
+    fn collect(&mut self, flight: &InFlight) -> Result<(), String> {
+        let image = self.image.as_mut().ok_or("export state lost")?;
+        let (x0, y0, w, h) = flight.tile;
+        {
+            let data = flight
+                .buffer
+                .get_mapped_range(..)
+                .map_err(|e| format!("reading the export back failed: {e}"))?;
+            let row_bytes = image.width as usize * 4;
+            for y in 0..h as usize {
+                let src = y * flight.padded as usize;
+                let dst = (y0 as usize + y) * row_bytes + x0 as usize * 4;
+                let n = w as usize * 4;
+                image.pixels[dst..dst + n].copy_from_slice(&data[src..src + n]);
+            }
+        }
+        flight.buffer.unmap();
+        Ok(())
+    }
+}
+
+/// The file name of an export: `marbling-<ops>ops-<w>x<h>.<ext>`.
+pub fn export_file_name(design: &Design, size: (u32, u32), ext: &str) -> String {
+    format!(
+        "marbling-{}ops-{}x{}.{ext}",
+        design.ops.len(),
+        size.0,
+        size.1
+    )
+}
+
+impl crate::app::MarblingApp {
+    /// Starts Export PNG of the current design at the chosen size.
+    pub(crate) fn start_png_export(&mut self, frame: &eframe::Frame) {
+        let Some(rs) = frame.wgpu_render_state() else {
+            self.error("Export PNG needs the GPU renderer, which is not available");
+            return;
+        };
+        let design: &Design = match self.editor.mode {
+            Mode::Noise => &self.editor.shown.design,
+            Mode::Marbling => self.editor.history.design(),
+        };
+        let scale = self.panels.export_size.scale(design);
+        match PngExport::start(&rs.device, &rs.queue, design, scale, self.prefs.antialias) {
+            Ok(export) => {
+                let name = export_file_name(design, export.size(), "png");
+                let (w, h) = export.size();
+                self.info(format!("exporting {w}×{h} PNG…"));
+                self.rendering.export = Some((export, name));
+            }
+            Err(e) => self.error(format!("Export PNG: {e}")),
+        }
+    }
+
+    /// Moves a running PNG export on by one tile; hands the file over when complete.
+    pub(crate) fn advance_export(&mut self, frame: &eframe::Frame, ctx: &egui::Context) {
+        let Some((mut export, name)) = self.rendering.export.take() else {
+            return;
+        };
+        let Some(rs) = frame.wgpu_render_state() else {
+            self.error("Export PNG: the GPU renderer went away");
+            return;
+        };
+        match export.step(&rs.device, &rs.queue) {
+            Ok(ExportStep::Working { .. }) => {
+                self.rendering.export = Some((export, name));
+                ctx.request_repaint();
+            }
+            Ok(ExportStep::Finished(image)) => match image.to_png() {
+                Ok(bytes) => match platform::save_file(&name, "image/png", &bytes) {
+                    Ok(()) => self.info(format!("exported {name}")),
+                    Err(e) => self.error(e),
+                },
+                Err(e) => self.error(format!("Export PNG: {e}")),
+            },
+            Err(e) => self.error(format!("Export PNG: {e}")),
+        }
+    }
+}

@@ -1,0 +1,106 @@
+//! The user's preferences that outlive a reload: the tool, every tool parameter, the
+//! palette, the ink and the antialiasing mode. Stored as JSON; a missing or unreadable
+//! value takes its default, and out-of-range values are clamped to what the panel offers.
+
+use crate::marbling::tools::{ToolKind, ToolSettings};
+use marbling_core::{Antialias, Rgb8};
+
+/// Storage key of the preferences.
+pub const KEY: &str = "marbling.prefs.v1";
+
+/// What is kept.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Prefs {
+    /// The selected tool.
+    pub tool: ToolKind,
+    /// Every tool's parameters.
+    pub settings: ToolSettings,
+    /// Index into [`crate::INK_SETS`].
+    pub palette: usize,
+    /// The current ink.
+    pub ink: Rgb8,
+    /// Antialiasing of exact frames.
+    pub antialias: Antialias,
+}
+
+#[derive(serde::Serialize, serde::Deserialize)]
+struct Stored {
+    tool: ToolKind,
+    settings: ToolSettings,
+    palette: usize,
+    ink: String,
+    antialias: String,
+}
+
+impl Prefs {
+    /// The stored text.
+    pub fn encode(&self) -> String {
+        serde_json::to_string(&Stored {
+            tool: self.tool,
+            settings: self.settings,
+            palette: self.palette,
+            ink: self.ink.to_string(),
+            antialias: self.antialias.name().to_owned(),
+        })
+        .unwrap_or_default()
+    }
+
+    /// Reads stored preferences over `defaults`; `Err` says why none could be read.
+    pub fn decode(text: &str, defaults: Prefs) -> Result<Prefs, String> {
+        let s: Stored = serde_json::from_str(text).map_err(|e| format!("preferences: {e}"))?;
+        let mut settings = s.settings;
+        settings.comb_tines = settings.comb_tines.min(64);
+        Ok(Prefs {
+            tool: s.tool,
+            settings,
+            palette: s.palette.min(crate::INK_SETS.len() - 1),
+            ink: s.ink.parse().unwrap_or(defaults.ink),
+            antialias: Antialias::ALL
+                .into_iter()
+                .find(|a| a.name() == s.antialias)
+                .unwrap_or(defaults.antialias),
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn preferences_round_trip_and_missing_fields_take_defaults() {
+        let defaults = Prefs {
+            tool: ToolKind::Drop,
+            settings: ToolSettings::default(),
+            palette: 0,
+            ink: Rgb8::new(1, 2, 3),
+            antialias: Antialias::Rgss,
+        };
+        let mut p = defaults;
+        p.tool = ToolKind::Comb;
+        p.settings.comb_tines = 9;
+        p.palette = 2;
+        p.antialias = Antialias::Grid4;
+        assert_eq!(Prefs::decode(&p.encode(), defaults).expect("a value"), p);
+        let partial = r##"{"tool":"spray","settings":{"spray_spread":99.0},"palette":1,"ink":"#ff0000","antialias":"?"}"##;
+        let q = Prefs::decode(partial, defaults).expect("a value");
+        assert_eq!((q.tool, q.settings.spray_spread), (ToolKind::Spray, 99.0));
+        assert_eq!(q.settings.drop_radius, ToolSettings::default().drop_radius);
+        assert_eq!(
+            (q.ink, q.antialias),
+            (Rgb8::new(255, 0, 0), Antialias::Rgss)
+        );
+        // Preferences saved before the comb tool had its name still load.
+        let old = r##"{"tool":"rake","settings":{"rake_tines":7,"rake_spacing":12.0},"palette":0,"ink":"#000000","antialias":"rgss"}"##;
+        let o = Prefs::decode(old, defaults).expect("a value");
+        assert_eq!(
+            (o.tool, o.settings.comb_tines, o.settings.comb_spacing),
+            (ToolKind::Comb, 7, 12.0)
+        );
+        assert!(
+            Prefs::decode("{", defaults)
+                .expect_err("an error")
+                .starts_with("preferences: ")
+        );
+    }
+}
