@@ -1,18 +1,19 @@
 //! The playground app: state, what changes it, and the frame loop.
 
+use crate::History;
 use crate::action::Action;
 use crate::gpu::canvas_gpu::CanvasGpu;
 use crate::gpu::gpu_errors::GpuErrors;
 use crate::gpu::recovery::{self, LostFlag, ParkedState};
 use crate::marbling::history::Surface;
-use crate::marbling::tools::{Gesture, ToolKind, ToolSettings};
+use crate::marbling::tools::{Gesture, ToolKind};
 use crate::platform;
 use crate::shell::mode::Mode;
 use crate::state::{Editor, Hooks, Panels, Rendering, Session};
-use crate::store::autosave;
+use crate::store::links::{self, Link};
 use crate::store::prefs::Prefs;
-use crate::{History, INK_SETS};
-use marbling_core::{Antialias, Design, DesignError, Rgb8, decode_share, share_fragment};
+use crate::store::{autosave, restore};
+use marbling_core::{Design, DesignError, Rgb8, share_fragment};
 use std::sync::Arc;
 
 /// A line shown in the status bar; errors also go to `data-error`.
@@ -111,47 +112,41 @@ impl MarblingApp {
             app.info("the GPU device was lost: the renderer was restarted, your work is kept");
             return app;
         }
-        let load = |key: &str| platform::load_string(cc.storage, key);
-        let found = autosave::newest(
-            [load(autosave::SLOTS[0]), load(autosave::SLOTS[1])],
-            load(autosave::LEGACY_KEY),
-        );
-        if let Some(r) = found.record {
+        let stored = restore::read(|key| platform::load_string(cc.storage, key), app.prefs);
+        if let Some(r) = stored.autosave {
             app.editor.pristine = false;
             app.editor.history = History::new(r.design);
             autosave::unsaved().seq = r.seq;
         }
-        for (key, why) in found.unreadable {
+        for (text, why) in stored.unreadable {
             // Kept where no autosave overwrites it.
-            if let Some(text) = load(&key) {
-                app.session
-                    .pending_writes
-                    .push((autosave::UNREADABLE_KEY, text));
+            if let Some(text) = text {
+                let keep = (autosave::UNREADABLE_KEY, text);
+                app.session.pending_writes.push(keep);
             }
             app.error(format!(
                 "the autosave could not be restored ({why}); its text is kept under {}",
                 autosave::UNREADABLE_KEY
             ));
         }
-        if let Some(text) = load(crate::store::prefs::KEY) {
-            match crate::store::prefs::Prefs::decode(&text, app.prefs) {
-                Ok(p) => app.prefs = p,
-                Err(e) => log::warn!("{e}"),
-            }
+        match stored.prefs {
+            Some(Ok(p)) => app.prefs = p,
+            Some(Err(e)) => log::warn!("{e}"),
+            None => {}
         }
         app.session.stored_prefs.0 = Some(app.prefs);
-        if let Some(text) = load(crate::noise::settings::KEY) {
-            let restored = marbling_noise::NoiseSpec::from_json(&text)
-                .map_err(|e| e.to_string())
-                .and_then(|spec| app.editor.noise.with_spec(spec, &app.editor.noise_data));
-            match restored {
-                Ok(s) => app.editor.noise = s,
-                Err(e) => log::warn!("the stored noise setup was not restored: {e}"),
-            }
+        let noise = stored.noise.map(|spec| {
+            let data = &app.editor.noise_data;
+            spec.and_then(|spec| app.editor.noise.settings().with_spec(spec, data))
+        });
+        match noise {
+            Some(Ok(s)) => app.editor.noise.set(s),
+            Some(Err(e)) => log::warn!("the stored noise setup was not restored: {e}"),
+            None => {}
         }
-        app.session.stored_noise = Some(app.editor.noise.clone());
-        if let Some(text) = load(crate::store::recent::KEY) {
-            app.session.recent = crate::store::recent::Recent::decode(&text);
+        app.session.stored_noise = Some(app.editor.noise.revision());
+        if let Some(recent) = stored.recent {
+            app.session.recent = recent;
         }
         app.refresh();
         // A first visit (no link, no autosave) lands on the gallery; `?landing=0`
@@ -165,16 +160,9 @@ impl MarblingApp {
 
     /// An app showing `design` (no window needed: used by tests too).
     pub fn with_design(design: Design, backend: String, gpu: bool) -> Self {
-        let palette = INK_SETS[0];
         Self {
             editor: Editor::new(design),
-            prefs: Prefs {
-                tool: ToolKind::Drop,
-                settings: ToolSettings::default(),
-                palette: 0,
-                ink: palette.inks[0],
-                antialias: Antialias::Rgss,
-            },
+            prefs: Prefs::default(),
             session: Session::default(),
             rendering: Rendering::new(backend, gpu),
             hooks: Hooks::default(),
@@ -226,11 +214,11 @@ impl MarblingApp {
             let size = [d.width, d.height];
             // The CPU preview draws a spec the background cannot hold: the GPU then
             // draws a bare sheet under it, not the (costly) base noise.
-            let noise = if self.editor.noise.needs_preview() {
+            let noise = if self.editor.noise.settings().needs_preview() {
                 Ok(marbling_core::Design::new(size[0], size[1], PREVIEW_PAPER))
             } else {
                 self.noise_layer()
-                    .and_then(|layer| self.editor.noise.design(size, layer))
+                    .and_then(|layer| self.editor.noise.settings().design(size, layer))
             };
             match noise {
                 Ok(noise) => {
@@ -267,9 +255,9 @@ impl MarblingApp {
             return;
         }
         let factor = self.noise_zoom_factor();
-        let shown = self.editor.noise_shown.as_ref();
-        if shown.map(|(s, f)| (s, *f)) != Some((&self.editor.noise, factor)) {
-            self.editor.noise_shown = Some((self.editor.noise.clone(), factor));
+        let now = (self.editor.noise.revision(), factor);
+        if self.editor.noise_shown != Some(now) {
+            self.editor.noise_shown = Some(now);
             self.editor.noise_analysis = None;
             self.editor.noise_layer = None;
             self.refresh();
@@ -325,47 +313,38 @@ impl MarblingApp {
             return;
         }
         self.editor.last_fragment = fragment.clone();
-        let is_link = |f: &str| {
-            f.split('&')
-                .any(|p| p.starts_with("n=") || p.starts_with("d="))
+        let Some(fragment) = fragment else {
+            return;
         };
-        if fragment.as_deref().is_some_and(is_link) {
+        if links::is_link(&fragment) {
             // What the link holds, or why it cannot be opened, is shown, not the gallery.
             self.editor.landing = false;
         }
-        if let Some(f) = fragment
-            .as_deref()
-            .filter(|f| f.split('&').any(|p| p.starts_with("n=")))
-        {
-            let opened = marbling_core::decode_noise_share(f)
-                .map_err(|e| e.to_string())
-                .and_then(|spec| {
-                    self.editor
-                        .noise
-                        .with_spec(spec, &self.editor.noise_data)
+        match links::read(&fragment) {
+            Link::None => {}
+            Link::Noise(spec) => {
+                let opened = spec.and_then(|spec| {
+                    let noise = self.editor.noise.settings();
+                    noise
+                        .with_spec(*spec, &self.editor.noise_data)
                         .map_err(|e| format!("noise link: {e}"))
                 });
-            match opened {
-                Ok(s) => {
-                    self.editor.noise = s;
-                    self.set_mode(Mode::Noise);
-                    self.info("noise link opened");
+                match opened {
+                    Ok(s) => {
+                        self.editor.noise.set(s);
+                        self.set_mode(Mode::Noise);
+                        self.info("noise link opened");
+                    }
+                    Err(e) => self.error(first_line_of(&e)),
                 }
-                Err(e) => self.error(first_line_of(&e)),
             }
-            return;
-        }
-        let Some(f) = fragment.filter(|f| f.split('&').any(|p| p.starts_with("d="))) else {
-            return;
-        };
-        match decode_share(&f) {
-            Ok(design) if &design == self.editor.history.design() => {}
-            Ok(design) => self.apply(Action::Load {
-                design,
+            Link::Design(Ok(design)) if *design == *self.editor.history.design() => {}
+            Link::Design(Ok(design)) => self.apply(Action::Load {
+                design: *design,
                 from: "share link".to_owned(),
                 from_link: true,
             }),
-            Err(e) => self.error(first_line_of(&e.to_string())),
+            Link::Design(Err(e)) => self.error(first_line_of(&e)),
         }
     }
 
@@ -388,35 +367,15 @@ impl MarblingApp {
     }
 
     fn handle_shortcuts(&mut self, ctx: &egui::Context) {
-        use egui::{Key, Modifiers};
-        crate::shell::accessibility::handle_shortcut(ctx);
-        // Every press counts, however many arrive in one frame (a slow frame on a
-        // software GPU collects several). Redo (with Shift) is taken first: undo's
-        // shortcut would match it too.
-        let (redos, undos) = ctx.input_mut(|i| {
-            (
-                i.count_and_consume_key(Modifiers::COMMAND | Modifiers::SHIFT, Key::Z)
-                    + i.count_and_consume_key(Modifiers::COMMAND, Key::Y),
-                i.count_and_consume_key(Modifiers::COMMAND, Key::Z),
-            )
-        });
-        for _ in 0..redos {
+        let pressed = crate::shell::shortcuts::read(ctx);
+        for _ in 0..pressed.redos {
             self.apply(Action::Redo);
         }
-        for _ in 0..undos {
+        for _ in 0..pressed.undos {
             self.apply(Action::Undo);
         }
-        // Number keys 1–9 and 0 pick the first ten tools in panel order (when no text
-        // field has focus).
-        if !ctx.egui_wants_keyboard_input() {
-            for (key, tool) in crate::marbling::tools::TOOL_KEYS
-                .into_iter()
-                .zip(ToolKind::ALL)
-            {
-                if ctx.input(|i| i.key_pressed(key) && i.modifiers.is_none()) {
-                    self.prefs.tool = tool;
-                }
-            }
+        if let Some(tool) = pressed.tool {
+            self.prefs.tool = tool;
         }
     }
 

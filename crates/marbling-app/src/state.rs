@@ -14,7 +14,6 @@ use crate::marbling::playback::Playback;
 use crate::marbling::shown::Shown;
 use crate::marbling::view::ViewState;
 use crate::noise::panel::NoiseAnalysis;
-use crate::noise::settings::NoiseSettings;
 use crate::platform::PickSlot;
 use crate::shell::mode::Mode;
 use crate::store::export::{ExportSize, PngExport};
@@ -66,10 +65,10 @@ pub struct Editor {
     pub last_fragment: Option<String>,
     /// Marbling or the noise playground.
     pub mode: Mode,
-    /// The noise playground's parameters.
-    pub noise: NoiseSettings,
-    /// The noise (and zoom factor) the canvas shows, to notice changes.
-    pub noise_shown: Option<(NoiseSettings, f64)>,
+    /// The noise playground's parameters and their revision.
+    pub noise: crate::noise::Noise,
+    /// The noise's revision and the zoom factor the canvas shows.
+    pub noise_shown: Option<(u64, f64)>,
     /// Statistics of the shown noise (`Some(None)`: none can be computed).
     pub noise_analysis: Option<Option<NoiseAnalysis>>,
     /// The noise layer of the shown settings, made once per change of them (parsing a
@@ -105,7 +104,7 @@ impl Editor {
             landing: false,
             last_fragment: None,
             mode: Mode::Marbling,
-            noise: NoiseSettings::default(),
+            noise: crate::noise::Noise::default(),
             noise_shown: None,
             noise_analysis: None,
             noise_layer: None,
@@ -127,7 +126,7 @@ pub struct Session {
     /// The preferences last stored, and when.
     pub stored_prefs: (Option<Prefs>, f64),
     /// The noise setup last stored.
-    pub stored_noise: Option<crate::noise::settings::NoiseSettings>,
+    pub stored_noise: Option<u64>,
     /// *Recent designs*.
     pub recent: Recent,
     /// True when the recent list must be written.
@@ -223,7 +222,7 @@ pub struct Hooks {
     /// The sheet's top-left corner on the page and CSS pixels per design pixel.
     pub sheet_on_page: Option<[f64; 3]>,
     /// The noise setup and its spec JSON (for `data-noise`, written when it changes).
-    pub noise_json: Option<(crate::noise::settings::NoiseSettings, String)>,
+    pub noise_json: Option<(u64, String)>,
     /// The exact frame this frame's canvas asks for (design, size, view, antialiasing,
     /// live picture); `None` when no canvas is shown. `data-ready` is 1 only when it is
     /// the frame drawn.

@@ -95,10 +95,11 @@ impl MarblingApp {
             .hooks
             .noise_json
             .as_ref()
-            .is_none_or(|(s, _)| *s != self.editor.noise)
+            .is_none_or(|(r, _)| *r != self.editor.noise.revision())
         {
-            let json = self.editor.noise.export_spec().to_value().to_string();
-            self.hooks.noise_json = Some((self.editor.noise.clone(), json));
+            let noise = &self.editor.noise;
+            let json = noise.settings().export_spec().to_value().to_string();
+            self.hooks.noise_json = Some((noise.revision(), json));
         }
         let controls = self
             .hooks

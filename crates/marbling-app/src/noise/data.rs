@@ -163,11 +163,11 @@ impl MarblingApp {
                 let name = name.rsplit(['/', '\\']).next().unwrap_or(&name).to_owned();
                 match self.editor.noise_data.load(&name, &bytes) {
                     Ok(text) => {
-                        if !self.editor.noise.spec.has_data_frequency() {
+                        if !self.editor.noise.settings().spec.has_data_frequency() {
                             self.weather_example();
                         }
                         let data = self.editor.noise_data.clone();
-                        rename_data(&mut self.editor.noise.spec, &name, &data);
+                        rename_data(&mut self.editor.noise.edit().spec, &name, &data);
                         self.info(text);
                     }
                     Err(e) => self.error(format!("Load data: {e}")),
@@ -180,10 +180,10 @@ impl MarblingApp {
 
     /// Khlebnikov et al. (2013)'s weather figure in the panel's palette, zoom-independent.
     pub(crate) fn weather_example(&mut self) {
-        let s = &mut self.editor.noise;
-        let palette = marbling_noise::ColorRamp::named(s.palette_name())
+        let palette = marbling_noise::ColorRamp::named(self.editor.noise.settings().palette_name())
             .or_else(|| marbling_noise::ColorRamp::named("viridis"));
         if let Some(p) = palette {
+            let s = self.editor.noise.edit();
             s.spec = NoiseSpec::weather_example(p, s.spec.source.seed());
             s.zoom_independent = true;
         }
@@ -214,7 +214,7 @@ impl MarblingApp {
                     );
                 }
             });
-            if self.editor.noise.spec.has_data_frequency() {
+            if self.editor.noise.settings().spec.has_data_frequency() {
                 self.data_mapping(ui);
             } else {
                 ui.label(
@@ -230,47 +230,49 @@ impl MarblingApp {
 
     fn data_mapping(&mut self, ui: &mut egui::Ui) {
         let data = self.editor.noise_data.clone();
-        let spec = &mut self.editor.noise.spec;
-        let current = data_of(spec, Role::Frequency).map(|r| r.name.clone());
-        egui::ComboBox::from_label("data set")
-            .selected_text(current.clone().unwrap_or_default())
-            .show_ui(ui, |ui| {
-                for name in data.names() {
-                    if ui
-                        .selectable_label(current.as_deref() == Some(&name), &name)
-                        .clicked()
-                    {
-                        rename_data(spec, &name, &data);
-                    }
-                }
-            });
-        for (role, what) in [
-            (Role::Frequency, "frequency + brightness"),
-            (Role::Orientation, "orientation"),
-            (Role::Colour, "colour"),
-        ] {
-            let Some(r) = data_of(spec, role).cloned() else {
-                continue;
-            };
-            let count = r.grid.as_ref().map_or(1, |g| g.channels.len());
-            let name = |c: usize| {
-                r.grid
-                    .as_ref()
-                    .and_then(|g| g.channels.get(c - 1))
-                    .map_or_else(|| format!("channel {c}"), |ch| format!("{c}: {}", ch.name))
-            };
-            let mut channel = r.channel.min(count);
-            egui::ComboBox::from_label(what)
-                .selected_text(name(channel))
+        self.editor.noise.edit_in(|s| {
+            let spec = &mut s.spec;
+            let current = data_of(spec, Role::Frequency).map(|r| r.name.clone());
+            egui::ComboBox::from_label("data set")
+                .selected_text(current.clone().unwrap_or_default())
                 .show_ui(ui, |ui| {
-                    for c in 1..=count {
-                        ui.selectable_value(&mut channel, c, name(c));
+                    for name in data.names() {
+                        if ui
+                            .selectable_label(current.as_deref() == Some(&name), &name)
+                            .clicked()
+                        {
+                            rename_data(spec, &name, &data);
+                        }
                     }
                 });
-            if channel != r.channel {
-                set_channel(spec, role, channel);
+            for (role, what) in [
+                (Role::Frequency, "frequency + brightness"),
+                (Role::Orientation, "orientation"),
+                (Role::Colour, "colour"),
+            ] {
+                let Some(r) = data_of(spec, role).cloned() else {
+                    continue;
+                };
+                let count = r.grid.as_ref().map_or(1, |g| g.channels.len());
+                let name = |c: usize| {
+                    r.grid
+                        .as_ref()
+                        .and_then(|g| g.channels.get(c - 1))
+                        .map_or_else(|| format!("channel {c}"), |ch| format!("{c}: {}", ch.name))
+                };
+                let mut channel = r.channel.min(count);
+                egui::ComboBox::from_label(what)
+                    .selected_text(name(channel))
+                    .show_ui(ui, |ui| {
+                        for c in 1..=count {
+                            ui.selectable_value(&mut channel, c, name(c));
+                        }
+                    });
+                if channel != r.channel {
+                    set_channel(spec, role, channel);
+                }
             }
-        }
+        });
         ui.label(
             RichText::new(
                 "Khlebnikov et al. 2013: the first attribute sets the texture's frequency (features from \
@@ -287,7 +289,7 @@ impl MarblingApp {
     /// One line per mapped channel: its name and physical range, and for the colour a
     /// bar of the palette from its low to its high value.
     fn data_legend(&self, ui: &mut egui::Ui) {
-        let spec = &self.editor.noise.spec;
+        let spec = &self.editor.noise.settings().spec;
         for (role, what) in [
             (Role::Frequency, "coarse → fine"),
             (Role::Orientation, "0° → 180°"),
@@ -304,7 +306,7 @@ impl MarblingApp {
             ui.horizontal(|ui| {
                 ui.label(text.replace(".0000", ""));
                 if role == Role::Colour {
-                    palette_bar(ui, self.editor.noise.palette_name());
+                    palette_bar(ui, self.editor.noise.settings().palette_name());
                 } else {
                     ui.label(RichText::new(what).weak());
                 }

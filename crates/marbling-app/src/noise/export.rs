@@ -86,7 +86,7 @@ impl NoiseExport {
 impl MarblingApp {
     /// Starts Export PNG of the noise at the panel's size and depth.
     pub(crate) fn start_noise_export(&mut self) {
-        let s = &self.editor.noise;
+        let s = self.editor.noise.settings();
         let size = EXPORT_SIZES[s.export_size.min(EXPORT_SIZES.len() - 1)];
         let depth = if s.export_16bit {
             Depth::Sixteen

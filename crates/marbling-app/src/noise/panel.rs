@@ -52,7 +52,7 @@ impl MarblingApp {
     /// The zoom factor the zoom-independent rule applies now (1 when it is off).
     pub(crate) fn noise_zoom_factor(&self) -> f64 {
         let zoom = self.editor.view.map_or(1.0, |v| v.zoom);
-        self.editor.noise.zoom_factor(zoom)
+        self.editor.noise.settings().zoom_factor(zoom)
     }
 
     /// The noise layer of the current settings, made once per change of them
@@ -61,41 +61,45 @@ impl MarblingApp {
         let factor = self.noise_zoom_factor();
         self.editor
             .noise_layer
-            .get_or_insert_with(|| self.editor.noise.layer(factor))
+            .get_or_insert_with(|| self.editor.noise.settings().layer(factor))
             .clone()
     }
 
     /// The noise panel.
     pub(crate) fn noise_section(&mut self, ui: &mut egui::Ui) {
         ui.label(RichText::new("Noise").strong());
-        let s = &mut self.editor.noise;
-        let shown = s.spec.source.type_name();
-        egui::ComboBox::from_label("noise")
-            .selected_text(shown)
-            .show_ui(ui, |ui| {
-                // A product (cross-hatching) is read from JSON; it has no sliders here.
-                for &t in NOISE_TYPES.iter().filter(|t| **t != "product") {
-                    if ui.selectable_label(t == shown, t).clicked() && t != shown {
-                        s.set_type(t);
+        let (controls, zoom_box) = self.editor.noise.edit_in(|s| {
+            let shown = s.spec.source.type_name();
+            egui::ComboBox::from_label("noise")
+                .selected_text(shown)
+                .show_ui(ui, |ui| {
+                    // A product (cross-hatching) is read from JSON; it has no sliders here.
+                    for &t in NOISE_TYPES.iter().filter(|t| **t != "product") {
+                        if ui.selectable_label(t == shown, t).clicked() && t != shown {
+                            s.set_type(t);
+                        }
                     }
-                }
-            });
-        noise_parameters(ui, &mut s.spec);
-        let mut controls = crate::noise::controls::transfer_section(ui, &mut s.spec);
-        controls.extend(crate::noise::controls::tile_section(ui, s));
-        controls.extend(crate::noise::controls::blend_section(ui, &mut s.spec));
-        controls.extend(crate::noise::controls::cross_hatch(ui, &mut s.spec));
-        controls.extend(crate::noise::controls::layers_section(ui, &mut s.spec));
-        egui::ComboBox::from_label("palette")
-            .selected_text(s.palette_name())
-            .show_ui(ui, |ui| {
-                for (i, name) in marbling_noise::PALETTES.iter().enumerate() {
-                    ui.selectable_value(&mut s.palette, i, *name);
-                }
-            });
-        let zoom_box = ui
-            .checkbox(&mut s.zoom_independent, "zoom-independent")
-            .on_hover_text("Keep features 4–40 screen pixels wide while zooming (octave steps)");
+                });
+            noise_parameters(ui, &mut s.spec);
+            let mut controls = crate::noise::controls::transfer_section(ui, &mut s.spec);
+            controls.extend(crate::noise::controls::tile_section(ui, s));
+            controls.extend(crate::noise::controls::blend_section(ui, &mut s.spec));
+            controls.extend(crate::noise::controls::cross_hatch(ui, &mut s.spec));
+            controls.extend(crate::noise::controls::layers_section(ui, &mut s.spec));
+            egui::ComboBox::from_label("palette")
+                .selected_text(s.palette_name())
+                .show_ui(ui, |ui| {
+                    for (i, name) in marbling_noise::PALETTES.iter().enumerate() {
+                        ui.selectable_value(&mut s.palette, i, *name);
+                    }
+                });
+            let zoom_box = ui
+                .checkbox(&mut s.zoom_independent, "zoom-independent")
+                .on_hover_text(
+                    "Keep features 4–40 screen pixels wide while zooming (octave steps)",
+                );
+            (controls, zoom_box)
+        });
         for (name, response) in &controls {
             self.control(*name, response);
         }
@@ -165,7 +169,7 @@ impl MarblingApp {
                 let link = format!(
                     "{}#{}",
                     crate::platform::base_url(),
-                    marbling_core::noise_fragment(&self.editor.noise.export_spec())
+                    marbling_core::noise_fragment(&self.editor.noise.settings().export_spec())
                 );
                 ui.ctx().copy_text(link.clone());
                 self.info(format!("noise link copied ({} characters)", link.len()));
@@ -175,7 +179,7 @@ impl MarblingApp {
                 .on_hover_text("The JSON that `marbling noise SPEC -o OUT.png` renders");
             self.control("noise-copy-spec", &copy);
             if copy.clicked() {
-                let v = self.editor.noise.export_spec().to_value();
+                let v = self.editor.noise.settings().export_spec().to_value();
                 ui.ctx()
                     .copy_text(serde_json::to_string_pretty(&v).unwrap_or_else(|_| v.to_string()));
                 self.info("noise spec copied");
@@ -183,7 +187,7 @@ impl MarblingApp {
         });
         self.noise_export_row(ui);
         ui.label(RichText::new("Use on the design").strong());
-        if self.editor.noise.needs_preview() {
+        if self.editor.noise.settings().needs_preview() {
             ui.label(
                 RichText::new(
                     "A design holds the base noise only (no layers, tiling, curve, spline \
@@ -205,7 +209,7 @@ impl MarblingApp {
                 .on_hover_text("The design's background becomes this noise, marbled like ink");
             self.control("noise-background", &bg);
             if bg.clicked() {
-                match Palette::named(self.editor.noise.palette_name()) {
+                match Palette::named(self.editor.noise.settings().palette_name()) {
                     Ok(p) => {
                         let mut surface = self.editor.history.surface();
                         surface.0 = Some(NoiseBackground::new(layer.clone(), p));
@@ -215,9 +219,9 @@ impl MarblingApp {
                 }
             }
         });
-        ui.add(
-            Slider::new(&mut self.editor.noise.grain_strength, 0.0..=1.0).text("grain strength"),
-        );
+        self.editor.noise.edit_in(|s| {
+            ui.add(Slider::new(&mut s.grain_strength, 0.0..=1.0).text("grain strength"))
+        });
         ui.horizontal_wrapped(|ui| {
             let paper = ui
                 .button("Paper grain")
@@ -235,7 +239,7 @@ impl MarblingApp {
                 None
             };
             if let Some(kind) = kind {
-                let strength = self.editor.noise.grain_strength;
+                let strength = self.editor.noise.settings().grain_strength;
                 let overlay = match kind {
                     GrainKind::Paper => Overlay::paper_grain(layer.clone(), strength),
                     GrainKind::Pigment => Overlay::pigment_grain(layer.clone(), strength),
@@ -252,17 +256,18 @@ impl MarblingApp {
     fn noise_export_row(&mut self, ui: &mut egui::Ui) {
         use crate::noise::export::EXPORT_SIZES;
         ui.horizontal_wrapped(|ui| {
-            let s = &mut self.editor.noise;
-            let size = EXPORT_SIZES[s.export_size.min(EXPORT_SIZES.len() - 1)];
-            egui::ComboBox::from_id_salt("noise-export-size")
-                .selected_text(format!("{size}²"))
-                .show_ui(ui, |ui| {
-                    for (i, n) in EXPORT_SIZES.iter().enumerate() {
-                        ui.selectable_value(&mut s.export_size, i, format!("{n}²"));
-                    }
-                });
-            ui.checkbox(&mut s.export_16bit, "16-bit")
-                .on_hover_text("65,536 levels per sample: height maps");
+            self.editor.noise.edit_in(|s| {
+                let size = EXPORT_SIZES[s.export_size.min(EXPORT_SIZES.len() - 1)];
+                egui::ComboBox::from_id_salt("noise-export-size")
+                    .selected_text(format!("{size}²"))
+                    .show_ui(ui, |ui| {
+                        for (i, n) in EXPORT_SIZES.iter().enumerate() {
+                            ui.selectable_value(&mut s.export_size, i, format!("{n}²"));
+                        }
+                    });
+                ui.checkbox(&mut s.export_16bit, "16-bit")
+                    .on_hover_text("65,536 levels per sample: height maps");
+            });
             match &self.editor.noise_export {
                 Some(e) => {
                     ui.label(format!("exporting… {:.0} %", 100.0 * e.progress()));

@@ -74,7 +74,7 @@ impl MarblingApp {
         painter: &egui::Painter,
         sheet: Rect,
     ) {
-        let s = &self.editor.noise;
+        let s = self.editor.noise.settings();
         if !s.needs_preview() {
             self.editor.noise_preview = None;
             return;

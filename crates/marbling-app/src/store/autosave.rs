@@ -240,12 +240,13 @@ impl crate::app::MarblingApp {
         } else if self.session.stored_prefs.0 != Some(prefs) {
             ctx.request_repaint_after(std::time::Duration::from_secs(1));
         }
-        if self.session.stored_noise.as_ref() != Some(&self.editor.noise) {
-            let json = self.editor.noise.export_spec().to_value().to_string();
+        let noise = &self.editor.noise;
+        if self.session.stored_noise != Some(noise.revision()) {
+            let json = noise.settings().export_spec().to_value().to_string();
             self.session
                 .pending_writes
                 .push((crate::noise::settings::KEY, json));
-            self.session.stored_noise = Some(self.editor.noise.clone());
+            self.session.stored_noise = Some(self.editor.noise.revision());
         }
         for (key, value) in std::mem::take(&mut self.session.pending_writes) {
             if let Err(e) = platform::store_string(frame, key, &value) {

@@ -1,9 +1,11 @@
 //! What outlives a frame: autosave, recent designs, preferences, and the files the app
-//! writes (Export PNG, Export SVG, thumbnails).
+//! writes (Export PNG, Export SVG, thumbnails), and the links the address bar holds.
 
 pub(crate) mod autosave;
 pub mod export;
+pub(crate) mod links;
 pub(crate) mod prefs;
 pub(crate) mod recent;
+pub(crate) mod restore;
 pub(crate) mod svg_export;
 pub(crate) mod thumbnails;

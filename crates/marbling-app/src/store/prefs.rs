@@ -23,6 +23,19 @@ pub struct Prefs {
     pub antialias: Antialias,
 }
 
+impl Default for Prefs {
+    /// A first visit's: the drop tool, the first ink set and its first ink, RGSS.
+    fn default() -> Self {
+        Self {
+            tool: ToolKind::Drop,
+            settings: ToolSettings::default(),
+            palette: 0,
+            ink: crate::INK_SETS[0].inks[0],
+            antialias: Antialias::Rgss,
+        }
+    }
+}
+
 #[derive(serde::Serialize, serde::Deserialize)]
 struct Stored {
     tool: ToolKind,
