@@ -555,7 +555,7 @@ impl eframe::App for MarblingApp {
     fn save(&mut self, storage: &mut dyn eframe::Storage) {
         let mut u = autosave::unsaved();
         if self.session.autosave_pending && u.design.is_none() {
-            u.design = Some(Arc::new(self.editor.history.design().clone()));
+            u.design = Some(self.editor.history.design_shared().clone());
         }
         u.flush(|key, value| {
             storage.set_string(key, value.to_owned());

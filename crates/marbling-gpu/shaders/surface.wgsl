@@ -57,13 +57,6 @@ fn surface_intensity(p: vec2<f32>, i: u32) -> f32 {
     return threshold_transfer(n, surface.layers[i].threshold, surface.layers[i].width, transfer == 2u);
 }
 
-// sRGB value in [0, 1] → linear light, per channel (IEC 61966-2-1).
-fn srgb_to_linear3(c: vec3<f32>) -> vec3<f32> {
-    let lo = c / 12.92;
-    let hi = pow((c + 0.055) / 1.055, vec3<f32>(2.4));
-    return select(hi, lo, c <= vec3<f32>(0.04045));
-}
-
 // Linear colour of the palette at intensity t.
 fn surface_palette(t: f32) -> vec3<f32> {
     let n = surface.stop_count - 1u;
@@ -72,7 +65,7 @@ fn surface_palette(t: f32) -> vec3<f32> {
     let f = x - f32(i);
     let a = surface.stops[i].rgb;
     let b = surface.stops[i + 1u].rgb;
-    return srgb_to_linear3(a + f * (b - a));
+    return srgb_to_linear(a + f * (b - a));
 }
 
 // Linear colour `c` of a sample that left design point `start` and whose walk ended at

@@ -89,14 +89,12 @@ impl ComputeExact {
                 &variant.compute_wgsl(),
             )
         });
-        let target_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
-            label: Some("marbling render target (compute)"),
-            layout: &self.target_layout,
-            entries: &[wgpu::BindGroupEntry {
-                binding: 0,
-                resource: wgpu::BindingResource::TextureView(&target.view),
-            }],
-        });
+        let target_group = crate::bindings::bind_group(
+            device,
+            "marbling render target (compute)",
+            &self.target_layout,
+            &[wgpu::BindingResource::TextureView(&target.view)],
+        );
         let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
             label: Some("marbling render (compute)"),
             timestamp_writes: None,

@@ -372,28 +372,17 @@ impl ExactRenderer {
     ) -> wgpu::BindGroup {
         let view = ops.create_view(&wgpu::TextureViewDescriptor::default());
         let image_view = image.create_view(&wgpu::TextureViewDescriptor::default());
-        device.create_bind_group(&wgpu::BindGroupDescriptor {
-            label: Some("marbling render"),
-            layout: &self.layout,
-            entries: &[
-                wgpu::BindGroupEntry {
-                    binding: 0,
-                    resource: uniform.as_entire_binding(),
-                },
-                wgpu::BindGroupEntry {
-                    binding: 1,
-                    resource: wgpu::BindingResource::TextureView(&view),
-                },
-                wgpu::BindGroupEntry {
-                    binding: 2,
-                    resource: surface.as_entire_binding(),
-                },
-                wgpu::BindGroupEntry {
-                    binding: 3,
-                    resource: wgpu::BindingResource::TextureView(&image_view),
-                },
+        crate::bindings::bind_group(
+            device,
+            "marbling render",
+            &self.layout,
+            &[
+                uniform.as_entire_binding(),
+                wgpu::BindingResource::TextureView(&view),
+                surface.as_entire_binding(),
+                wgpu::BindingResource::TextureView(&image_view),
             ],
-        })
+        )
     }
 
     /// Records a full-target draw of `design` (its view set with

@@ -110,24 +110,16 @@ impl Presenter {
         decode_texels: bool,
     ) -> PresentSource {
         let uniform = bindings::uniform_buffer::<PresentParams>(device, "marbling present params");
-        let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
-            label: Some("marbling present"),
-            layout: &self.layout,
-            entries: &[
-                wgpu::BindGroupEntry {
-                    binding: 0,
-                    resource: uniform.as_entire_binding(),
-                },
-                wgpu::BindGroupEntry {
-                    binding: 1,
-                    resource: wgpu::BindingResource::TextureView(view),
-                },
-                wgpu::BindGroupEntry {
-                    binding: 2,
-                    resource: wgpu::BindingResource::Sampler(&self.sampler),
-                },
+        let bind_group = crate::bindings::bind_group(
+            device,
+            "marbling present",
+            &self.layout,
+            &[
+                uniform.as_entire_binding(),
+                wgpu::BindingResource::TextureView(view),
+                wgpu::BindingResource::Sampler(&self.sampler),
             ],
-        });
+        );
         PresentSource {
             uniform,
             bind_group,

@@ -169,24 +169,16 @@ impl PreviewRenderer {
             },
         );
         let uniform = bindings::uniform_buffer::<PreviewParams>(device, "marbling preview params");
-        let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
-            label: Some("marbling preview"),
-            layout: &self.layout,
-            entries: &[
-                wgpu::BindGroupEntry {
-                    binding: 0,
-                    resource: uniform.as_entire_binding(),
-                },
-                wgpu::BindGroupEntry {
-                    binding: 1,
-                    resource: wgpu::BindingResource::TextureView(&cache.view),
-                },
-                wgpu::BindGroupEntry {
-                    binding: 2,
-                    resource: wgpu::BindingResource::Sampler(&self.sampler),
-                },
+        let bind_group = crate::bindings::bind_group(
+            device,
+            "marbling preview",
+            &self.layout,
+            &[
+                uniform.as_entire_binding(),
+                wgpu::BindingResource::TextureView(&cache.view),
+                wgpu::BindingResource::Sampler(&self.sampler),
             ],
-        });
+        );
         let mut out = PreviewCache {
             cache,
             prepared,

@@ -152,20 +152,15 @@ impl View3dRenderer {
         uniform: &wgpu::Buffer,
         baked: &RenderTarget,
     ) -> wgpu::BindGroup {
-        device.create_bind_group(&wgpu::BindGroupDescriptor {
-            label: Some("marbling 3d view"),
+        crate::bindings::bind_group(
+            device,
+            "marbling 3d view",
             layout,
-            entries: &[
-                wgpu::BindGroupEntry {
-                    binding: 0,
-                    resource: uniform.as_entire_binding(),
-                },
-                wgpu::BindGroupEntry {
-                    binding: 1,
-                    resource: wgpu::BindingResource::TextureView(&baked.view),
-                },
+            &[
+                uniform.as_entire_binding(),
+                wgpu::BindingResource::TextureView(&baked.view),
             ],
-        })
+        )
     }
 
     /// Bakes `design` (uploaded as `prepared`) into a raster of longest side `side`

@@ -95,3 +95,15 @@ fn an_unnamed_part_is_reported() {
     .map(String::from);
     assert_eq!(unnamed(doc, &parts), ["noise/", "svg_cli.rs"]);
 }
+
+/// docs/BENCHMARKS.md keeps the current numbers a reader needs; older runs and tuning
+/// notes go to docs/perf-log/.
+#[test]
+fn the_benchmarks_page_stays_short() {
+    let text = fs::read_to_string(root().join("docs/BENCHMARKS.md")).expect("docs/BENCHMARKS.md");
+    let lines = text.lines().count();
+    assert!(
+        lines <= 500,
+        "docs/BENCHMARKS.md has {lines} lines (at most 500; move detail to docs/perf-log/)"
+    );
+}

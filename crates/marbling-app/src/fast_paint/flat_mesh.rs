@@ -111,14 +111,12 @@ impl FlatMeshRenderer {
             cache: None,
         });
         let uniform = bindings::uniform_buffer::<FlatMeshParams>(device, "marbling flat mesh");
-        let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
-            label: Some("marbling flat mesh"),
-            layout: &layout,
-            entries: &[wgpu::BindGroupEntry {
-                binding: 0,
-                resource: uniform.as_entire_binding(),
-            }],
-        });
+        let bind_group = marbling_gpu::bindings::bind_group(
+            device,
+            "marbling flat mesh",
+            &layout,
+            &[uniform.as_entire_binding()],
+        );
         Self {
             pipeline,
             uniform,

@@ -79,14 +79,16 @@ impl MarblingApp {
             self.editor.noise_preview = None;
             return;
         }
-        let spec = s.shown_spec(self.noise_zoom_factor());
+        let factor = self.noise_zoom_factor();
+        let spec = s.shown_spec(factor);
         let coverage = match spec.tile {
             Tile::Period(p) if s.show_tiles => Coverage::Tiles(p),
             _ => Coverage::Sheet,
         };
         let d = self.editor.history.design();
         let size = [d.width, d.height];
-        let key = format!("{}|{size:?}|{coverage:?}", spec.to_value());
+        let revision = self.editor.noise.revision();
+        let key = format!("{revision}|{factor}|{size:?}|{coverage:?}");
         let stale = self
             .editor
             .noise_preview
