@@ -6,6 +6,7 @@ use crate::action::Action;
 use crate::app::MarblingApp;
 use crate::shell::layout::{SHEET_MAX_FRACTION, SheetTab, TOUCH_TARGET, touch_spacing};
 use crate::shell::mode::Mode;
+use crate::shell::sections;
 
 impl MarblingApp {
     /// Shows the bottom sheet as the lowest panel of `ui` (the whole window).
@@ -92,26 +93,12 @@ impl MarblingApp {
     }
 
     fn sheet_content(&mut self, ui: &mut egui::Ui, frame: &mut eframe::Frame) {
-        match self.shown_tab() {
-            SheetTab::Tools => {
-                self.surface_section(ui);
-                self.tool_section(ui);
-            }
-            SheetTab::Ink => {
-                self.ink_section(ui);
+        let tab = self.shown_tab();
+        for (section, rule) in sections::shown(self.editor.mode, Some(tab)) {
+            if rule {
                 ui.separator();
-                self.image_section(ui);
-                self.video_section(ui);
             }
-            SheetTab::History => self.history_section(ui),
-            SheetTab::Files => {
-                self.file_section(ui);
-                ui.separator();
-                self.export_section(ui, frame);
-                ui.separator();
-                self.recent_section(ui);
-            }
-            SheetTab::Noise => self.noise_section(ui),
+            self.section(section, ui, frame);
         }
     }
 }

@@ -8,6 +8,7 @@ pub mod gallery;
 pub(crate) mod landing;
 pub(crate) mod layout;
 pub(crate) mod mode;
+pub(crate) mod sections;
 pub(crate) mod shortcuts;
 pub(crate) mod side_panel;
 pub(crate) mod style;

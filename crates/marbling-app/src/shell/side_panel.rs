@@ -1,4 +1,5 @@
-//! The side panel (files, inks, history, recent designs; the Tool section is
+//! The side panel: the sections of `sections.rs` in order (files, export, inks,
+//! history and recent designs are drawn here; the Tool section is
 //! src/marbling/tool_panel.rs) and the status bar.
 
 use crate::INK_SETS;
@@ -6,6 +7,7 @@ use crate::action::Action;
 use crate::app::MarblingApp;
 use crate::platform;
 use crate::shell::mode::Mode;
+use crate::shell::sections::{self, Section};
 use crate::store::export::ExportSize;
 use egui::{Color32, RichText};
 use marbling_core::Rgb8;
@@ -15,7 +17,7 @@ fn color32(c: Rgb8) -> Color32 {
 }
 
 impl MarblingApp {
-    pub(crate) fn side_panel(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
+    pub(crate) fn side_panel(&mut self, ui: &mut egui::Ui, frame: &mut eframe::Frame) {
         ui.horizontal(|ui| {
             let mut mode = self.editor.mode;
             let m = ui.selectable_value(
@@ -28,24 +30,28 @@ impl MarblingApp {
             self.control("mode-noise", &n);
             self.apply(Action::SetMode(mode));
         });
-        self.file_section(ui);
-        ui.separator();
-        self.export_section(ui, _frame);
-        ui.separator();
-        if self.editor.mode == Mode::Noise {
-            self.noise_section(ui);
-            return;
+        for (section, rule) in sections::shown(self.editor.mode, None) {
+            if rule {
+                ui.separator();
+            }
+            self.section(section, ui, frame);
         }
-        self.surface_section(ui);
-        self.tool_section(ui);
-        ui.separator();
-        self.ink_section(ui);
-        self.image_section(ui);
-        self.video_section(ui);
-        ui.separator();
-        self.history_section(ui);
-        ui.separator();
-        self.recent_section(ui);
+    }
+
+    /// Draws one section of the panel.
+    pub(crate) fn section(&mut self, section: Section, ui: &mut egui::Ui, frame: &eframe::Frame) {
+        match section {
+            Section::File => self.file_section(ui),
+            Section::Export => self.export_section(ui, frame),
+            Section::Noise => self.noise_section(ui),
+            Section::Surface => self.surface_section(ui),
+            Section::Tool => self.tool_section(ui),
+            Section::Ink => self.ink_section(ui),
+            Section::Picture => self.image_section(ui),
+            Section::Video => self.video_section(ui),
+            Section::History => self.history_section(ui),
+            Section::Recent => self.recent_section(ui),
+        }
     }
 
     pub(crate) fn file_section(&mut self, ui: &mut egui::Ui) {
