@@ -244,11 +244,6 @@ impl MarblingApp {
             self.editor.playback = None;
             self.editor.active = None;
             self.editor.noise_shown = None;
-            // The other side's panel leaves the canvas another size: a view nobody moved
-            // is fitted again, as a reload would fit it.
-            if let Some((_, window)) = &mut self.editor.fit {
-                *window = [0.0; 3];
-            }
             self.refresh();
         }
     }
