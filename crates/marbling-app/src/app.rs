@@ -135,14 +135,11 @@ impl MarblingApp {
             None => {}
         }
         app.session.stored_prefs.0 = Some(app.prefs);
-        let noise = stored.noise.map(|spec| {
-            let data = &app.editor.noise_data;
-            spec.and_then(|spec| app.editor.noise.settings().with_spec(spec, data))
-        });
-        match noise {
-            Some(Ok(s)) => app.editor.noise.set(s),
-            Some(Err(e)) => log::warn!("the stored noise setup was not restored: {e}"),
-            None => {}
+        if let Some(Err(e)) = stored
+            .noise
+            .map(|s| s.and_then(|s| app.editor.noise.open(s)))
+        {
+            log::warn!("the stored noise setup was not restored: {e}");
         }
         app.session.stored_noise = Some(app.editor.noise.revision());
         if let Some(recent) = stored.recent {
@@ -243,7 +240,7 @@ impl MarblingApp {
             self.editor.mode = mode;
             self.editor.playback = None;
             self.editor.active = None;
-            self.editor.noise_shown = None;
+            self.editor.noise.forget_shown();
             self.refresh();
         }
     }
@@ -255,11 +252,7 @@ impl MarblingApp {
             return;
         }
         let factor = self.noise_zoom_factor();
-        let now = (self.editor.noise.revision(), factor);
-        if self.editor.noise_shown != Some(now) {
-            self.editor.noise_shown = Some(now);
-            self.editor.noise_analysis = None;
-            self.editor.noise_layer = None;
+        if self.editor.noise.follow(factor) {
             self.refresh();
         }
     }
@@ -324,14 +317,11 @@ impl MarblingApp {
             Link::None => {}
             Link::Noise(spec) => {
                 let opened = spec.and_then(|spec| {
-                    let noise = self.editor.noise.settings();
-                    noise
-                        .with_spec(*spec, &self.editor.noise_data)
-                        .map_err(|e| format!("noise link: {e}"))
+                    let opened = self.editor.noise.open(*spec);
+                    opened.map_err(|e| format!("noise link: {e}"))
                 });
                 match opened {
-                    Ok(s) => {
-                        self.editor.noise.set(s);
+                    Ok(()) => {
                         self.set_mode(Mode::Noise);
                         self.info("noise link opened");
                     }

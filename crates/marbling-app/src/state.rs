@@ -13,7 +13,6 @@ use crate::gpu::recovery::LostFlag;
 use crate::marbling::playback::Playback;
 use crate::marbling::shown::Shown;
 use crate::marbling::view::ViewState;
-use crate::noise::panel::NoiseAnalysis;
 use crate::platform::PickSlot;
 use crate::shell::mode::Mode;
 use crate::store::export::{ExportSize, PngExport};
@@ -65,21 +64,8 @@ pub struct Editor {
     pub last_fragment: Option<String>,
     /// Marbling or the noise playground.
     pub mode: Mode,
-    /// The noise playground's parameters and their revision.
+    /// The noise playground: its settings and what is made from them.
     pub noise: crate::noise::Noise,
-    /// The noise's revision and the zoom factor the canvas shows.
-    pub noise_shown: Option<(u64, f64)>,
-    /// Statistics of the shown noise (`Some(None)`: none can be computed).
-    pub noise_analysis: Option<Option<NoiseAnalysis>>,
-    /// The noise layer of the shown settings, made once per change of them (parsing a
-    /// spec builds its CPU field); `None` until asked for.
-    pub noise_layer: Option<Result<marbling_core::NoiseLayer, String>>,
-    /// The data sets loaded for data-driven noise.
-    pub noise_data: crate::noise::data::NoiseData,
-    /// The CPU picture of what the noise background cannot show.
-    pub noise_preview: Option<crate::noise::preview::NoisePreview>,
-    /// A running Export PNG of the noise.
-    pub noise_export: Option<crate::noise::export::NoiseExport>,
 }
 
 impl Editor {
@@ -105,12 +91,6 @@ impl Editor {
             last_fragment: None,
             mode: Mode::Marbling,
             noise: crate::noise::Noise::default(),
-            noise_shown: None,
-            noise_analysis: None,
-            noise_layer: None,
-            noise_data: crate::noise::data::NoiseData::default(),
-            noise_preview: None,
-            noise_export: None,
         }
     }
 }

@@ -122,7 +122,7 @@ impl MarblingApp {
             .as_ref()
             .map(|(e, _)| format!("{}x{}", e.size().0, e.size().1))
             .or_else(|| {
-                let e = self.editor.noise_export.as_ref()?;
+                let e = self.editor.noise.export.as_ref()?;
                 Some(format!("{0}x{0}", e.size()))
             })
             .or_else(|| {

@@ -161,12 +161,12 @@ impl MarblingApp {
         match picked {
             Some(Ok((name, bytes))) => {
                 let name = name.rsplit(['/', '\\']).next().unwrap_or(&name).to_owned();
-                match self.editor.noise_data.load(&name, &bytes) {
+                match self.editor.noise.data.load(&name, &bytes) {
                     Ok(text) => {
                         if !self.editor.noise.settings().spec.has_data_frequency() {
                             self.weather_example();
                         }
-                        let data = self.editor.noise_data.clone();
+                        let data = self.editor.noise.data.clone();
                         rename_data(&mut self.editor.noise.edit().spec, &name, &data);
                         self.info(text);
                     }
@@ -229,7 +229,7 @@ impl MarblingApp {
     }
 
     fn data_mapping(&mut self, ui: &mut egui::Ui) {
-        let data = self.editor.noise_data.clone();
+        let data = self.editor.noise.data.clone();
         self.editor.noise.edit_in(|s| {
             let spec = &mut s.spec;
             let current = data_of(spec, Role::Frequency).map(|r| r.name.clone());

@@ -96,7 +96,7 @@ impl MarblingApp {
         match NoiseExport::start(&s.export_spec(), size, depth) {
             Ok(e) => {
                 self.info(format!("exporting {size}×{size} noise PNG…"));
-                self.editor.noise_export = Some(e);
+                self.editor.noise.export = Some(e);
             }
             Err(e) => self.error(format!("Export noise PNG: {e}")),
         }
@@ -104,11 +104,11 @@ impl MarblingApp {
 
     /// Moves a running noise export on by one frame's budget; offers the file when done.
     pub(crate) fn advance_noise_export(&mut self, ctx: &egui::Context) {
-        let Some(mut export) = self.editor.noise_export.take() else {
+        let Some(mut export) = self.editor.noise.export.take() else {
             return;
         };
         if !export.advance(FRAME_BUDGET_MS, crate::platform::now_ms) {
-            self.editor.noise_export = Some(export);
+            self.editor.noise.export = Some(export);
             ctx.request_repaint();
             return;
         }

@@ -59,10 +59,7 @@ impl MarblingApp {
     /// (`follow_noise` forgets it), not once a frame.
     pub(crate) fn noise_layer(&mut self) -> Result<NoiseLayer, String> {
         let factor = self.noise_zoom_factor();
-        self.editor
-            .noise_layer
-            .get_or_insert_with(|| self.editor.noise.settings().layer(factor))
-            .clone()
+        self.editor.noise.layer_at(factor)
     }
 
     /// The noise panel.
@@ -116,11 +113,11 @@ impl MarblingApp {
 
     /// Min/max/mean, the histogram and the spectrum.
     fn noise_readout(&mut self, ui: &mut egui::Ui) {
-        if self.editor.noise_analysis.is_none() {
+        if self.editor.noise.analysis.is_none() {
             let layer = self.noise_layer();
-            self.editor.noise_analysis = Some(layer.ok().and_then(|l| NoiseAnalysis::of(&l)));
+            self.editor.noise.analysis = Some(layer.ok().and_then(|l| NoiseAnalysis::of(&l)));
         }
-        let Some(Some(a)) = &self.editor.noise_analysis else {
+        let Some(Some(a)) = &self.editor.noise.analysis else {
             ui.label("no statistics for this noise");
             return;
         };
@@ -268,7 +265,7 @@ impl MarblingApp {
                 ui.checkbox(&mut s.export_16bit, "16-bit")
                     .on_hover_text("65,536 levels per sample: height maps");
             });
-            match &self.editor.noise_export {
+            match &self.editor.noise.export {
                 Some(e) => {
                     ui.label(format!("exporting… {:.0} %", 100.0 * e.progress()));
                 }

@@ -76,7 +76,7 @@ impl MarblingApp {
     ) {
         let s = self.editor.noise.settings();
         if !s.needs_preview() {
-            self.editor.noise_preview = None;
+            self.editor.noise.preview = None;
             return;
         }
         let factor = self.noise_zoom_factor();
@@ -91,7 +91,8 @@ impl MarblingApp {
         let key = format!("{revision}|{factor}|{size:?}|{coverage:?}");
         let stale = self
             .editor
-            .noise_preview
+            .noise
+            .preview
             .as_ref()
             .map(|p| (p.key != key, p.fine));
         let long = match stale {
@@ -108,7 +109,7 @@ impl MarblingApp {
                         ..TextureOptions::LINEAR
                     };
                     let texture = ui.ctx().load_texture("noise-preview", image, options);
-                    self.editor.noise_preview = Some(NoisePreview {
+                    self.editor.noise.preview = Some(NoisePreview {
                         key,
                         fine: long == FINE,
                         texture,
@@ -119,13 +120,13 @@ impl MarblingApp {
                     ui.ctx().request_repaint();
                 }
                 Err(e) => {
-                    self.editor.noise_preview = None;
+                    self.editor.noise.preview = None;
                     self.error(format!("noise: {e}"));
                     return;
                 }
             }
         }
-        let Some(p) = &self.editor.noise_preview else {
+        let Some(p) = &self.editor.noise.preview else {
             return;
         };
         let (rect, uv) = match p.coverage {
@@ -143,7 +144,7 @@ impl MarblingApp {
 
     /// `data-noise-preview`: `off`, `sheet WxH` or `tiles WxH` (texels).
     pub(crate) fn noise_preview_hook(&self) -> String {
-        match &self.editor.noise_preview {
+        match &self.editor.noise.preview {
             None => "off".to_owned(),
             Some(p) => {
                 let kind = match p.coverage {
