@@ -73,6 +73,23 @@ export async function monkey(page, { seed, events }) {
 }
 
 /** Opens a fresh page, runs the monkey, and checks what it left behind. */
+/**
+ * The sheet shot while the exact frame of one view is on screen: ready before the shot,
+ * and the view read before it still the view, and still ready, after it (a view that
+ * moves during the shot is shot again, and said so).
+ */
+async function settledShot(page, design) {
+  for (let i = 0; i < 3; i++) {
+    await waitReady(page);
+    const before = await attr(page, 'data-view');
+    const shot = await shootSheet(page, design.width, design.height);
+    const after = await attr(page, 'data-view');
+    if (after === before && (await attr(page, 'data-ready')) === '1') return shot;
+    console.log(`monkey: the view moved or was not ready while the sheet was shot (${before} → ${after}); shot again`);
+  }
+  throw new Error('the view kept moving after the reload');
+}
+
 export async function run(browser, site, { seed, events }) {
   const context = await browser.newContext({ viewport: { width: 1100, height: 760 }, deviceScaleFactor: 1, acceptDownloads: true, serviceWorkers: 'block' });
   const page = await context.newPage();
@@ -113,7 +130,7 @@ export async function run(browser, site, { seed, events }) {
   assert.deepEqual(JSON.parse(again), design, `the reload changed the design ${where}`);
   const file = path.join(os.tmpdir(), `marbling-monkey-${process.pid}-${seed}.json`);
   fs.writeFileSync(file, saved);
-  const shot = await shootSheet(page, design.width, design.height);
+  const shot = await settledShot(page, design);
   const png = `${file}.png`;
   execFileSync(MARBLING, ['render', file, '-o', png, '--scale', String(shot.scale), '--aa', 'rgss']);
   const cpu = decode(fs.readFileSync(png));
