@@ -266,6 +266,99 @@ test('a tablet and a landscape phone: bottom sheet and tool rail', { timeout: 60
   await phone.context.close();
 });
 
+/** Pairs of `data-controls` entries whose rectangles overlap by more than a pixel. */
+function overlaps(c) {
+  const names = Object.keys(c);
+  const out = [];
+  for (let i = 0; i < names.length; i++) {
+    for (let j = i + 1; j < names.length; j++) {
+      const [a, b] = [c[names[i]], c[names[j]]];
+      const w = Math.min(a.x + a.w, b.x + b.w) - Math.max(a.x, b.x);
+      const h = Math.min(a.y + a.h, b.y + b.h) - Math.max(a.y, b.y);
+      if (w > 1 && h > 1) out.push(`${names[i]} × ${names[j]}`);
+    }
+  }
+  return out;
+}
+
+// The overlap finder finds what it should (a test of the comparator).
+assert.deepEqual(overlaps({ a: { x: 0, y: 0, w: 10, h: 10 }, b: { x: 8, y: 8, w: 10, h: 10 }, c: { x: 10, y: 0, w: 5, h: 5 } }), ['a × b']);
+
+test('the player with Explain on fits every screen: controls inside and apart, the sheet fitted, the canvas keeps 40 %; the panel keeps one width', { timeout: 600_000 }, async () => {
+  // Chevron at 320×200: its first step lays 288 drops (the hardest step to explain).
+  const file = path.join(os.tmpdir(), `marbling-devices-${process.pid}-chevron.json`);
+  execFileSync(MARBLING, ['pattern', 'chevron', '--size', '320x200', '-o', file]);
+  const design = JSON.parse(fs.readFileSync(file, 'utf8'));
+  const link = linkFragment(design, 'chevron-layout');
+  const screens = [
+    ['laptop', { width: 1280, height: 800 }, {}],
+    ['teacher', { width: 1440, height: 900 }, {}],
+    ['phone', PHONE, touchDevice(2)],
+    ['landscape-phone', PHONE_LANDSCAPE, touchDevice(2)],
+  ];
+  for (const [name, viewport, device] of screens) {
+    const { page, context, errors } = await openPage(browser, site, link, viewport, device);
+    const press = async (control) => {
+      const c = (await controls(page))[control];
+      assert.ok(c, `${name}: no ${control} in data-controls`);
+      if (device.hasTouch) await page.touchscreen.tap(c.x + c.w / 2, c.y + c.h / 2);
+      else await page.mouse.click(c.x + c.w / 2, c.y + c.h / 2);
+      await frames(page);
+    };
+    const layout = await attr(page, 'data-layout');
+    if (layout === 'portrait') await press('sheet-history');
+    if (layout === 'landscape') await press('rail-panel');
+    // Play is in the panel's History section, maybe below the fold: scroll to it.
+    let c = await controls(page);
+    for (let i = 0; i < 8 && c.play.y + c.play.h > viewport.height; i++) {
+      await page.mouse.move(c.play.x + 10, viewport.height / 2);
+      await page.mouse.wheel(0, c.play.y - viewport.height / 2);
+      await frames(page, 10);
+      c = await controls(page);
+    }
+    await press('play');
+    await page.waitForFunction(() => /\//.test(document.body.dataset.player ?? ''), null, { timeout: READY_MS });
+    await press('player-play'); // pause
+    c = await controls(page);
+    const tl = c['player-timeline'];
+    await page.mouse.click(tl.x + tl.w / (design.recipe.captions.length * 1.0), tl.y + 11);
+    await page.waitForFunction(() => (document.body.dataset.player ?? '').startsWith('1/'), null, { timeout: READY_MS });
+    await press('player-explain');
+    await frames(page, 4);
+    c = await controls(page);
+    const outside = Object.entries(c)
+      .filter(([, r]) => r.x < viewport.width && r.y < viewport.height && r.x + r.w > 0 && r.y + r.h > 0)
+      .filter(([, r]) => r.x < -1 || r.y < -1 || r.x + r.w > viewport.width + 1 || r.y + r.h > viewport.height + 1)
+      .map(([n, r]) => `${n} at ${r.x},${r.y} ${r.w}×${r.h}`);
+    assert.deepEqual(outside, [], `${name}: controls cut by the screen's edge`);
+    assert.deepEqual(overlaps(c), [], `${name}: controls on top of each other`);
+    const s = await sheet(page);
+    const [sw, sh] = [design.width * s.scale, design.height * s.scale];
+    const cv = c.canvas;
+    assert.ok(s.x >= cv.x - 1 && s.y >= cv.y - 1 && s.x + sw <= cv.x + cv.w + 1 && s.y + sh <= cv.y + cv.h + 1,
+      `${name}: the sheet (${s.x},${s.y} ${sw}×${sh}) is not inside the canvas (${cv.x},${cv.y} ${cv.w}×${cv.h})`);
+    console.log(`${name} ${viewport.width}×${viewport.height}: the canvas keeps ${(100 * cv.h / viewport.height).toFixed(0)} % of the height, the sheet is ${sw.toFixed(0)}×${sh.toFixed(0)} px`);
+    if (device.hasTouch) assert.ok(cv.h >= 0.4 * viewport.height - 1, `${name}: the canvas keeps ${cv.h} of ${viewport.height} px`);
+    await page.screenshot({ path: path.join(SHOTS, `explain-chevron-step1-${viewport.width}x${viewport.height}.png`), timeout: READY_MS });
+    if (name === 'laptop') {
+      // One panel width whatever the tool or the noise type.
+      const widths = new Set();
+      for (const tool of ['drop', 'spray', 'tine', 'comb', 'stylus', 'wavy', 'jiggle', 'circular', 'vortex', 'shift', 'turn']) {
+        await press(`tool-${tool}`);
+        widths.add((await controls(page)).canvas.x);
+      }
+      // The noise panel (Gabor's long labels); each further noise type costs SwiftShader
+      // 13–51 s of preview, so the others are left to the panel's fixed size.
+      await press('mode-noise');
+      await page.waitForFunction(() => document.body.dataset.mode === 'noise', null, { timeout: READY_MS });
+      widths.add((await controls(page)).canvas.x);
+      assert.deepEqual([...widths], [widths.values().next().value], `the panel's width changed: ${[...widths].join(', ')}`);
+    }
+    assert.deepEqual(errors, [], name);
+    await context.close();
+  }
+});
+
 test('installable and offline: manifest, icons, and the service worker serves the app with the server stopped', { timeout: 600_000 }, async () => {
   const manifest = JSON.parse(await (await fetch(`${site.url}manifest.webmanifest`)).text());
   const sizes = manifest.icons.map((i) => i.sizes);

@@ -152,6 +152,17 @@ impl MarblingApp {
             Action::Play(on) => {
                 self.editor.history.view(None);
                 self.editor.playback = on.then(crate::marbling::playback::Playback::start);
+                // On a phone the player takes the bottom sheet's or the side panel's room
+                // (a tab or the rail opens it again).
+                if on {
+                    match self.panels.layout {
+                        crate::shell::layout::Layout::Portrait => self.panels.sheet_open = false,
+                        crate::shell::layout::Layout::Landscape => {
+                            self.panels.rail_panel_open = false;
+                        }
+                        crate::shell::layout::Layout::Desktop => {}
+                    }
+                }
                 self.refresh();
                 self.fit_if_resized(shown_size);
                 return;

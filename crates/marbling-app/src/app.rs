@@ -347,13 +347,21 @@ impl MarblingApp {
         )
     }
 
-    /// Remembers where a named control was drawn (for the `data-controls` hook).
+    /// Remembers where a named control was drawn (for the `data-controls` hook): the
+    /// part of it that shows when its scroll area cuts it; not one scrolled out of its
+    /// area whose centre lies on the screen (over some other control); one scrolled past
+    /// the screen's edge is listed whole, for a scroll to bring.
     pub(crate) fn control(
         &mut self,
         name: impl Into<std::borrow::Cow<'static, str>>,
         response: &egui::Response,
     ) {
-        self.hooks.controls.push((name.into(), response.rect));
+        let (whole, shown) = (response.rect, response.interact_rect);
+        if !shown.contains(whole.center()) && response.ctx.content_rect().contains(whole.center()) {
+            return;
+        }
+        let rect = if shown.is_positive() { shown } else { whole };
+        self.hooks.controls.push((name.into(), rect));
     }
 
     fn handle_shortcuts(&mut self, ctx: &egui::Context) {
@@ -462,12 +470,11 @@ impl eframe::App for MarblingApp {
         if side_panel {
             egui::Panel::left("marbling_tools")
                 .frame(egui::Frame::side_top_panel(ui.style()))
-                .resizable(true)
+                .resizable(false)
                 // The dark canvas marks the edge; a line would be one more draw call a
                 // frame.
                 .show_separator_line(false)
-                .default_size(300.0)
-                .size_range(240.0..=360.0)
+                .exact_size(crate::shell::layout::PANEL_WIDTH)
                 .show(ui, |ui| {
                     if layout.touch() {
                         crate::shell::layout::touch_spacing(ui);
@@ -492,10 +499,14 @@ impl eframe::App for MarblingApp {
             && self.editor.mode == Mode::Marbling
             && !self.editor.landing
         {
+            // The player takes at most what leaves the canvas 40 % of the screen's height
+            // (less the player's and the canvas's margins, 32 points).
+            let room =
+                ui.available_rect_before_wrap().height() - 0.4 * ctx.content_rect().height() - 32.0;
             egui::Panel::bottom("marbling_player")
                 .frame(egui::Frame::side_top_panel(ui.style()))
                 .show_separator_line(false)
-                .show(ui, |ui| self.player_bar(ui));
+                .show(ui, |ui| self.player_bar(ui, room));
         }
         // Set again by the canvas when it is shown this frame (src/automation/hooks.rs).
         self.hooks.requested = None;

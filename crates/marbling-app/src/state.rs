@@ -36,10 +36,11 @@ pub struct Editor {
     pub shown: Shown,
     /// `None` until the canvas size is known (then the design is fitted).
     pub view: Option<ViewState>,
-    /// The last view made to fit the canvas, and the window it was made in (width and
-    /// height in points, physical pixels per point): while `view` is still that one, a
-    /// resized window or a changed pixel ratio fits it again.
-    pub fit: Option<(ViewState, [f64; 3])>,
+    /// The last view made to fit the canvas, and the window and canvas it was made for
+    /// (window width and height in points, physical pixels per point, canvas width and
+    /// height in points): while `view` is still that one, a resized window, a changed
+    /// pixel ratio or a canvas grown or shrunk by a panel fits it again.
+    pub fit: Option<(ViewState, [f64; 5])>,
     /// Two fingers are on the canvas: the view follows them unsnapped (snapping every
     /// frame would let the pinch's anchor drift), and is snapped when they lift.
     pub pinching: bool,
@@ -248,10 +249,10 @@ pub struct Panels {
     /// The layout of the last frame (for `data-layout`).
     pub layout: crate::shell::layout::Layout,
     /// The explain view's geometry and what it was computed for (shown design's key,
-    /// settings).
+    /// settings, half-octave of zoom).
     pub explain_cache: Option<(
-        (u64, crate::marbling::player::Explain),
-        Arc<crate::marbling::player::ExplainGeometry>,
+        (u64, crate::marbling::player::Explain, i32),
+        Arc<crate::marbling::explain_geometry::ExplainGeometry>,
     )>,
 }
 

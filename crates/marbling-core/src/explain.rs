@@ -14,6 +14,8 @@ pub struct Formula {
     pub inverse: String,
     /// The op's values in the formulas' symbols.
     pub values: String,
+    /// What every symbol of the formulas means, with units.
+    pub symbols: String,
     /// Whether the map keeps every area (all but the jiggle with A ≠ 0).
     pub area_preserving: bool,
 }
@@ -92,7 +94,9 @@ pub fn formula(op: &Op) -> Formula {
             true,
         ),
         Op::Rake(r) => (
-            format!("{TINE_FORWARD}, d = distance to the nearest tine line (every s along N)"),
+            format!(
+                "{TINE_FORWARD}, d = distance to the nearest tine line (lines every s along N)"
+            ),
             TINE_INVERSE.into(),
             format!(
                 "α = {}, λ = {}, s = {}, M = {}",
@@ -192,7 +196,57 @@ pub fn formula(op: &Op) -> Formula {
         forward,
         inverse,
         values,
+        symbols: format!(
+            "P: a point of older ink, P′: where this step moves it; {}",
+            symbols(op)
+        ),
         area_preserving: area,
+    }
+}
+
+/// Tine-family symbols shared by the tine, rake and comb.
+const TINE_SYMBOLS: &str = "M: the unit direction the tines are drawn, N: M turned 90°, \
+     α: how far ink on a tine's line moves (px), λ: how fast that fades with d (px)";
+
+/// What the symbols of `op`'s formulas mean.
+fn symbols(op: &Op) -> String {
+    match op {
+        Op::Drop(_) | Op::Drops(_) => {
+            "C: the drop's centre, r: its radius (px); the drop pushes older ink out of its disc"
+                .into()
+        }
+        Op::Spray(_) | Op::Sprays(_) => "C: the droplet's centre, r: its radius (px)".into(),
+        Op::Tine(_) => format!(
+            "O: a point on the tine's line, d: P's distance from that line (px), {TINE_SYMBOLS}"
+        ),
+        Op::Rake(_) => format!(
+            "O: a point on one tine's line, s: the spacing of the lines (px), d: P's distance \
+             from the nearest (px), {TINE_SYMBOLS}"
+        ),
+        Op::Comb(_) => format!(
+            "O: the comb's origin, t_i: tine i's offset from O along N (px), d: P's distance \
+             from the nearest tine's line (px), {TINE_SYMBOLS}"
+        ),
+        Op::Wavy(_) => "M: the unit direction ink moves, N: M turned 90°, A: the amplitude \
+             (px), ℓ: the wavelength along N (px), φ: the phase (radians)"
+            .into(),
+        Op::Circular(_) => "C: the centre, r: the circular tine's radius (px), ρ: P's distance \
+             from C (px), θ: the angle P turns, R(θ): the turn by θ, α: how far ink on the \
+             tine's circle moves along it (px), λ: how fast that fades (px)"
+            .into(),
+        Op::Vortex(_) => "C: the centre, ρ: P's distance from C (px), θ: the angle P turns, \
+             R(θ): the turn by θ, α: the swirl's strength (px), λ: how fast it fades (px)"
+            .into(),
+        Op::Shift(_) => "D: how far the whole tank moves (px)".into(),
+        Op::Turn(_) => "C: the centre, θ: the angle, R(θ): the turn by θ".into(),
+        Op::Jiggle(_) => "u: the unit direction of the wave, v: u turned 90°, A: the swing \
+             along u (px), B: the swing across (px), λ: the wavelength (px), φ₀: the phase, \
+             φ: the phase at P"
+            .into(),
+        Op::Stylus(_) => "δ: one sub-step along the path (px), u: the flow's direction, ψ: \
+             the stream function it follows, y: the distance across the path, ρ: the distance from a \
+             tip (px), L: the wake, how far the flow reaches (px)"
+            .into(),
     }
 }
 
@@ -212,5 +266,39 @@ mod tests {
         assert_eq!(f.forward, "P′ = P + α·λ/(d + λ)·M, d = |(P − O)·N|");
         assert_eq!(f.values, "α = 60, λ = 8, O = (0, 200), M = (1, 0)");
         assert!(f.area_preserving);
+        assert!(f.symbols.contains("N: M turned 90°"), "{}", f.symbols);
+    }
+
+    /// Every symbol a formula uses is defined in its `symbols` line (a letter of the
+    /// formulas' alphabet that appears in the formulas must appear before a colon).
+    #[test]
+    fn every_symbol_of_every_formula_is_defined() {
+        let mut ops: Vec<Op> = Vec::new();
+        for p in crate::patterns::all() {
+            let design = p.design(&Default::default()).expect("a pattern's design");
+            ops.extend(design.ops.iter().cloned());
+        }
+        let alphabet = [
+            "C", "r", "O", "M", "N", "d", "α", "λ", "s", "t_i", "A", "ℓ", "φ", "ρ", "θ", "R(θ)",
+            "D", "u", "v", "B", "φ₀", "δ", "ψ", "y", "L",
+        ];
+        for op in &ops {
+            let f = formula(op);
+            let text = format!("{} {}", f.forward, f.inverse);
+            for sym in alphabet {
+                let used = text
+                    .split(|c: char| !(c.is_alphanumeric() || "_₀'".contains(c)))
+                    .any(|w| w == sym)
+                    || (sym == "R(θ)" && text.contains("R(θ)"));
+                if used {
+                    assert!(
+                        f.symbols.contains(&format!("{sym}:")),
+                        "{}: {sym} is used in {text:?} but not defined in {:?}",
+                        op.type_name(),
+                        f.symbols
+                    );
+                }
+            }
+        }
     }
 }

@@ -11,6 +11,10 @@ use eframe::egui_wgpu;
 use egui::{Color32, PointerButton, Pos2, Rect, Sense, Vec2};
 use marbling_core::{Op, Point, Rgb8};
 
+/// How much the canvas may change in width or height, points, before a fitted view is
+/// fitted again.
+const REFIT_PT: f64 = 24.0;
+
 impl MarblingApp {
     /// Draws the canvas and handles its input.
     pub(crate) fn canvas(&mut self, ui: &mut egui::Ui, frame: &mut eframe::Frame) {
@@ -19,13 +23,26 @@ impl MarblingApp {
         let painter = ui.painter_at(rect);
         let size = [f64::from(rect.width()), f64::from(rect.height())];
         let ppp = f64::from(ui.ctx().pixels_per_point());
-        // Refit on a new window size or pixel ratio (a rotated phone, a hi-DPI page's
-        // first frames), not when a panel's content changes the canvas a little.
+        // Refit, unless the user zoomed or panned, on a new window size or pixel ratio (a
+        // rotated phone, a hi-DPI page's first frames) and when the canvas grows or
+        // shrinks by more than a line of text (the player, Explain or the bottom sheet
+        // opened or closed), not when a caption wraps to one more line.
         let window = ui.ctx().content_rect().size();
-        let canvas_key = [f64::from(window.x), f64::from(window.y), ppp];
+        let canvas_key = [
+            f64::from(window.x),
+            f64::from(window.y),
+            ppp,
+            size[0],
+            size[1],
+        ];
         let refit = match (self.editor.view, self.editor.fit) {
             (None, _) => true,
-            (Some(v), Some((fitted, key))) => v == fitted && key != canvas_key,
+            (Some(v), Some((fitted, key))) => {
+                v == fitted
+                    && (key[..3] != canvas_key[..3]
+                        || (key[3] - size[0]).abs() > REFIT_PT
+                        || (key[4] - size[1]).abs() > REFIT_PT)
+            }
             (Some(_), None) => false,
         };
         if refit {
@@ -92,9 +109,7 @@ impl MarblingApp {
                     &painter.with_clip_rect(sheet),
                     rect,
                     &view,
-                    &g.grid,
-                    &g.arrows,
-                    &g.probe,
+                    &g,
                 );
             }
             let design = self.editor.history.design();

@@ -3,6 +3,7 @@
 
 pub(crate) mod canvas;
 pub(crate) mod drop_patterns;
+pub(crate) mod explain_geometry;
 pub(crate) mod fingers;
 pub(crate) mod footprint;
 pub(crate) mod history;

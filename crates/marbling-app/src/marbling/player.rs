@@ -5,9 +5,10 @@
 
 use crate::action::Action;
 use crate::app::MarblingApp;
-use crate::marbling::player_drawing;
+use crate::marbling::explain_geometry::{ExplainGeometry, Window};
 use egui::{Color32, RichText, Sense, Slider, Stroke, vec2};
 use marbling_core::{Design, Point};
+use std::sync::Arc;
 
 /// The explain view's settings.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -30,26 +31,14 @@ impl Explain {
     }
 }
 
-/// The explain view's geometry for what the player shows now.
-pub struct ExplainGeometry {
-    /// Grid lines pushed forward.
-    pub grid: Vec<Vec<Point>>,
-    /// Coarse grid nodes and where the step moves them.
-    pub arrows: Vec<(Point, Point)>,
-    /// The probe before and after.
-    pub probe: (Vec<Point>, Vec<Point>),
-}
-
-/// Most point-op evaluations the explain geometry may cost in a frame; denser work
-/// thins the grid.
-const EXPLAIN_WORK: f64 = 4.0e6;
-
 impl MarblingApp {
-    /// The player's bar (shown while the player is open).
-    pub(crate) fn player_bar(&mut self, ui: &mut egui::Ui) {
+    /// The player's bar (shown while the player is open), at most `max_height` points
+    /// tall: the explain text scrolls in what is left, so the canvas keeps its share.
+    pub(crate) fn player_bar(&mut self, ui: &mut egui::Ui, max_height: f32) {
         let Some(p) = self.editor.playback else {
             return;
         };
+        let top = ui.cursor().top();
         let design = self.editor.history.design_shared().clone();
         let steps = design.gesture_sizes().len();
         let captions = design.step_captions();
@@ -58,9 +47,12 @@ impl MarblingApp {
         if self.panels.layout.touch() {
             crate::shell::layout::touch_spacing(ui);
         }
-        // Wrapped: on a phone the bar's controls take two rows.
+        // One height for every control of the row; on a phone the row wraps.
+        let row = vec2(0.0, ui.spacing().interact_size.y);
         ui.horizontal_wrapped(|ui| {
-            let back = ui.button("◀ Step").on_hover_text("Step back");
+            let back = ui
+                .add(egui::Button::new("◀ Step").min_size(row))
+                .on_hover_text("Step back");
             self.control("player-back", &back);
             if back.clicked() {
                 let to = if p.t > 0.0 {
@@ -72,9 +64,9 @@ impl MarblingApp {
             }
             let playing = p.playing;
             let play = ui
-                .add_sized(
-                    [52.0, 20.0],
-                    egui::Button::new(if playing { "Pause" } else { "Play" }),
+                .add(
+                    egui::Button::new(if playing { "Pause" } else { "Play" })
+                        .min_size(vec2(52.0, row.y)),
                 )
                 .on_hover_text("Play from here, or pause");
             self.control("player-play", &play);
@@ -82,89 +74,51 @@ impl MarblingApp {
                 let from = if p.step >= steps { 0.0 } else { p.position() };
                 seek = Some((from, !playing));
             }
-            let fwd = ui.button("Step ▶").on_hover_text("Step forward");
+            let fwd = ui
+                .add(egui::Button::new("Step ▶").min_size(row))
+                .on_hover_text("Step forward");
             self.control("player-forward", &fwd);
             if fwd.clicked() {
                 seek = Some(((p.step + 1).min(steps) as f64, false));
             }
-            let width = (ui.available_width() - 8.0).max(60.0);
-            let (rect, r) = ui.allocate_exact_size(vec2(width, 22.0), Sense::click_and_drag());
-            self.control("player-timeline", &r);
-            let x_of = |pos: f64| rect.left() + (pos / steps.max(1) as f64) as f32 * rect.width();
-            let painter = ui.painter();
-            let y = rect.center().y;
-            painter.line_segment(
-                [egui::pos2(rect.left(), y), egui::pos2(rect.right(), y)],
-                Stroke::new(2.0, Color32::from_gray(110)),
-            );
-            for k in 0..=steps {
-                let x = x_of(k as f64);
-                painter.line_segment(
-                    [egui::pos2(x, y - 6.0), egui::pos2(x, y + 6.0)],
-                    Stroke::new(1.0, Color32::from_gray(170)),
-                );
+            // A slider keeps its width: on a narrow screen it gets a row of its own.
+            let slider = ui.spacing().slider_width + 120.0;
+            if ui.available_size_before_wrap().x < slider {
+                ui.end_row();
+                ui.spacing_mut().slider_width =
+                    (ui.available_size_before_wrap().x - 120.0).min(ui.spacing().slider_width);
             }
-            painter.circle_filled(egui::pos2(x_of(p.position()), y), 6.0, Color32::WHITE);
-            if let Some(at) = r
-                .interact_pointer_pos()
-                .filter(|_| r.clicked() || r.dragged())
-            {
-                let raw = f64::from((at.x - rect.left()) / rect.width()) * steps as f64;
-                // Within 6 points of a tick means that step exactly.
-                let near = raw.round();
-                let snapped = if (x_of(near) - at.x).abs() <= 6.0 {
-                    near
-                } else {
-                    raw
-                };
-                seek = Some((snapped, false));
-            }
-        });
-        ui.horizontal(|ui| {
             let speed = ui.add(
                 Slider::new(&mut self.editor.play_speed, 0.1..=4.0)
                     .logarithmic(true)
                     .text("steps/s"),
             );
             self.control("player-speed", &speed);
-            let explain = ui.selectable_label(self.editor.explain.on, "Explain");
+            // Toggles look like buttons, lit while on.
+            let explain = ui
+                .add(
+                    egui::Button::new("Explain")
+                        .selected(self.editor.explain.on)
+                        .min_size(row),
+                )
+                .on_hover_text("Formulas, the deformation grid, arrows and the area probe");
             self.control("player-explain", &explain);
             if explain.clicked() {
                 self.editor.explain.on = !self.editor.explain.on;
             }
-            let recording = self.panels.recorder.is_some();
-            let record = ui
-                .selectable_label(
-                    recording,
-                    if recording {
-                        "Stop recording"
-                    } else {
-                        "Record"
-                    },
-                )
-                .on_hover_text("Film the making from the first step to a WebM video");
-            self.control("player-record", &record);
-            if record.clicked() {
-                if recording {
-                    self.finish_recording();
-                } else {
-                    match crate::media::recorder::Recorder::start(30.0) {
-                        Ok(r) => {
-                            self.panels.recorder = Some(r);
-                            seek = Some((0.0, true));
-                            self.info("recording the making: the video downloads at the end");
-                        }
-                        Err(e) => self.error(e),
-                    }
-                }
-            }
-            let close = ui.button("Close").on_hover_text("Close the player");
+            self.record_button(ui, row, &mut seek);
+            let close = ui
+                .add(egui::Button::new("Close").min_size(row))
+                .on_hover_text("Close the player");
             self.control("player-close", &close);
             if close.clicked() {
                 seek = None;
                 self.apply(Action::Play(false));
             }
         });
+        if let Some(to) = self.timeline(ui, p, steps) {
+            seek = Some((to, false));
+        }
         let Some(p) = self.editor.playback else {
             return;
         };
@@ -179,11 +133,117 @@ impl MarblingApp {
         };
         ui.label(RichText::new(caption).strong());
         if self.editor.explain.on {
-            self.explain_text(ui, &design, current);
+            // What is left of the bar's share scrolls the explain text; always the same
+            // height, so stepping does not move the canvas.
+            let used = ui.cursor().top() - top;
+            let height = (max_height - used).clamp(48.0, 220.0);
+            egui::ScrollArea::vertical()
+                .min_scrolled_height(height)
+                .max_height(height)
+                .auto_shrink([false, false])
+                .show(ui, |ui| self.explain_text(ui, &design, current));
         }
         if let Some((position, playing)) = seek {
             self.apply(Action::Seek { position, playing });
         }
+    }
+
+    /// Record (a toggle): films the making from the first step.
+    fn record_button(
+        &mut self,
+        ui: &mut egui::Ui,
+        row: egui::Vec2,
+        seek: &mut Option<(f64, bool)>,
+    ) {
+        let recording = self.panels.recorder.is_some();
+        let record = ui
+            .add(
+                egui::Button::new(if recording {
+                    "Stop recording"
+                } else {
+                    "Record"
+                })
+                .selected(recording)
+                .min_size(row),
+            )
+            .on_hover_text("Film the making from the first step to a WebM video");
+        self.control("player-record", &record);
+        if record.clicked() {
+            if recording {
+                self.finish_recording();
+            } else {
+                match crate::media::recorder::Recorder::start(30.0) {
+                    Ok(r) => {
+                        self.panels.recorder = Some(r);
+                        *seek = Some((0.0, true));
+                        self.info("recording the making: the video downloads at the end");
+                    }
+                    Err(e) => self.error(e),
+                }
+            }
+        }
+    }
+
+    /// The timeline across the bar: a tick per step with its number (as many as fit),
+    /// the playhead in the accent colour; a click or drag seeks (returned, in steps).
+    fn timeline(
+        &mut self,
+        ui: &mut egui::Ui,
+        p: crate::marbling::playback::Playback,
+        steps: usize,
+    ) -> Option<f64> {
+        let width = (ui.available_width() - 8.0).max(60.0);
+        let (rect, r) = ui.allocate_exact_size(vec2(width, 36.0), Sense::click_and_drag());
+        self.control("player-timeline", &r);
+        let line = egui::Rect::from_min_size(rect.min, vec2(rect.width(), 22.0));
+        let x_of = |pos: f64| line.left() + (pos / steps.max(1) as f64) as f32 * line.width();
+        let painter = ui.painter();
+        let y = line.center().y;
+        let ink = ui.visuals().text_color();
+        painter.line_segment(
+            [egui::pos2(line.left(), y), egui::pos2(line.right(), y)],
+            Stroke::new(3.0, Color32::from_gray(120)),
+        );
+        // Numbers every `every` steps, at least 22 points apart.
+        let gap = line.width() / steps.max(1) as f32;
+        let every = (22.0 / gap).ceil().max(1.0) as usize;
+        for k in 0..=steps {
+            let x = x_of(k as f64);
+            painter.line_segment(
+                [egui::pos2(x, y - 7.0), egui::pos2(x, y + 7.0)],
+                Stroke::new(1.5, Color32::from_gray(90)),
+            );
+            if k % every == 0 || k == steps {
+                painter.text(
+                    egui::pos2(
+                        x.clamp(line.left() + 4.0, line.right() - 4.0),
+                        line.bottom() + 1.0,
+                    ),
+                    egui::Align2::CENTER_TOP,
+                    k.to_string(),
+                    egui::FontId::proportional(11.0),
+                    ink,
+                );
+            }
+        }
+        let head = egui::pos2(x_of(p.position()), y);
+        painter.circle(
+            head,
+            8.0,
+            ui.visuals().selection.bg_fill,
+            Stroke::new(2.0, Color32::WHITE),
+        );
+        let at = r
+            .interact_pointer_pos()
+            .filter(|_| r.clicked() || r.dragged())?;
+        let raw = f64::from((at.x - line.left()) / line.width()).clamp(0.0, 1.0) * steps as f64;
+        // Within 6 points of a tick means that step exactly.
+        let near = raw.round();
+        Some(if (x_of(near) - at.x).abs() <= 6.0 {
+            near
+        } else {
+            raw
+        })
     }
 
     /// Ends a recording (its video downloads) once the player stops at the end or is
@@ -209,7 +269,7 @@ impl MarblingApp {
     }
 
     /// The formulas of the current step's op (the one easing in, else the step's
-    /// last), and the probe's areas.
+    /// last) with every symbol defined, what the drawing shows, and the probe's areas.
     fn explain_text(&mut self, ui: &mut egui::Ui, design: &Design, current: Option<usize>) {
         let Some(k) = current else {
             ui.label("The tank is empty; every step that follows moves it by a formula.");
@@ -228,36 +288,55 @@ impl MarblingApp {
         ui.label(format!("forward: {}", f.forward));
         ui.label(format!("inverse: {}", f.inverse));
         ui.label(format!("with {}", f.values));
-        ui.horizontal(|ui| {
-            let c = ui.checkbox(
-                &mut self.editor.explain.cumulative,
-                "grid through every step so far",
+        ui.label(f.symbols);
+        let c = ui.checkbox(
+            &mut self.editor.explain.cumulative,
+            "grid through every step so far",
+        );
+        self.control("player-cumulative", &c);
+        if let Some(g) = self.explain_geometry() {
+            let mut shows = format!(
+                "Grid: lines {:.0} px apart pushed through {}. Red arrows: where nodes go, \
+                 drawn at most one square long (the longest trip is {:.0} px).",
+                g.spacing,
+                match (self.editor.explain.cumulative, g.first_of) {
+                    (true, _) => "every step so far".to_owned(),
+                    (false, Some((n, of))) => format!("the first {n} of this step's {of} drops"),
+                    (false, None) => "this step".to_owned(),
+                },
+                g.longest_trip()
             );
-            self.control("player-cumulative", &c);
-            if let Some(g) = self.explain_geometry() {
-                let a0 = player_drawing::polygon_area(&g.probe.0);
-                let a1 = player_drawing::polygon_area(&g.probe.1);
-                ui.label(format!(
-                    "probe area: {a0:.0} px² before, {a1:.0} px² after (×{:.3}){}",
+            if !g.complete {
+                shows.push_str(" Parts stretched thinner than the view shows are left out.");
+            }
+            ui.label(shows);
+            ui.label(match g.probe_areas {
+                Some((a0, a1)) => format!(
+                    "Probe (white circle → bold outline): {a0:.0} px² before, {a1:.0} px² after \
+                     (×{:.3}){}",
                     a1 / a0,
                     if f.area_preserving {
                         " — the marbling maps keep every area"
                     } else {
                         " — this jiggle compresses and stretches"
                     }
-                ));
-            }
-        });
-        ui.label(
-            RichText::new("Click the sheet to move the probe circle.")
-                .small()
-                .color(Color32::from_gray(160)),
-        );
+                ),
+                None => "Probe (white circle → bold outline): stretched too thin to measure its \
+                         area here"
+                    .to_owned(),
+            });
+        }
+        let verb = if self.panels.layout.touch() {
+            "Tap"
+        } else {
+            "Click"
+        };
+        ui.label(format!("{verb} the sheet to move the probe circle."));
     }
 
-    /// The ops the explain geometry pushes through (the current step's, or every
-    /// step's so far, as shown now).
-    fn explain_ops(&self) -> Option<Vec<marbling_core::Op>> {
+    /// The explain view's window: the current step's ops (its first drops when it lays
+    /// many), or every step's so far, as shown now.
+    fn explain_window(&self) -> Option<Window> {
         let p = self.editor.playback?;
         let current = p.current_step()?;
         let design = self.editor.history.design();
@@ -270,60 +349,42 @@ impl MarblingApp {
         let shown = &self.editor.shown;
         let mut ops: Vec<_> = design.ops[from.min(shown.ops)..shown.ops].to_vec();
         ops.extend(shown.tail.iter().cloned());
-        Some(ops)
+        Some(if self.editor.explain.cumulative {
+            Window::all(&ops)
+        } else {
+            Window::step(&ops)
+        })
     }
 
     /// Grid, arrows and probe for the current moment of the player, computed once per
-    /// shown design and explain setting (the bar's readout and the canvas share it).
-    pub(crate) fn explain_geometry(&mut self) -> Option<std::sync::Arc<ExplainGeometry>> {
-        let key = (self.editor.key, self.editor.explain.clone());
+    /// shown design, explain setting and half-octave of zoom (the bar's readout and the
+    /// canvas share it).
+    pub(crate) fn explain_geometry(&mut self) -> Option<Arc<ExplainGeometry>> {
+        if !self.editor.explain.on {
+            return None;
+        }
+        let zoom = self.editor.view.map_or(1.0, |v| v.zoom);
+        // Made for the top of the zoom's half-octave: fine enough anywhere in it.
+        let half_octaves = (zoom.log2() * 2.0).ceil();
+        let key = (
+            self.editor.key,
+            self.editor.explain.clone(),
+            half_octaves as i32,
+        );
         if let Some((k, g)) = &self.panels.explain_cache
             && *k == key
         {
             return Some(g.clone());
         }
-        let g = std::sync::Arc::new(self.compute_explain_geometry()?);
+        let window = self.explain_window()?;
+        let design = self.editor.history.design();
+        let g = Arc::new(ExplainGeometry::new(
+            &window,
+            (design.width, design.height),
+            (half_octaves / 2.0).exp2(),
+            self.editor.explain.probe_circle(design),
+        ));
         self.panels.explain_cache = Some((key, g.clone()));
         Some(g)
-    }
-
-    fn compute_explain_geometry(&self) -> Option<ExplainGeometry> {
-        if !self.editor.explain.on {
-            return None;
-        }
-        let ops = self.explain_ops()?;
-        let design = self.editor.history.design();
-        let size = (design.width, design.height);
-        let counted: usize = ops.iter().map(marbling_core::Op::counted_ops).sum();
-        let long = f64::from(size.0.max(size.1));
-        // 16 lines along the longer side, fewer when the ops are many.
-        let mut step = long / 16.0;
-        let work = |step: f64| {
-            let nodes = (f64::from(size.0) + f64::from(size.1)) * (long / step) * 8.0 / step;
-            nodes * counted.max(1) as f64
-        };
-        while work(step) > EXPLAIN_WORK && step < long {
-            step *= 1.5;
-        }
-        let grid = player_drawing::grid_lines(&ops, size, step);
-        let mut arrows = Vec::new();
-        let coarse = step * 2.0;
-        let mut y = coarse / 2.0;
-        while y < f64::from(size.1) {
-            let mut x = coarse / 2.0;
-            while x < f64::from(size.0) {
-                let a = Point::new(x, y);
-                arrows.push((a, player_drawing::push(&ops, a)));
-                x += coarse;
-            }
-            y += coarse;
-        }
-        let (c, r) = self.editor.explain.probe_circle(design);
-        let probe = player_drawing::probe(&ops, c, r);
-        Some(ExplainGeometry {
-            grid,
-            arrows,
-            probe,
-        })
     }
 }

@@ -1,8 +1,9 @@
 //! What the step player draws over the sheet: the tool of the step easing in, moving
 //! (the comb crossing the tank, the stylus tip along its path, a drop growing), and
-//! the explain view's geometry — a deformation grid pushed forward through the step (or
-//! through every step up to it), displacement arrows, and the area probe.
+//! the explain view's geometry (src/marbling/explain_geometry.rs) — the deformation grid,
+//! displacement arrows and the area probe.
 
+use crate::marbling::explain_geometry::{ExplainGeometry, arrow_tip};
 use crate::marbling::footprint::{circle, line, polyline, screen};
 use crate::marbling::view::ViewState;
 use egui::{Color32, Painter, Pos2, Rect, Stroke};
@@ -128,157 +129,44 @@ pub fn draw_tool(
     }
 }
 
-/// Pushes `p` forward through `ops` in order.
-pub fn push(ops: &[Op], p: Point) -> Point {
-    ops.iter().fold(p, |p, op| op.forward(p))
-}
-
-/// A regular grid over a `size` sheet (lines `step` apart, sampled every `step/8`),
-/// each line pushed forward through `ops`.
-pub fn grid_lines(ops: &[Op], size: (u32, u32), step: f64) -> Vec<Vec<Point>> {
-    let (w, h) = (f64::from(size.0), f64::from(size.1));
-    let sample = step / 8.0;
-    let mut lines = Vec::new();
-    let line_along = |from: Point, to: Point| -> Vec<Point> {
-        let n = ((to - from).hypot() / sample).ceil().max(1.0) as usize;
-        (0..=n)
-            .map(|i| push(ops, from.lerp(to, i as f64 / n as f64)))
-            .collect()
-    };
-    let mut x = 0.0;
-    while x <= w + 1e-9 {
-        lines.push(line_along(Point::new(x, 0.0), Point::new(x, h)));
-        x += step;
-    }
-    let mut y = 0.0;
-    while y <= h + 1e-9 {
-        lines.push(line_along(Point::new(0.0, y), Point::new(w, y)));
-        y += step;
-    }
-    lines
-}
-
-/// The area enclosed by a closed polygon (shoelace formula), design px².
-pub fn polygon_area(pts: &[Point]) -> f64 {
-    let n = pts.len();
-    (0..n)
-        .map(|i| {
-            let (a, b) = (pts[i], pts[(i + 1) % n]);
-            a.x * b.y - b.x * a.y
-        })
-        .sum::<f64>()
-        .abs()
-        / 2.0
-}
-
-/// A circle of `radius` around `c` as a 256-gon, and the same pushed through `ops`.
-pub fn probe(ops: &[Op], c: Point, radius: f64) -> (Vec<Point>, Vec<Point>) {
-    let before: Vec<Point> = (0..256)
-        .map(|i| {
-            let a = std::f64::consts::TAU * f64::from(i) / 256.0;
-            c + Vec2::new(a.cos(), a.sin()) * radius
-        })
-        .collect();
-    let after = before.iter().map(|p| push(ops, *p)).collect();
-    (before, after)
-}
-
-/// Draws the explain view's geometry: the pushed grid, arrows from a coarse grid to
-/// where the step moves them, and the probe before (thin) and after (bold).
-pub fn draw_explain(
-    painter: &Painter,
-    rect: Rect,
-    view: &ViewState,
-    grid: &[Vec<Point>],
-    arrows: &[(Point, Point)],
-    probe: &(Vec<Point>, Vec<Point>),
-) {
+/// Draws the explain view's geometry: the pushed grid, arrows from coarse nodes toward
+/// where the ops send them (at most one grid square long, with heads), and the probe
+/// before (thin, white) and after (bold).
+pub fn draw_explain(painter: &Painter, rect: Rect, view: &ViewState, g: &ExplainGeometry) {
     let at = |p: Point| screen(rect, view, p);
     let grid_stroke = Stroke::new(1.0, Color32::from_rgba_unmultiplied(20, 20, 20, 170));
-    for l in grid {
+    for l in &g.grid {
         painter.add(egui::Shape::line(
             l.iter().map(|p| at(*p)).collect(),
             grid_stroke,
         ));
     }
     let arrow_stroke = Stroke::new(1.5, Color32::from_rgb(200, 30, 30));
-    for (a, b) in arrows {
-        let (pa, pb) = (at(*a), at(*b));
-        if (pb - pa).length() < 2.0 {
+    for (a, b) in &g.arrows {
+        let (pa, pb) = (at(*a), at(arrow_tip(*a, *b, g.spacing)));
+        let v = pb - pa;
+        let len = v.length();
+        if len < 2.0 {
             painter.circle_filled(pa, 1.5, arrow_stroke.color);
             continue;
         }
-        painter.arrow(pa, pb - pa, arrow_stroke);
+        // A head of fixed size (at most half the arrow), readable on a projector.
+        let head = (len / 2.0).min(7.0);
+        let back = -v / len * head;
+        let side = egui::vec2(-back.y, back.x) * 0.5;
+        painter.line_segment([pa, pb], arrow_stroke);
+        painter.add(egui::Shape::convex_polygon(
+            vec![pb, pb + back + side, pb + back - side],
+            arrow_stroke.color,
+            Stroke::NONE,
+        ));
     }
-    let (before, after) = probe;
-    let closed = |pts: &[Point]| {
-        let mut v: Vec<Pos2> = pts.iter().map(|p| at(*p)).collect();
-        v.extend(v.first().copied());
-        v
-    };
+    let (before, after) = &g.probe;
     painter.add(egui::Shape::line(
-        closed(before),
+        before.iter().map(|p| at(*p)).collect(),
         Stroke::new(1.0, Color32::WHITE),
     ));
-    polyline(painter, closed(after));
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use marbling_core::{Drop, Jiggle, Rgb8, Tine};
-
-    fn tine() -> Op {
-        Op::Tine(Tine {
-            origin: Point::new(0.0, 50.0),
-            direction: Vec2::new(1.0, 0.0),
-            alpha: 30.0,
-            lambda: 6.0,
-        })
-    }
-
-    /// The grid of a tine step: every node is where the tine's forward map sends the
-    /// regular node (checked against the formula αλ/(d+λ), not the op's own code).
-    #[test]
-    fn a_tine_steps_grid_nodes_follow_the_forward_map() {
-        let lines = grid_lines(&[tine()], (200, 100), 25.0);
-        assert_eq!(lines.len(), 9 + 5);
-        // Vertical line x = 50 (index 2), sampled every 25/8 px from y = 0.
-        for (i, p) in lines[2].iter().enumerate() {
-            let y = i as f64 * 25.0 / 8.0;
-            let d = (y - 50.0).abs();
-            let shift = 30.0 * 6.0 / (d + 6.0);
-            assert!(
-                (p.x - (50.0 + shift)).abs() < 1e-9 && (p.y - y).abs() < 1e-9,
-                "{p:?}"
-            );
-        }
-        // A horizontal line slides along itself: its nodes stay on it.
-        assert!(lines[9 + 2].iter().all(|p| (p.y - 50.0).abs() < 1e-9));
-    }
-
-    #[test]
-    fn the_probe_keeps_its_area_through_a_drop_and_a_jiggle_compresses_it() {
-        let drop = Op::Drop(Drop {
-            center: Point::new(40.0, 50.0),
-            radius: 20.0,
-            color: Rgb8::new(0, 0, 0),
-        });
-        let (before, after) = probe(&[drop, tine()], Point::new(70.0, 50.0), 10.0);
-        let (a0, a1) = (polygon_area(&before), polygon_area(&after));
-        assert!((a0 - std::f64::consts::PI * 100.0).abs() < 0.1, "{a0}");
-        assert!((a1 / a0 - 1.0).abs() < 2e-3, "area changed: {a0} → {a1}");
-        let jiggle = Op::Jiggle(Jiggle {
-            angle: 0.0,
-            wavelength: 100.0,
-            along: 12.0,
-            across: 0.0,
-            phase: 0.0,
-        });
-        // At φ = 0 the Jacobian is 1 + kA = 1.754: a small probe there grows by it.
-        let (b0, b1) = probe(&[jiggle], Point::new(0.0, 50.0), 1.0);
-        let ratio = polygon_area(&b1) / polygon_area(&b0);
-        let k = std::f64::consts::TAU / 100.0;
-        assert!((ratio - (1.0 + k * 12.0)).abs() < 0.01, "{ratio}");
+    for piece in after {
+        polyline(painter, piece.iter().map(|p| at(*p)).collect());
     }
 }

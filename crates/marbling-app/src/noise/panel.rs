@@ -65,18 +65,22 @@ impl MarblingApp {
     /// The noise panel.
     pub(crate) fn noise_section(&mut self, ui: &mut egui::Ui) {
         ui.label(RichText::new("Noise").strong());
+        let mut types = Vec::new();
         let (controls, zoom_box) = self.editor.noise.edit_in(|s| {
             let shown = s.spec.source.type_name();
-            egui::ComboBox::from_label("noise")
+            let combo = egui::ComboBox::from_label("noise")
                 .selected_text(shown)
                 .show_ui(ui, |ui| {
                     // A product (cross-hatching) is read from JSON; it has no sliders here.
                     for &t in NOISE_TYPES.iter().filter(|t| **t != "product") {
-                        if ui.selectable_label(t == shown, t).clicked() && t != shown {
+                        let r = ui.selectable_label(t == shown, t);
+                        if r.clicked() && t != shown {
                             s.set_type(t);
                         }
+                        types.push((t, r));
                     }
                 });
+            types.push(("", combo.response));
             noise_parameters(ui, &mut s.spec);
             let mut controls = crate::noise::controls::transfer_section(ui, &mut s.spec);
             controls.extend(crate::noise::controls::tile_section(ui, s));
@@ -99,6 +103,13 @@ impl MarblingApp {
         });
         for (name, response) in &controls {
             self.control(*name, response);
+        }
+        // `noise-type` opens the list; `noise-type-gabor` and so on are its entries.
+        for (t, response) in &types {
+            match *t {
+                "" => self.control("noise-type", response),
+                t => self.control(format!("noise-type-{t}"), response),
+            }
         }
         self.control("noise-zoom-independent", &zoom_box);
         self.noise_data_section(ui);

@@ -10,6 +10,9 @@ pub const PORTRAIT_MAX_WIDTH: f32 = 820.0;
 pub const LANDSCAPE_MAX_HEIGHT: f32 = 500.0;
 /// Smallest height and width of a control in the touch layouts, CSS px.
 pub const TOUCH_TARGET: f32 = 44.0;
+/// The desktop side panel's width, points: one width whatever its content (rows that
+/// need more wrap), so picking a tool never moves the canvas.
+pub const PANEL_WIDTH: f32 = 300.0;
 /// The open bottom sheet (tabs and content) takes at most this share of the screen's
 /// height, so the canvas keeps more than half of it with the status bar.
 pub const SHEET_MAX_FRACTION: f32 = 0.34;
