@@ -69,12 +69,16 @@ pub enum Action {
 impl MarblingApp {
     /// Carries out `action`: the only place where the design and its history change.
     pub(crate) fn apply(&mut self, action: Action) {
-        // Only a change of the document ends the start-up design's pristine state.
+        // Only a change of the document ends the start-up design's pristine state, and
+        // the status line's message about the one before.
         let pristine = match action {
             Action::SetMode(_) | Action::Play(_) | Action::Seek { .. } | Action::View(_) => {
                 self.editor.pristine
             }
-            _ => std::mem::take(&mut self.editor.pristine),
+            _ => {
+                self.panels.message = None;
+                std::mem::take(&mut self.editor.pristine)
+            }
         };
         let shown_size = self.editor.shown.size();
         // An edit of the same document: the design before it, with the op it added,
@@ -391,6 +395,23 @@ mod tests {
         );
         assert_eq!(a.editor.history.design(), &d);
         assert!(!a.session.autosave_pending);
+    }
+
+    /// A status message is about the last thing done: the next edit takes it away (an
+    /// error too), while stepping the player or viewing a step keeps it.
+    #[test]
+    fn a_status_message_goes_at_the_next_edit() {
+        let mut a = app();
+        a.apply(Action::Commit(vec![spray(1.0)]));
+        a.info("opened Stone (battal)");
+        a.apply(Action::View(Some(0)));
+        a.apply(Action::View(None));
+        assert!(a.panels.message.is_some(), "viewing a step is not an edit");
+        a.apply(Action::Commit(vec![spray(2.0)]));
+        assert!(a.panels.message.is_none(), "the drop after the opening");
+        a.error("share link: not valid base64url");
+        a.apply(Action::Undo);
+        assert!(a.panels.message.is_none(), "an undo after an error");
     }
 
     #[test]

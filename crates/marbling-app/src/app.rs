@@ -21,8 +21,16 @@ use std::sync::Arc;
 pub struct Message {
     /// What happened.
     pub text: String,
-    /// True for problems (shown in red).
+    /// True for problems (shown in red until the next edit; other news goes after
+    /// [`Message::SHOWN_S`] too).
     pub error: bool,
+    /// When it was first shown (egui's clock, seconds).
+    pub since: Option<f64>,
+}
+
+impl Message {
+    /// How long news other than an error stays in the status line, seconds.
+    pub const SHOWN_S: f64 = 6.0;
 }
 
 /// A tool being dragged on the canvas.
@@ -269,6 +277,7 @@ impl MarblingApp {
         self.panels.message = Some(Message {
             text: text.into(),
             error: true,
+            since: None,
         });
     }
 
@@ -276,6 +285,7 @@ impl MarblingApp {
         self.panels.message = Some(Message {
             text: text.into(),
             error: false,
+            since: None,
         });
     }
 

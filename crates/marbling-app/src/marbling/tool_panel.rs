@@ -23,7 +23,11 @@ impl MarblingApp {
         let s = &mut self.prefs.settings;
         match self.prefs.tool {
             ToolKind::Drop => {
-                ui.label("Click to drop; hold to grow.");
+                ui.label(if self.panels.layout.touch() {
+                    "Tap to drop; hold to grow."
+                } else {
+                    "Click to drop; hold to grow."
+                });
                 ui.add(
                     Slider::new(&mut s.drop_radius, 1.0..=300.0)
                         .text("radius")

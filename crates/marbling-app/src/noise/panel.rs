@@ -281,7 +281,7 @@ impl MarblingApp {
                     ui.label(format!("exporting… {:.0} %", 100.0 * e.progress()));
                 }
                 None => {
-                    let export = ui.button("Export PNG").on_hover_text(
+                    let export = ui.button("Export noise PNG").on_hover_text(
                         "The whole spec at this size (a tileable noise repeats over it)",
                     );
                     self.control("noise-export-png", &export);

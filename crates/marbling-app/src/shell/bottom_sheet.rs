@@ -94,6 +94,10 @@ impl MarblingApp {
 
     fn sheet_content(&mut self, ui: &mut egui::Ui, frame: &mut eframe::Frame) {
         let tab = self.shown_tab();
+        if tab == SheetTab::Tools {
+            // Undo beside the tools, where a phone's user draws.
+            ui.horizontal(|ui| self.undo_redo(ui));
+        }
         for (section, rule) in sections::shown(self.editor.mode, Some(tab)) {
             if rule {
                 ui.separator();

@@ -55,7 +55,8 @@ const fn row(section: Section, marbling: bool, noise: bool, tab: SheetTab, group
 /// Every section, in panel order.
 const ROWS: [Row; 10] = [
     row(Section::File, true, true, SheetTab::Files, 0),
-    row(Section::Export, true, true, SheetTab::Files, 1),
+    // The noise playground exports its own PNG (one Export PNG per tab).
+    row(Section::Export, true, false, SheetTab::Files, 1),
     row(Section::Noise, false, true, SheetTab::Noise, 2),
     row(Section::Surface, true, false, SheetTab::Tools, 3),
     row(Section::Tool, true, false, SheetTab::Tools, 3),
@@ -109,7 +110,7 @@ mod tests {
         );
         assert_eq!(
             shown(Mode::Noise, None),
-            [(File, false), (Export, true), (Noise, true), (Recent, true)]
+            [(File, false), (Noise, true), (Recent, true)]
         );
     }
 

@@ -4,7 +4,7 @@
 
 use crate::INK_SETS;
 use crate::action::Action;
-use crate::app::MarblingApp;
+use crate::app::{MarblingApp, Message};
 use crate::platform;
 use crate::shell::mode::Mode;
 use crate::shell::sections::{self, Section};
@@ -272,23 +272,28 @@ impl MarblingApp {
         });
     }
 
+    /// Undo and Redo (in the History section, and beside the tools on a phone).
+    pub(crate) fn undo_redo(&mut self, ui: &mut egui::Ui) {
+        let undo = ui
+            .add_enabled(self.editor.history.can_undo(), egui::Button::new("Undo"))
+            .on_hover_text("Ctrl/Cmd+Z: takes the last gesture back");
+        self.control("undo", &undo);
+        if undo.clicked() {
+            self.apply(Action::Undo);
+        }
+        let redo = ui
+            .add_enabled(self.editor.history.can_redo(), egui::Button::new("Redo"))
+            .on_hover_text("Ctrl/Cmd+Shift+Z");
+        self.control("redo", &redo);
+        if redo.clicked() {
+            self.apply(Action::Redo);
+        }
+    }
+
     pub(crate) fn history_section(&mut self, ui: &mut egui::Ui) {
         ui.label(RichText::new("History").strong());
         ui.horizontal(|ui| {
-            let undo = ui
-                .add_enabled(self.editor.history.can_undo(), egui::Button::new("Undo"))
-                .on_hover_text("Ctrl/Cmd+Z: takes the last gesture back");
-            self.control("undo", &undo);
-            if undo.clicked() {
-                self.apply(Action::Undo);
-            }
-            let redo = ui
-                .add_enabled(self.editor.history.can_redo(), egui::Button::new("Redo"))
-                .on_hover_text("Ctrl/Cmd+Shift+Z");
-            self.control("redo", &redo);
-            if redo.clicked() {
-                self.apply(Action::Redo);
-            }
+            self.undo_redo(ui);
             let playing = self.editor.playback.is_some();
             let play = ui
                 .add_enabled(
@@ -301,16 +306,49 @@ impl MarblingApp {
                 self.apply(Action::Play(!playing));
             }
         });
+        if self.editor.landing && self.editor.pristine {
+            // The start-up design behind the gallery is nobody's history yet.
+            ui.label("Pick a pattern in the gallery, or start a new sheet: its steps show here.");
+            return;
+        }
         let n = self.editor.history.steps().len();
-        let shown = self.editor.history.shown_steps();
+        // The player's step while it is open, else the step viewed.
+        let shown = match self.editor.playback {
+            Some(p) => p.current_step().map_or(0, |k| k + 1),
+            None => self.editor.history.shown_steps(),
+        };
         let mut clicked = None;
+        let mut redo_to = None;
         let mut rows_drawn = Vec::new();
+        // Undone steps stay listed, greyed, until a new edit drops them: a click on one
+        // redoes up to it.
+        let undone: Vec<String> = self
+            .editor
+            .history
+            .undone()
+            .map(|s| s.label.clone())
+            .collect();
+        let weak = ui.visuals().weak_text_color();
         egui::ScrollArea::vertical()
             .max_height(124.0)
             .id_salt("history")
             .stick_to_bottom(true)
-            .show_rows(ui, 18.0, n + 1, |ui, rows| {
+            .show_rows(ui, 18.0, n + 1 + undone.len(), |ui, rows| {
                 for i in rows {
+                    if i > n {
+                        let j = i - n - 1;
+                        let r = ui
+                            .selectable_label(
+                                false,
+                                RichText::new(format!("{i}. {}", undone[j])).color(weak),
+                            )
+                            .on_hover_text("Undone: click to redo up to here");
+                        if r.clicked() {
+                            redo_to = Some(j + 1);
+                        }
+                        rows_drawn.push((format!("redo-step-{}", j + 1), r));
+                        continue;
+                    }
                     let label = if i == 0 {
                         "start".to_owned()
                     } else {
@@ -328,6 +366,9 @@ impl MarblingApp {
         }
         if let Some(k) = clicked {
             self.apply(Action::View(Some(k)));
+        }
+        for _ in 0..redo_to.unwrap_or(0) {
+            self.apply(Action::Redo);
         }
         if self.editor.history.is_viewing_earlier() {
             ui.label(
@@ -468,14 +509,42 @@ impl MarblingApp {
     }
 
     pub(crate) fn status_bar(&mut self, ui: &mut egui::Ui) {
+        let now = ui.input(|i| i.time);
+        if let Some(m) = &mut self.panels.message {
+            let since = *m.since.get_or_insert(now);
+            if !m.error {
+                if now - since > Message::SHOWN_S {
+                    self.panels.message = None;
+                } else {
+                    // Gone on time even when nothing else moves.
+                    ui.ctx()
+                        .request_repaint_after(std::time::Duration::from_secs_f64(
+                            Message::SHOWN_S - (now - since) + 0.05,
+                        ));
+                }
+            }
+        }
+        // The live preview's note, only while the preview is on screen (a drag, or an
+        // exact frame still being drawn).
+        let previewing = self.editor.active.is_some()
+            || self
+                .rendering
+                .status
+                .lock()
+                .ok()
+                .is_some_and(|s| s.progress.is_some_and(|p| p < 1.0));
         ui.horizontal(|ui| {
             let (w, h) = self.editor.shown.size();
-            ui.label(format!(
-                "{w}×{h} · {} ops · {}",
-                self.editor.shown.op_count(),
-                self.rendering.backend
-            ));
-            if self.rendering.fast_paint.preview_reduced() {
+            let what = match self.editor.mode {
+                Mode::Noise => format!(
+                    "{} noise",
+                    self.editor.noise.settings().spec.source.type_name()
+                ),
+                Mode::Marbling if self.editor.landing => "the gallery".to_owned(),
+                Mode::Marbling => format!("{} ops", self.editor.shown.op_count()),
+            };
+            ui.label(format!("{w}×{h} · {what} · {}", self.rendering.backend));
+            if previewing && self.rendering.fast_paint.preview_reduced() {
                 ui.label("· preview 1 sample/px").on_hover_text(
                     "Frames came slower than 30 per second while dragging, so the live \
                      preview takes one sample per pixel; released ops are still rendered \

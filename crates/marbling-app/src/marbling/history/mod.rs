@@ -395,6 +395,11 @@ impl History {
         }
     }
 
+    /// The undone steps in the order Redo brings them back (the next one first).
+    pub fn undone(&self) -> impl Iterator<Item = &Step> {
+        self.undone.iter().rev()
+    }
+
     /// True when there is something to undo.
     pub fn can_undo(&self) -> bool {
         !self.steps.is_empty()

@@ -50,7 +50,11 @@ fn a_stroke_is_one_step_undone_and_redone_whole() {
     assert!(h.undo());
     assert_eq!(xs(h.design()), vec![0.0]);
     assert!(h.design().gestures.is_empty());
+    // The undone steps, listed greyed in the panel, in the order Redo brings them.
+    let undone: Vec<&str> = h.undone().map(|s| s.label.as_str()).collect();
+    assert_eq!(undone, ["spray stroke, 340 droplets", "rake ↓ 9 tines"]);
     assert!(h.redo() && h.redo() && !h.redo());
+    assert_eq!(h.undone().count(), 0);
     assert_eq!(h.design(), &full);
 }
 
