@@ -24,9 +24,10 @@ impl MarblingApp {
         let size = [f64::from(rect.width()), f64::from(rect.height())];
         let ppp = f64::from(ui.ctx().pixels_per_point());
         // Refit, unless the user zoomed or panned, on a new window size or pixel ratio (a
-        // rotated phone, a hi-DPI page's first frames) and when the canvas grows or
-        // shrinks by more than a line of text (the player, Explain or the bottom sheet
-        // opened or closed), not when a caption wraps to one more line.
+        // rotated phone, a hi-DPI page's first frames), when the canvas grows or shrinks
+        // by more than a line of text (the player, Explain or the bottom sheet opened or
+        // closed), and when it shrinks so that the sheet no longer fits (the status line
+        // took a second row); not when it grows by a line.
         let window = ui.ctx().content_rect().size();
         let canvas_key = [
             f64::from(window.x),
@@ -38,10 +39,18 @@ impl MarblingApp {
         let refit = match (self.editor.view, self.editor.fit) {
             (None, _) => true,
             (Some(v), Some((fitted, key))) => {
+                let (w, h) = self.editor.shown.size();
+                let (tl, br) = (
+                    v.to_screen(Point::ZERO),
+                    v.to_screen(Point::new(f64::from(w), f64::from(h))),
+                );
+                let cut =
+                    tl[0] < -0.5 || tl[1] < -0.5 || br[0] > size[0] + 0.5 || br[1] > size[1] + 0.5;
                 v == fitted
                     && (key[..3] != canvas_key[..3]
                         || (key[3] - size[0]).abs() > REFIT_PT
-                        || (key[4] - size[1]).abs() > REFIT_PT)
+                        || (key[4] - size[1]).abs() > REFIT_PT
+                        || cut)
             }
             (Some(_), None) => false,
         };

@@ -171,10 +171,7 @@ impl View3dWindow {
             }
         });
         ui.label(
-            egui::RichText::new(
-                "Drag to turn · click to centre a spot · wheel or pinch to zoom · double-click to reset",
-            )
-                .small(),
+            "Drag to turn · click to centre a spot · wheel or pinch to zoom · double-click to reset",
         );
         let Some(rs) = frame.wgpu_render_state() else {
             ui.label("The 3D view needs the GPU renderer.");

@@ -533,7 +533,8 @@ impl MarblingApp {
                 .lock()
                 .ok()
                 .is_some_and(|s| s.progress.is_some_and(|p| p < 1.0));
-        ui.horizontal(|ui| {
+        // Wrapped: on a phone the zoom, *fit* and the message take a second row.
+        ui.horizontal_wrapped(|ui| {
             let (w, h) = self.editor.shown.size();
             let what = match self.editor.mode {
                 Mode::Noise => format!(
