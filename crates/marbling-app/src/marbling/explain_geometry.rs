@@ -101,6 +101,10 @@ pub struct ExplainGeometry {
     pub complete: bool,
     /// The window's `first_of` (only the first drops of a step pushed).
     pub first_of: Option<(usize, usize)>,
+    /// How much of the pushed grid lies on the sheet, as a share of the regular grid's
+    /// length, and whether any of the probe after does (ink laid later can push nearly
+    /// all of the older paper off it).
+    pub on_sheet: (f64, bool),
 }
 
 impl ExplainGeometry {
@@ -218,7 +222,7 @@ impl ExplainGeometry {
         // the whole way): the ring's every point still bounds the area.
         let probe_areas = complete.then(|| (polygon_area(&before), polygon_area(&ring)));
         let after = pieces(&ring.iter().map(|p| (0.0, *p)).collect::<Vec<_>>());
-        let grid = pushed.iter().flat_map(|p| pieces(p)).collect();
+        let grid: Vec<Vec<Point>> = pushed.iter().flat_map(|p| pieces(p)).collect();
         let mut arrows = Vec::new();
         let coarse = spacing * 2.0;
         let mut y = coarse / 2.0;
@@ -231,7 +235,23 @@ impl ExplainGeometry {
             }
             y += coarse;
         }
+        let inside = |p: &Point| (0.0..=w).contains(&p.x) && (0.0..=h).contains(&p.y);
+        let regular: f64 = curves[..curves.len() - 1]
+            .iter()
+            .map(|cv| match cv.kind {
+                Source::Line(a, b) => (b - a).hypot(),
+                Source::Circle(..) => 0.0,
+            })
+            .sum();
+        let shown: f64 = grid
+            .iter()
+            .flat_map(|l| l.windows(2))
+            .filter(|s| inside(&s[0]) && inside(&s[1]))
+            .map(|s| (s[1] - s[0]).hypot())
+            .sum();
+        let on_sheet = (shown / regular, after.iter().flatten().any(inside));
         Self {
+            on_sheet,
             grid,
             spacing,
             arrows,
@@ -446,6 +466,28 @@ mod tests {
         assert_eq!(w.ops[FIRST_DROPS], tine());
         let few = Window::step(&drops[..3]);
         assert_eq!((few.ops.len(), few.first_of), (3, None));
+    }
+
+    /// Chevron's 288 drops cover more than the sheet: through every step so far less
+    /// than 1 % of the grid and none of the probe stay on it (and the view says so);
+    /// its first step's first drops keep most of them on it.
+    #[test]
+    fn chevrons_drops_push_the_whole_grid_off_the_sheet() {
+        let design = marbling_core::patterns::find("chevron")
+            .and_then(|p| p.design(&Default::default()))
+            .expect("chevron");
+        let size = (design.width, design.height);
+        let probe = (Point::new(320.0, 200.0), 40.0);
+        let all = ExplainGeometry::new(&Window::all(&design.ops), size, 2.0, probe);
+        assert!(
+            all.on_sheet.0 < 0.01 && !all.on_sheet.1,
+            "{:?}",
+            all.on_sheet
+        );
+        let bounds = design.step_bounds();
+        let first = Window::step(&design.ops[..bounds[1]]);
+        let g = ExplainGeometry::new(&first, size, 2.0, probe);
+        assert!(g.on_sheet.0 > 0.8 && g.on_sheet.1, "{:?}", g.on_sheet);
     }
 
     /// Every step of every pattern, alone and through every step so far, at the fitted

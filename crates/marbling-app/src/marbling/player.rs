@@ -309,6 +309,15 @@ impl MarblingApp {
             if !g.complete {
                 shows.push_str(" Parts stretched thinner than the view shows are left out.");
             }
+            let (grid_share, probe_shown) = g.on_sheet;
+            if grid_share < 0.02 {
+                shows.push_str(
+                    " The ink laid since has pushed nearly all of the grid off the sheet.",
+                );
+            }
+            if !probe_shown {
+                shows.push_str(" The probe has been pushed off the sheet.");
+            }
             ui.label(shows);
             ui.label(match g.probe_areas {
                 Some((a0, a1)) => format!(
