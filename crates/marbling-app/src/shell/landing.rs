@@ -151,100 +151,117 @@ impl MarblingApp {
         if self.panels.layout.touch() {
             crate::shell::layout::touch_spacing(ui);
         }
-        egui::ScrollArea::vertical().show(ui, |ui| {
-            ui.add_space(8.0);
-            ui.horizontal(|ui| {
-                ui.label(
-                    RichText::new("Start from a traditional pattern")
-                        .heading()
-                        .color(LIGHT),
-                );
-                let back = ui.button("Back to the editor");
-                drawn_controls.push(("gallery-close".to_owned(), back.clone()));
-                close = back.clicked();
-            });
-            ui.label(
-                RichText::new(
-                    "Each pattern is a recipe made step by step the way a marbler makes it; \
-                     it opens as an editable design, and Play walks through its making.",
-                )
-                .color(LIGHT),
-            );
-            ui.add_space(8.0);
-            let gap = ui.spacing().item_spacing.x;
-            let cols = (((ui.available_width() + gap) / (CARD.x + gap)).floor() as usize).max(1);
-            let cards: Vec<Option<usize>> = std::iter::once(None)
-                .chain((0..shown.len()).map(Some))
-                .collect();
-            for row in cards.chunks(cols) {
+        // The scroll bar always shows: a cut-off last row says there is more below.
+        egui::ScrollArea::vertical()
+            .scroll_bar_visibility(egui::scroll_area::ScrollBarVisibility::AlwaysVisible)
+            .show(ui, |ui| {
+                ui.add_space(8.0);
                 ui.horizontal(|ui| {
-                    for card in row {
-                        ui.vertical(|ui| {
-                            ui.set_width(CARD.x);
-                            let r = match card {
-                                None => {
-                                    let (rect, r) = ui.allocate_exact_size(CARD, Sense::click());
-                                    let paper = crate::app::blank(crate::app::NEW_SIZE).background;
-                                    ui.painter().rect_filled(
-                                        rect,
-                                        2,
-                                        Color32::from_rgb(paper.r, paper.g, paper.b),
-                                    );
-                                    ui.painter().text(
-                                        rect.center(),
-                                        egui::Align2::CENTER_CENTER,
-                                        "+",
-                                        egui::FontId::proportional(40.0),
-                                        Color32::from_gray(120),
-                                    );
-                                    ui.label(RichText::new("Blank sheet").strong().color(LIGHT));
-                                    drawn_controls.push(("gallery-blank".to_owned(), r.clone()));
-                                    blank |= r.clicked();
-                                    r
-                                }
-                                Some(n) => {
-                                    let r = match texture {
-                                        Some(id) => ui.add(
-                                            egui::Image::new((id, CARD))
-                                                .uv(cell_uv(*n, shown[*n].size))
-                                                .sense(Sense::click()),
-                                        ),
-                                        None => {
-                                            // The atlas is on its way: the paper colour.
-                                            let (rect, r) =
-                                                ui.allocate_exact_size(CARD, Sense::click());
-                                            let p = shown[*n].paper;
-                                            ui.painter().rect_filled(
-                                                rect,
-                                                2,
-                                                Color32::from_rgb(p.r, p.g, p.b),
-                                            );
-                                            r
-                                        }
-                                    };
-                                    ui.label(RichText::new(&shown[*n].name).color(LIGHT));
-                                    drawn_controls
-                                        .push((format!("gallery-{}", ids[*n]), r.clone()));
-                                    if r.clicked() {
-                                        open = Some(*n);
-                                    }
-                                    r
-                                }
-                            };
-                            if r.hovered() {
-                                ui.painter().rect_stroke(
-                                    r.rect.expand(1.0),
-                                    2,
-                                    ui.visuals().widgets.hovered.fg_stroke,
-                                    egui::StrokeKind::Outside,
-                                );
-                            }
-                        });
-                    }
+                    ui.label(
+                        RichText::new("Start from a traditional pattern")
+                            .heading()
+                            .color(LIGHT),
+                    );
+                    let back = ui.button("Back to the editor");
+                    drawn_controls.push(("gallery-close".to_owned(), back.clone()));
+                    close = back.clicked();
                 });
-                ui.add_space(6.0);
-            }
-        });
+                ui.label(
+                    RichText::new(
+                        "Each pattern is a recipe made step by step the way a marbler makes it; \
+                     it opens as an editable design, and Play walks through its making.",
+                    )
+                    .color(LIGHT),
+                );
+                ui.add_space(8.0);
+                let gap = ui.spacing().item_spacing.x;
+                let cols =
+                    (((ui.available_width() + gap) / (CARD.x + gap)).floor() as usize).max(1);
+                let cards: Vec<Option<usize>> = std::iter::once(None)
+                    .chain((0..shown.len()).map(Some))
+                    .collect();
+                for row in cards.chunks(cols) {
+                    ui.horizontal(|ui| {
+                        for card in row {
+                            ui.vertical(|ui| {
+                                ui.set_width(CARD.x);
+                                let r = match card {
+                                    None => {
+                                        let (rect, r) =
+                                            ui.allocate_exact_size(CARD, Sense::click());
+                                        let paper =
+                                            crate::app::blank(crate::app::NEW_SIZE).background;
+                                        ui.painter().rect_filled(
+                                            rect,
+                                            2,
+                                            Color32::from_rgb(paper.r, paper.g, paper.b),
+                                        );
+                                        ui.painter().text(
+                                            rect.center(),
+                                            egui::Align2::CENTER_CENTER,
+                                            "+",
+                                            egui::FontId::proportional(40.0),
+                                            Color32::from_gray(120),
+                                        );
+                                        ui.label(
+                                            RichText::new("Blank sheet").strong().color(LIGHT),
+                                        );
+                                        drawn_controls
+                                            .push(("gallery-blank".to_owned(), r.clone()));
+                                        blank |= r.clicked();
+                                        r
+                                    }
+                                    Some(n) => {
+                                        let r = match texture {
+                                            Some(id) => ui.add(
+                                                egui::Image::new((id, CARD))
+                                                    .uv(cell_uv(*n, shown[*n].size))
+                                                    .sense(Sense::click()),
+                                            ),
+                                            None => {
+                                                // The atlas is on its way: the paper colour,
+                                                // and a word saying so.
+                                                let (rect, r) =
+                                                    ui.allocate_exact_size(CARD, Sense::click());
+                                                let p = shown[*n].paper;
+                                                ui.painter().rect_filled(
+                                                    rect,
+                                                    2,
+                                                    Color32::from_rgb(p.r, p.g, p.b),
+                                                );
+                                                ui.painter().text(
+                                                    rect.center(),
+                                                    egui::Align2::CENTER_CENTER,
+                                                    "loading…",
+                                                    egui::FontId::proportional(14.0),
+                                                    Color32::from_gray(110),
+                                                );
+                                                r
+                                            }
+                                        };
+                                        ui.label(RichText::new(&shown[*n].name).color(LIGHT));
+                                        drawn_controls
+                                            .push((format!("gallery-{}", ids[*n]), r.clone()));
+                                        if r.clicked() {
+                                            open = Some(*n);
+                                        }
+                                        r
+                                    }
+                                };
+                                if r.hovered() {
+                                    ui.painter().rect_stroke(
+                                        r.rect.expand(1.0),
+                                        2,
+                                        ui.visuals().widgets.hovered.fg_stroke,
+                                        egui::StrokeKind::Outside,
+                                    );
+                                }
+                            });
+                        }
+                    });
+                    ui.add_space(6.0);
+                }
+            });
         for (name, r) in drawn_controls {
             self.control(name, &r);
         }
