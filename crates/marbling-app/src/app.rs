@@ -8,6 +8,7 @@ use crate::gpu::recovery::{self, LostFlag, ParkedState};
 use crate::marbling::history::Surface;
 use crate::marbling::tools::{Gesture, ToolKind};
 use crate::platform;
+use crate::shell::message::Message;
 use crate::shell::mode::Mode;
 use crate::state::{Editor, Hooks, Panels, Rendering, Session};
 use crate::store::links::{self, Link};
@@ -15,23 +16,6 @@ use crate::store::prefs::Prefs;
 use crate::store::{autosave, restore};
 use marbling_core::{Design, DesignError, Rgb8, share_fragment};
 use std::sync::Arc;
-
-/// A line shown in the status bar; errors also go to `data-error`.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Message {
-    /// What happened.
-    pub text: String,
-    /// True for problems (shown in red until the next edit; other news goes after
-    /// [`Message::SHOWN_S`] too).
-    pub error: bool,
-    /// When it was first shown (egui's clock, seconds).
-    pub since: Option<f64>,
-}
-
-impl Message {
-    /// How long news other than an error stays in the status line, seconds.
-    pub const SHOWN_S: f64 = 6.0;
-}
 
 /// A tool being dragged on the canvas.
 #[derive(Clone, Debug)]
@@ -274,19 +258,11 @@ impl MarblingApp {
     }
 
     pub(crate) fn error(&mut self, text: impl Into<String>) {
-        self.panels.message = Some(Message {
-            text: text.into(),
-            error: true,
-            since: None,
-        });
+        self.panels.message = Some(Message::error(text.into()));
     }
 
     pub(crate) fn info(&mut self, text: impl Into<String>) {
-        self.panels.message = Some(Message {
-            text: text.into(),
-            error: false,
-            since: None,
-        });
+        self.panels.message = Some(Message::info(text.into()));
     }
 
     /// Opens a design from document text; on failure the current design stays.

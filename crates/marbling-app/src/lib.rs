@@ -17,11 +17,12 @@ mod state;
 mod store;
 
 pub use action::Action;
-pub use app::{MarblingApp, Message};
+pub use app::MarblingApp;
 pub use automation::panic_guard;
 pub use gpu::{canvas_gpu, gallery_atlas, recovery};
 pub use marbling::history::History;
 pub use marbling::ink_sets::{INK_SETS, InkSet};
 pub use marbling::tools::{Gesture, ToolKind, ToolSettings, ops_for};
 pub use shell::gallery;
+pub use shell::message::Message;
 pub use store::export;

@@ -6,7 +6,7 @@
 //! `MarblingApp::apply` (src/action.rs).
 
 use crate::History;
-use crate::app::{ActiveGesture, Message, NEW_SIZE};
+use crate::app::{ActiveGesture, NEW_SIZE};
 use crate::gpu::canvas_gpu::{CanvasStatus, StandIn};
 use crate::gpu::gpu_errors::GpuErrors;
 use crate::gpu::recovery::LostFlag;
@@ -14,6 +14,7 @@ use crate::marbling::playback::Playback;
 use crate::marbling::shown::Shown;
 use crate::marbling::view::ViewState;
 use crate::platform::PickSlot;
+use crate::shell::message::Message;
 use crate::shell::mode::Mode;
 use crate::store::export::{ExportSize, PngExport};
 use crate::store::{prefs::Prefs, recent::Recent};

@@ -26,8 +26,8 @@ impl MarblingApp {
         // Refit, unless the user zoomed or panned, on a new window size or pixel ratio (a
         // rotated phone, a hi-DPI page's first frames), when the canvas grows or shrinks
         // by more than a line of text (the player, Explain or the bottom sheet opened or
-        // closed), and when it shrinks so that the sheet no longer fits (the status line
-        // took a second row); not when it grows by a line.
+        // closed), and when it shrinks so that the sheet no longer fits; not when it grows
+        // by a line, and not during a gesture.
         let window = ui.ctx().content_rect().size();
         let canvas_key = [
             f64::from(window.x),
@@ -46,7 +46,10 @@ impl MarblingApp {
                 );
                 let cut =
                     tl[0] < -0.5 || tl[1] < -0.5 || br[0] > size[0] + 0.5 || br[1] > size[1] + 0.5;
+                // Never under a finger: a gesture keeps the view it started with.
                 v == fitted
+                    && self.editor.active.is_none()
+                    && !self.editor.pinching
                     && (key[..3] != canvas_key[..3]
                         || (key[3] - size[0]).abs() > REFIT_PT
                         || (key[4] - size[1]).abs() > REFIT_PT

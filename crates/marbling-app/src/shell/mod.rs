@@ -7,6 +7,7 @@ pub(crate) mod fonts;
 pub mod gallery;
 pub(crate) mod landing;
 pub(crate) mod layout;
+pub(crate) mod message;
 pub(crate) mod mode;
 pub(crate) mod sections;
 pub(crate) mod shortcuts;

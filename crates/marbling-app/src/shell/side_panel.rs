@@ -4,7 +4,7 @@
 
 use crate::INK_SETS;
 use crate::action::Action;
-use crate::app::{MarblingApp, Message};
+use crate::app::MarblingApp;
 use crate::platform;
 use crate::shell::mode::Mode;
 use crate::shell::sections::{self, Section};
@@ -511,17 +511,13 @@ impl MarblingApp {
     pub(crate) fn status_bar(&mut self, ui: &mut egui::Ui) {
         let now = ui.input(|i| i.time);
         if let Some(m) = &mut self.panels.message {
-            let since = *m.since.get_or_insert(now);
-            if !m.error {
-                if now - since > Message::SHOWN_S {
-                    self.panels.message = None;
-                } else {
-                    // Gone on time even when nothing else moves.
-                    ui.ctx()
-                        .request_repaint_after(std::time::Duration::from_secs_f64(
-                            Message::SHOWN_S - (now - since) + 0.05,
-                        ));
-                }
+            let (current, again) = m.shown_at(now);
+            if let Some(s) = again {
+                ui.ctx()
+                    .request_repaint_after(std::time::Duration::from_secs_f64(s));
+            }
+            if !current {
+                self.panels.message = None;
             }
         }
         // The live preview's note, only while the preview is on screen (a drag, or an
@@ -533,8 +529,9 @@ impl MarblingApp {
                 .lock()
                 .ok()
                 .is_some_and(|s| s.progress.is_some_and(|p| p < 1.0));
-        // Wrapped: on a phone the zoom, *fit* and the message take a second row.
-        ui.horizontal_wrapped(|ui| {
+        // One row, always the same height (a second row would move the canvas's edge
+        // under the user's finger); the message comes last.
+        ui.horizontal(|ui| {
             let (w, h) = self.editor.shown.size();
             let what = match self.editor.mode {
                 Mode::Noise => format!(
