@@ -238,3 +238,13 @@ export async function dropFile(page, name, mime, bytes) {
     }
   }, { name, mime, data: Buffer.from(bytes).toString('base64') });
 }
+
+/** Every animation frame's time stamp, recorded by the page into `window.frameTimes`. */
+export function recordFrames() {
+  window.frameTimes = [];
+  const tick = (t) => {
+    window.frameTimes.push(t);
+    requestAnimationFrame(tick);
+  };
+  requestAnimationFrame(tick);
+}

@@ -7,7 +7,7 @@
 // 100 ms, and when the last such gap ended.
 //
 //   cd tests/browser && node noise-bench.mjs [webgpu|webgl2] [gabor,perlin,...] [seconds]
-import { attr, controls, launch } from './harness.mjs';
+import { attr, controls, launch, recordFrames } from './harness.mjs';
 
 const backend = process.argv[2] ?? 'webgl2';
 const types = (process.argv[3] ?? 'gabor,perlin,worley,curl').split(',');
@@ -27,14 +27,7 @@ try {
   for (const type of types) {
     const context = await browser.newContext({ viewport: { width: 1280, height: 800 }, deviceScaleFactor: 1 });
     const page = await context.newPage();
-    await page.addInitScript(() => {
-      window.frameTimes = [];
-      const tick = (t) => {
-        window.frameTimes.push(t);
-        requestAnimationFrame(tick);
-      };
-      requestAnimationFrame(tick);
-    });
+    await page.addInitScript(recordFrames);
     await page.goto(`${site.url}?landing=0`);
     await page.waitForFunction(() => document.body.dataset.ready === '1', null, { timeout: 600_000 });
     // The tab opens on Gabor noise: for Gabor the switch itself is what is timed.

@@ -12,7 +12,7 @@ import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
-import { MARBLING, attr, launch } from './harness.mjs';
+import { MARBLING, attr, launch, recordFrames } from './harness.mjs';
 
 const backend = process.argv[2] ?? 'webgpu';
 const counts = (process.argv[3] ?? '1000,5000,20000').split(',').map(Number);
@@ -26,14 +26,7 @@ try {
     const link = execFileSync(MARBLING, ['link', file, '--base', site.url], { maxBuffer: 64 << 20 }).toString().trim();
     const context = await browser.newContext({ viewport: { width: 1280, height: 900 }, deviceScaleFactor: 1 });
     const page = await context.newPage();
-    await page.addInitScript(() => {
-      window.frameTimes = [];
-      const tick = (t) => {
-        window.frameTimes.push(t);
-        requestAnimationFrame(tick);
-      };
-      requestAnimationFrame(tick);
-    });
+    await page.addInitScript(recordFrames);
     const start = Date.now();
     await page.goto(site.url + link.slice(link.indexOf('#')));
     // Loaded: the app has drawn its first frame with the design.

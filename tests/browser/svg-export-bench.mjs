@@ -5,7 +5,7 @@
 // the page was frozen at most).
 //
 //   cd tests/browser && node svg-export-bench.mjs [stone,serpentine,chevron]
-import { download, example, launch, linkFragment, openPage } from './harness.mjs';
+import { download, example, launch, linkFragment, openPage, recordFrames } from './harness.mjs';
 
 const names = (process.argv[2] ?? 'stone,serpentine,chevron').split(',');
 const { site, browser } = await launch('webgl2');
@@ -14,14 +14,7 @@ console.log('|---|---|---:|---:|---:|---:|---:|');
 for (const name of names) {
   const { design } = example(name);
   const { page, context } = await openPage(browser, site, linkFragment(design, `svg-bench-${name}`));
-  await page.evaluate(() => {
-    window.frameTimes = [];
-    const tick = (t) => {
-      window.frameTimes.push(t);
-      requestAnimationFrame(tick);
-    };
-    requestAnimationFrame(tick);
-  });
+  await page.evaluate(recordFrames);
   const from = await page.evaluate(() => performance.now());
   const start = Date.now();
   const svg = await download(page, 'export-svg');

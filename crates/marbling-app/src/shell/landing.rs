@@ -114,6 +114,26 @@ const LIGHT: Color32 = Color32::from_gray(225);
 /// A card's thumbnail size, points (16:10).
 const CARD: egui::Vec2 = vec2(176.0, 110.0);
 
+/// A card without a picture: its paper colour with `text` (`size` points) in the middle.
+fn plain_card(
+    ui: &mut egui::Ui,
+    paper: marbling_core::Rgb8,
+    text: &str,
+    size: f32,
+) -> egui::Response {
+    let (rect, r) = ui.allocate_exact_size(CARD, Sense::click());
+    ui.painter()
+        .rect_filled(rect, 2, Color32::from_rgb(paper.r, paper.g, paper.b));
+    ui.painter().text(
+        rect.center(),
+        egui::Align2::CENTER_CENTER,
+        text,
+        egui::FontId::proportional(size),
+        Color32::from_gray(115),
+    );
+    r
+}
+
 impl MarblingApp {
     /// Shows the gallery in place of the canvas.
     pub(crate) fn landing(&mut self, ui: &mut egui::Ui) {
@@ -187,22 +207,9 @@ impl MarblingApp {
                                 ui.set_width(CARD.x);
                                 let r = match card {
                                     None => {
-                                        let (rect, r) =
-                                            ui.allocate_exact_size(CARD, Sense::click());
                                         let paper =
                                             crate::app::blank(crate::app::NEW_SIZE).background;
-                                        ui.painter().rect_filled(
-                                            rect,
-                                            2,
-                                            Color32::from_rgb(paper.r, paper.g, paper.b),
-                                        );
-                                        ui.painter().text(
-                                            rect.center(),
-                                            egui::Align2::CENTER_CENTER,
-                                            "+",
-                                            egui::FontId::proportional(40.0),
-                                            Color32::from_gray(120),
-                                        );
+                                        let r = plain_card(ui, paper, "+", 40.0);
                                         ui.label(
                                             RichText::new("Blank sheet").strong().color(LIGHT),
                                         );
@@ -221,22 +228,7 @@ impl MarblingApp {
                                             None => {
                                                 // The atlas is on its way: the paper colour,
                                                 // and a word saying so.
-                                                let (rect, r) =
-                                                    ui.allocate_exact_size(CARD, Sense::click());
-                                                let p = shown[*n].paper;
-                                                ui.painter().rect_filled(
-                                                    rect,
-                                                    2,
-                                                    Color32::from_rgb(p.r, p.g, p.b),
-                                                );
-                                                ui.painter().text(
-                                                    rect.center(),
-                                                    egui::Align2::CENTER_CENTER,
-                                                    "loading…",
-                                                    egui::FontId::proportional(14.0),
-                                                    Color32::from_gray(110),
-                                                );
-                                                r
+                                                plain_card(ui, shown[*n].paper, "loading…", 14.0)
                                             }
                                         };
                                         ui.label(RichText::new(&shown[*n].name).color(LIGHT));
