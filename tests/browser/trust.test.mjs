@@ -9,6 +9,7 @@ import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import zlib from 'node:zlib';
+import { PNG } from 'pngjs';
 import {
   MARBLING, READY_MS, attr, clickControl, crop, decode, differing, dropFile, example,
   linkFragment, sharedBrowser, sheet, shootSheet, twoColourPng, waitOps, waitReady,
@@ -139,6 +140,48 @@ describe('trust: links, reloads, panics and data-ready on webgl2', () => {
     await context.close();
   });
 
+  test('an Undo shows the state it returns to at once, never half of each', async () => {
+    const { context, page, errors } = await firstVisit(linkFragment(GEL.design, 'gel-undo-look'));
+    const { width: w, height: h } = GEL.design;
+    const n = GEL.design.ops.length;
+    const previewReady = () => page.waitForFunction(() => document.body.dataset.previewReady === '1', null, { timeout: READY_MS });
+    await waitOps(page, n);
+    await previewReady();
+    const s = await sheet(page);
+    // A comb across the whole sheet: every row of the design moves.
+    await page.keyboard.press('4');
+    await page.mouse.move(s.x + 10 * s.scale, s.y + (h / 2) * s.scale);
+    await page.mouse.down();
+    for (let k = 1; k <= 12; k++) await page.mouse.move(s.x + (10 + k * (w - 20) / 12) * s.scale, s.y + (h / 2) * s.scale);
+    await page.mouse.up();
+    await waitOps(page, n + 1);
+    await previewReady();
+    const combed = await shootSheet(page, w, h);
+    await page.keyboard.press('Control+z');
+    await page.waitForFunction((k) => document.body.dataset.ops === String(k), n, { timeout: READY_MS });
+    const drawing = await attr(page, 'data-progress');
+    const dpr = await page.evaluate(() => devicePixelRatio);
+    const device = (v, round) => round(v * dpr) / dpr;
+    const clip = { x: device(s.x, Math.round), y: device(s.y, Math.round), width: device(w * s.scale, Math.floor), height: device(h * s.scale, Math.floor) };
+    const undone = decode(await page.screenshot({ clip, timeout: READY_MS }));
+    const after = await attr(page, 'data-progress');
+    // The preview's sampling: its cache holds 2 × 2 samples per screen pixel (no
+    // antialiasing), read back at the pixel's centre (their mean).
+    const cpuFile = tmp('undo-look.png');
+    execFileSync(MARBLING, ['render', GEL.file, '-o', cpuFile, '--scale', String(2 * s.scale * dpr), '--aa', 'none']);
+    const cpu = halve(decode(fs.readFileSync(cpuFile)));
+    const cw = Math.min(cpu.width, undone.width, combed.img.width), ch = Math.min(cpu.height, undone.height, combed.img.height);
+    const off = differing(crop(cpu, cw, ch), crop(undone, cw, ch), 48);
+    const combOff = differing(crop(cpu, cw, ch), crop(combed.img, cw, ch), 48);
+    console.log(`right after Ctrl+Z (the exact frame drawn to ${drawing ?? '0'}, then ${after ?? 'done'} after the shot): ${(100 * off).toFixed(2)} % of ${cw}×${ch} px differ from the CLI render of the state before the comb at the preview's sampling by > 48/255; the combed frame: ${(100 * combOff).toFixed(2)} %`);
+    assert.ok(off <= 0.03, `${(100 * off).toFixed(2)} % of the sheet right after Undo is not the state it returns to`);
+    // The comparator sees the comb.
+    assert.ok(combOff > 0.3, `the comb changed only ${(100 * combOff).toFixed(2)} % of the sheet`);
+    await waitOps(page, n);
+    assert.deepEqual(errors, []);
+    await context.close();
+  });
+
   test('a panic keeps the design and says so; the reload shows it', async () => {
     const { context, page } = await firstVisit(linkFragment(GEL.design, 'gel-panic'));
     const n = GEL.design.ops.length;
@@ -160,6 +203,22 @@ describe('trust: links, reloads, panics and data-ready on webgl2', () => {
 
   test('data-ready after a zoom means the exact frame of that view is on screen', () => readyAfterZoom(shared.browser, shared.site, 'webgl2'));
 });
+
+/** A decoded PNG at half its size, each pixel the mean of the 2 × 2 it stands for. */
+function halve(img) {
+  const w = img.width >> 1, h = img.height >> 1;
+  const out = new PNG({ width: w, height: h });
+  for (let y = 0; y < h; y++) {
+    for (let x = 0; x < w; x++) {
+      for (let c = 0; c < 4; c++) {
+        let sum = 0;
+        for (const [dx, dy] of [[0, 0], [1, 0], [0, 1], [1, 1]]) sum += img.data[((2 * y + dy) * img.width + 2 * x + dx) * 4 + c];
+        out.data[(y * w + x) * 4 + c] = Math.round(sum / 4);
+      }
+    }
+  }
+  return out;
+}
 
 /** A fresh profile (no autosave: a first visit) at `hash`, with its page errors. */
 async function freshVisit(browser, site, hash) {

@@ -3,6 +3,7 @@
 //! says what happens then (history step, refresh, autosave, recent designs, link).
 
 use crate::app::MarblingApp;
+use crate::gpu::canvas_gpu::StandIn;
 use crate::marbling::history::Surface;
 use crate::platform;
 use crate::shell::mode::Mode;
@@ -81,25 +82,24 @@ impl MarblingApp {
             }
         };
         let shown_size = self.editor.shown.size();
-        // An edit of the same document: the design before it, with the op it added,
-        // stands in while the new design's exact frame is drawn.
+        // An edit: the design before it, with the op it added, stands in while the new
+        // design's exact frame is drawn. Any other change of state (Undo, Redo, another
+        // document): an earlier state that looks the same, found once it is made.
         let stand_in = match &action {
             Action::Load { .. } | Action::NewSheet | Action::OpenRecent(_) => {
                 // A new document is edited at once: the gallery gives way.
                 self.editor.landing = false;
-                None
+                StandIn::other_state(None)
             }
-            Action::Commit(ops) => Some(crate::gpu::canvas_gpu::StandIn {
-                key: self.editor.key,
+            Action::Commit(ops) => StandIn {
+                key: Some(self.editor.key),
                 op: match ops.as_slice() {
                     [op] if crate::marbling::canvas::previewable(op) => Some(op.clone()),
                     _ => None,
                 },
-            }),
-            _ => Some(crate::gpu::canvas_gpu::StandIn {
-                key: self.editor.key,
-                op: None,
-            }),
+                paper: false,
+            },
+            _ => StandIn::other_state(None),
         };
         let changed = match action {
             Action::Commit(ops) => match self.editor.history.push_ops(ops) {
@@ -150,7 +150,7 @@ impl MarblingApp {
                 self.editor.playback = None;
                 self.refresh();
                 self.fit_if_resized(shown_size);
-                self.editor.stand_in = stand_in.map(|s| (self.editor.key, s));
+                self.set_stand_in(stand_in);
                 return;
             }
             Action::Play(on) => {
@@ -244,8 +244,17 @@ impl MarblingApp {
             }
             self.after_change();
             self.fit_if_resized(shown_size);
-            self.editor.stand_in = stand_in.map(|s| (self.editor.key, s));
+            self.set_stand_in(stand_in);
         }
+    }
+
+    /// What stands in for the state just made while its exact frame is drawn: `s`, or for
+    /// a change that is not an edit, an earlier state that looks the same.
+    fn set_stand_in(&mut self, mut s: StandIn) {
+        if s.paper {
+            s.key = self.earlier_look_alike();
+        }
+        self.editor.stand_in = Some((self.editor.key, s));
     }
 
     /// The design changed: stop playback, redraw, autosave soon.

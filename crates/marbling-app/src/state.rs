@@ -23,6 +23,10 @@ use std::borrow::Cow;
 use std::collections::{HashMap, VecDeque};
 use std::sync::{Arc, Mutex};
 
+/// How many shown states [`Editor::recent`] remembers (the GPU holds the preview caches
+/// of two).
+pub const RECENT_STATES: usize = 4;
+
 /// The document being edited and how it is shown: history, view, gesture, playback, and
 /// the noise playground's parameters.
 pub struct Editor {
@@ -33,6 +37,9 @@ pub struct Editor {
     /// What may stand in for the shown design (`.0` = [`Self::key`]) while its exact
     /// frame is drawn: the design before the last edit, and the op the edit added.
     pub stand_in: Option<(u64, StandIn)>,
+    /// The last few states shown, newest last, by key ([`RECENT_STATES`] at most): an
+    /// Undo or Redo back to one of them has its preview cache stand in.
+    pub recent: std::collections::VecDeque<(u64, Shown)>,
     /// The design on the canvas (the history, a viewed step or a playback frame).
     pub shown: Shown,
     /// `None` until the canvas size is known (then the design is fitted).
@@ -79,6 +86,7 @@ impl Editor {
             history,
             key: 0,
             stand_in: None,
+            recent: std::collections::VecDeque::new(),
             view: None,
             fit: None,
             pinching: false,

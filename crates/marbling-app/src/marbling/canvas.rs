@@ -367,8 +367,9 @@ impl MarblingApp {
                 stand_in
             } else {
                 Some(StandIn {
-                    key: self.editor.key,
+                    key: Some(self.editor.key),
                     op: None,
+                    paper: false,
                 })
             },
             transient: design_key != self.editor.key,

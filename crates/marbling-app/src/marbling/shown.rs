@@ -62,6 +62,18 @@ impl Shown {
         self.prefix().ops().map(Op::counted_ops).sum()
     }
 
+    /// True when this shows the same picture as `other`: the same paper, size and ops
+    /// (an Undo returns to a state that looks like an earlier one).
+    pub fn looks_like(&self, other: &Shown) -> bool {
+        let (a, b) = (&*self.design, &*other.design);
+        (a.width, a.height, a.background) == (b.width, b.height, b.background)
+            && a.background_noise == b.background_noise
+            && a.background_image == b.background_image
+            && a.overlays == b.overlays
+            && self.op_count() == other.op_count()
+            && self.prefix().ops().eq(other.prefix().ops())
+    }
+
     /// Sheet width and height, design pixels.
     pub fn size(&self) -> (u32, u32) {
         (self.design.width, self.design.height)
@@ -104,5 +116,11 @@ mod tests {
         assert_eq!(m.ops.len(), 6);
         assert_eq!(view.then(&d.ops[..2]).op_count(), 8);
         assert_eq!(view.prefix().ops().count(), 6);
+        // The same picture however it is held: a prefix and its materialised copy.
+        assert!(view.looks_like(&Shown::all(m.clone())));
+        assert!(!view.looks_like(&all));
+        let mut repainted = (*m).clone();
+        repainted.background.r ^= 1;
+        assert!(!view.looks_like(&Shown::all(Arc::new(repainted))));
     }
 }

@@ -43,7 +43,8 @@ impl CanvasCallback {
         if !dragging && gpu.refining.as_ref().map(|(r, _)| r) != Some(&exact) {
             status.drawn = None;
             status.error = None;
-            if let Err(e) = gpu.start_exact(device, queue, shown, &exact) {
+            let paper = req.stand_in.as_ref().is_some_and(|s| s.paper);
+            if let Err(e) = gpu.start_exact(device, queue, shown, &exact, paper) {
                 // Not tried again for this frame: the error is the outcome.
                 gpu.refining = Some((exact.clone(), Refinement::new([0; 4])));
                 status.error = Some(e);
@@ -104,10 +105,9 @@ impl CanvasCallback {
             self.ctx.request_repaint();
         }
         // What to show.
-        let cached = |key: u64| gpu.cache.as_ref().is_some_and(|(k, _)| *k == key);
         let canvas_px = self.placement.canvas_px;
         gpu.show = if dragging {
-            if cached(req.design_key) {
+            if gpu.hold_cache(req.design_key) {
                 gpu.aim_preview(queue, req, req.pending.as_ref(), canvas_px);
                 status.work.preview += 1;
                 Show::Preview
@@ -118,15 +118,19 @@ impl CanvasCallback {
             // A live video's next frame is drawn over the last one: the preview cache
             // holds no video, so the texture as it is shows best.
             Show::Exact
-        } else if cached(req.design_key) {
+        } else if gpu.hold_cache(req.design_key) {
             gpu.aim_preview(queue, req, None, canvas_px);
             Show::Refining
-        } else if let Some(s) = req.stand_in.clone().filter(|s| cached(s.key)) {
+        } else if let Some(s) = req
+            .stand_in
+            .as_ref()
+            .filter(|s| s.key.is_some_and(|k| gpu.hold_cache(k)))
+        {
             gpu.aim_preview(queue, req, s.op.as_ref(), canvas_px);
             Show::Refining
         } else {
-            // Nothing better: the texture as it is (the previous frame, or the paper)
-            // with the new tiles over it.
+            // Nothing better: the texture as it is (the previous frame of this state, or
+            // bare paper) with the new tiles over it.
             Show::Exact
         };
     }

@@ -4,7 +4,9 @@
 //! the frames before), so no frame waits for a whole render and input stays live. Until the last
 //! tile is drawn, the preview stands in under the tiles already drawn: the preview
 //! cache of this design, or of the design just before an edit with the edit's op
-//! walked on top (what the last drag frame showed). Every frame then copies the
+//! walked on top (what the last drag frame showed), or of an earlier state that looks
+//! the same (an Undo's: the cache before the newest is kept). With none of these the
+//! tiles are drawn over the last frame of the same state, or over bare paper. Every frame then copies the
 //! texture 1:1 into egui's pass over the sheet in one cheap draw (the grey around it is
 //! the window's clear colour), so hovering never re-walks the ops. Once the exact frame
 //! is done, the live-preview cache of the design is brought up to date the same way, in
@@ -61,13 +63,31 @@ pub struct FrameRequest {
     pub live: Option<crate::media::video::LiveFrame>,
 }
 
-/// A design close to the requested one whose preview cache can stand in for it.
+/// What shows while the requested design's exact frame is drawn in tiles, when that
+/// design has no preview cache yet.
 #[derive(Clone, Debug, PartialEq)]
 pub struct StandIn {
-    /// That design's key.
-    pub key: u64,
-    /// The op to walk over its cache (the op just committed), if any.
+    /// A design whose preview cache may stand in for it, if the GPU still holds one: the
+    /// design before an edit, or an earlier state that looks the same as the requested
+    /// one (the state an Undo or Redo returns to).
+    pub key: Option<u64>,
+    /// The op to walk over that cache (the op just committed), if any.
     pub op: Option<Op>,
+    /// The canvas texture's last frame shows another state (an Undo, a loaded design):
+    /// with no cache to stand in, the tiles are drawn over bare paper, never over that
+    /// frame (half one state, half the other).
+    pub paper: bool,
+}
+
+impl StandIn {
+    /// Another state of the document: the cache of `key` if held, else bare paper.
+    pub fn other_state(key: Option<u64>) -> Self {
+        Self {
+            key,
+            op: None,
+            paper: true,
+        }
+    }
 }
 
 impl FrameRequest {
@@ -148,6 +168,9 @@ pub struct CanvasGpu {
     refining: Option<(FrameRequest, Refinement)>,
     /// The newest complete preview cache.
     cache: Option<(u64, PreviewCache)>,
+    /// The complete preview cache of the design shown before `cache`'s (an Undo returns
+    /// to it: it stands in at once).
+    previous: Option<(u64, PreviewCache)>,
     /// A preview cache being drawn in tiles.
     building: Option<(u64, PreviewCache, Refinement)>,
     caches_built: u64,
@@ -174,6 +197,7 @@ impl CanvasGpu {
             prepared: None,
             refining: None,
             cache: None,
+            previous: None,
             building: None,
             caches_built: 0,
             ops_written: 0,
@@ -187,15 +211,18 @@ impl CanvasGpu {
 
     /// Starts drawing the exact frame of `req`: (re)creates the texture at its size
     /// (cleared to the design's paper), brings the uploaded design up to `shown` if it
-    /// changed, sets the view. The texture keeps what it showed until tiles replace it.
+    /// changed, sets the view. The texture keeps what it showed until tiles replace it,
+    /// unless `paper` asks for bare paper under the tiles of a new design.
     fn start_exact(
         &mut self,
         device: &wgpu::Device,
         queue: &wgpu::Queue,
         shown: &Shown,
         req: &FrameRequest,
+        paper: bool,
     ) -> Result<(), String> {
         let design = &*shown.design;
+        let new_design = self.refining.as_ref().map(|(r, _)| r.design_key) != Some(req.design_key);
         self.refining = None;
         let fits = self
             .target
@@ -204,13 +231,19 @@ impl CanvasGpu {
         if !fits {
             let target = RenderTarget::new(device, req.size[0], req.size[1], CANVAS_FORMAT);
             let source = self.presenter.source(device, &target.view);
+            self.target = Some((target, source));
+        }
+        if let Some((target, _)) = self
+            .target
+            .as_ref()
+            .filter(|_| !fits || (paper && new_design))
+        {
             let c = design.background;
             let [r, g, b] = [c.r, c.g, c.b].map(|v| f64::from(v) / 255.0);
             let mut encoder =
                 device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: None });
             drop(target.begin_pass_clearing(&mut encoder, wgpu::Color { r, g, b, a: 1.0 }));
             queue.submit([encoder.finish()]);
-            self.target = Some((target, source));
         }
         match &mut self.prepared {
             Some((key, _)) if *key == req.design_key => {}
@@ -260,6 +293,19 @@ impl CanvasGpu {
             .as_ref()
             .is_some_and(|(k, c)| *k == key && c.covers(req.scale));
         !req.transient && !complete && self.cache_failed != Some(key)
+    }
+
+    /// True when a complete preview cache of `key` is held; it is then the one drawn
+    /// (`cache`: the previous one changes places with it).
+    fn hold_cache(&mut self, key: u64) -> bool {
+        if self.cache.as_ref().is_some_and(|(k, _)| *k == key) {
+            return true;
+        }
+        if self.previous.as_ref().is_some_and(|(k, _)| *k == key) {
+            std::mem::swap(&mut self.cache, &mut self.previous);
+            return true;
+        }
+        false
     }
 
     /// True when another tile may be submitted.
@@ -357,7 +403,13 @@ impl CanvasGpu {
             submit_counted(queue, encoder, &self.in_flight, ctx);
         }
         if refinement.is_done() {
-            self.cache = self.building.take().map(|(k, c, _)| (k, c));
+            let built = self.building.take().map(|(k, c, _)| (k, c));
+            let before = std::mem::replace(&mut self.cache, built);
+            // A cache of another design is kept for an Undo (one of this design at another
+            // scale is not).
+            if before.as_ref().is_some_and(|(k, _)| *k != key) {
+                self.previous = before;
+            }
             return Ok(true);
         }
         Ok(false)

@@ -147,8 +147,9 @@ fn the_exact_frame_is_drawn_in_tiles_then_the_cache() {
     callback.shown = Shown::all(Arc::new(edited));
     callback.request.design_key = 2;
     callback.request.stand_in = Some(StandIn {
-        key: 1,
+        key: Some(1),
         op: Some(op),
+        paper: false,
     });
     // (A frame that may draw no tile, as when earlier tiles are still in flight.)
     gpu.in_flight.store(MAX_IN_FLIGHT, Ordering::SeqCst);
@@ -161,6 +162,50 @@ fn the_exact_frame_is_drawn_in_tiles_then_the_cache() {
         "the edit wrote its one op, not the design again"
     );
     assert!(callback.status.lock().expect("status").drawn.is_none());
+
+    // The edit's exact frame and cache are drawn; the cache of the design before it is kept.
+    gpu.in_flight.store(0, Ordering::SeqCst);
+    for _ in 0..2000 {
+        frame(&mut gpu, &callback);
+        if callback.status.lock().expect("status").cache_ready == Some(2) {
+            break;
+        }
+    }
+    assert_eq!(callback.status.lock().expect("status").cache_ready, Some(2));
+    assert_eq!(gpu.previous.as_ref().map(|(k, _)| *k), Some(1));
+
+    // Undo: the state before the edit (a new key) shows that state's own cache at once,
+    // never the edited frame under the first tiles.
+    callback.shown = Shown::all(design.clone());
+    callback.request.design_key = 3;
+    callback.request.stand_in = Some(StandIn::other_state(Some(1)));
+    gpu.in_flight.store(MAX_IN_FLIGHT, Ordering::SeqCst);
+    frame(&mut gpu, &callback);
+    assert_eq!(gpu.show, Show::Refining);
+    assert_eq!(gpu.cache.as_ref().map(|(k, _)| *k), Some(1));
+    assert_eq!(gpu.previous.as_ref().map(|(k, _)| *k), Some(2));
+
+    // Another state with no cache held: bare paper under the tiles, not the last frame.
+    let mut other = (*design).clone();
+    other.ops.truncate(100);
+    callback.shown = Shown::all(Arc::new(other));
+    callback.request.design_key = 4;
+    callback.request.stand_in = Some(StandIn::other_state(Some(77)));
+    frame(&mut gpu, &callback);
+    assert_eq!(gpu.show, Show::Exact);
+    let (target, _) = gpu.target.as_ref().expect("texture");
+    let bare = read(&g, target, [10, 5, 100, 80]);
+    let c = design.background;
+    let paper = RgbaImage::filled(100, 80, [c.r, c.g, c.b, 255]);
+    let diff = compare(&paper, &bare, 2).expect("size");
+    assert_eq!(
+        diff.fraction(),
+        0.0,
+        "the last frame under the tiles: {diff:?}"
+    );
+    // (The comparator sees the design: the exact frame is not bare paper.)
+    let inked = compare(&paper, &shown, 2).expect("size").fraction();
+    assert!(inked > 0.05, "{inked}");
 }
 
 fn rect(x0: f32, y0: f32, x1: f32, y1: f32) -> Rect {
