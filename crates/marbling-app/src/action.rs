@@ -252,7 +252,7 @@ impl MarblingApp {
     /// a change that is not an edit, an earlier state that looks the same.
     fn set_stand_in(&mut self, mut s: StandIn) {
         if s.paper {
-            s.key = self.earlier_look_alike();
+            s.key = self.editor.earlier_look_alike();
         }
         self.editor.stand_in = Some((self.editor.key, s));
     }

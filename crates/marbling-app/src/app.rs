@@ -224,22 +224,7 @@ impl MarblingApp {
             }
             None => self.editor.history.shown(),
         };
-        let recent = &mut self.editor.recent;
-        recent.push_back((self.editor.key, self.editor.shown.clone()));
-        if recent.len() > crate::state::RECENT_STATES {
-            recent.pop_front();
-        }
-    }
-
-    /// The latest earlier state (key) that looks like the one shown now, if remembered.
-    pub(crate) fn earlier_look_alike(&self) -> Option<u64> {
-        let (now, shown) = (self.editor.key, &self.editor.shown);
-        self.editor
-            .recent
-            .iter()
-            .rev()
-            .find(|(k, s)| *k != now && s.looks_like(shown))
-            .map(|(k, _)| *k)
+        self.editor.remember_shown();
     }
 
     /// Switches between marbling and the noise playground.

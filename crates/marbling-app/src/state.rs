@@ -103,6 +103,23 @@ impl Editor {
             noise: crate::noise::Noise::default(),
         }
     }
+
+    /// Adds the state shown now to [`Self::recent`].
+    pub fn remember_shown(&mut self) {
+        self.recent.push_back((self.key, self.shown.clone()));
+        if self.recent.len() > RECENT_STATES {
+            self.recent.pop_front();
+        }
+    }
+
+    /// The latest earlier state (key) that looks like the one shown now, if remembered.
+    pub fn earlier_look_alike(&self) -> Option<u64> {
+        self.recent
+            .iter()
+            .rev()
+            .find(|(k, s)| *k != self.key && s.looks_like(&self.shown))
+            .map(|(k, _)| *k)
+    }
 }
 
 /// What is kept in the page's storage, and what is owed to it.
