@@ -89,6 +89,17 @@ impl Design {
             || !self.overlays.is_empty()
     }
 
+    /// What a sample's noise background and grain overlays cost a GPU beyond the walk
+    /// through the ops, in simple ops walked ([`marbling_noise::NoiseSpec::sample_cost`];
+    /// 0 without noise): renderers size their tiles by it with [`Op::walk_cost`].
+    pub fn surface_cost(&self) -> u64 {
+        let background = self.background_noise.iter().map(|b| &b.noise);
+        background
+            .chain(self.overlays.iter().map(|o| &o.noise))
+            .map(|n| n.spec().sample_cost())
+            .sum()
+    }
+
     /// Sets a noise background (and [`Design::background`] to the colour that stands
     /// for it), or a plain one with `None`.
     pub fn set_background_noise(&mut self, noise: Option<NoiseBackground>) {

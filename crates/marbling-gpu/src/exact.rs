@@ -44,6 +44,8 @@ pub struct PreparedDesign {
     written: u64,
     surface: wgpu::Buffer,
     surface_params: SurfaceParams,
+    /// What a sample's noise costs beyond the walk ([`Design::surface_cost`]).
+    surface_cost: u64,
     /// The image background's pixels (1×1 when there is none), bound at binding 3.
     image_texture: wgpu::Texture,
     /// The pixels in `image_texture` (compared by pointer to skip re-uploads).
@@ -193,6 +195,7 @@ impl ExactRenderer {
             records: Vec::new(),
             written: 0,
             surface_params: SurfaceParams::new(design),
+            surface_cost: design.surface_cost(),
             surface,
             image_texture,
             image_uploaded: None,
@@ -267,6 +270,7 @@ impl ExactRenderer {
         }
         write_records(queue, prepared, start..n);
         let design = shown.design;
+        prepared.surface_cost = design.surface_cost();
         let mut surface_params = SurfaceParams::new(design);
         let image = match &prepared.live_image {
             Some((pixels, fit)) => Some((pixels.clone(), *fit)),
@@ -523,10 +527,11 @@ impl PreparedDesign {
         self.records.len()
     }
 
-    /// What walking one sample back through every op costs, in simple ops
-    /// ([`Op::walk_cost`]): renderers size their tiles by it.
+    /// What one sample costs, in simple ops: its walk back through every op
+    /// ([`Op::walk_cost`]) and the noise it reads ([`Design::surface_cost`]); renderers
+    /// size their tiles by it.
     pub fn walk_cost(&self) -> u64 {
-        self.uploaded.iter().map(Op::walk_cost).sum()
+        self.uploaded.iter().map(Op::walk_cost).sum::<u64>() + self.surface_cost
     }
 
     /// Records written into the op texture since it was prepared (an update that only

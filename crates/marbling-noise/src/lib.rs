@@ -15,6 +15,7 @@
 //! measured once and checked by tests).
 
 pub mod analysis;
+mod cost;
 mod curl;
 mod curve;
 mod data;

@@ -50,10 +50,10 @@ impl Shown {
         self.prefix().op_count()
     }
 
-    /// What walking one sample back through the ops shown costs, in simple ops
-    /// ([`Op::walk_cost`]).
+    /// What one sample costs, in simple ops: its walk back through the ops shown
+    /// ([`Op::walk_cost`]) and the noise it then reads ([`Design::surface_cost`]).
     pub fn walk_cost(&self) -> u64 {
-        self.prefix().ops().map(Op::walk_cost).sum()
+        self.prefix().ops().map(Op::walk_cost).sum::<u64>() + self.design.surface_cost()
     }
 
     /// How many ops those count as toward [`marbling_core::MAX_OPS`] (every drop of a
