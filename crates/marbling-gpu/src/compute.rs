@@ -9,7 +9,7 @@
 use crate::exact::{ExactRenderer, PreparedDesign};
 use crate::shaders::ExactVariant;
 use crate::target::RenderTarget;
-use std::sync::OnceLock;
+use crate::variants::Variants;
 
 /// Workgroup side of `cs_main` (8 × 8 invocations).
 const WORKGROUP: u32 = 8;
@@ -20,8 +20,7 @@ const WORKGROUP: u32 = 8;
 pub struct ComputeExact {
     target_layout: wgpu::BindGroupLayout,
     pipeline_layout: wgpu::PipelineLayout,
-    /// One per variant, in [`ExactVariant::ALL`] order.
-    pipelines: [OnceLock<wgpu::ComputePipeline>; 4],
+    pipelines: Variants<wgpu::ComputePipeline>,
 }
 
 impl ComputeExact {
@@ -59,10 +58,10 @@ impl ComputeExact {
             device,
             &pipeline_layout,
             "marbling render (compute, plain)",
-            &ExactVariant::ALL[0].compute_wgsl(),
+            &ExactVariant::PLAIN.compute_wgsl(),
         );
-        let pipelines: [OnceLock<wgpu::ComputePipeline>; 4] = Default::default();
-        let _ = pipelines[0].set(pipeline);
+        let pipelines = Variants::default();
+        pipelines.get_or_init(ExactVariant::PLAIN, || pipeline);
         Self {
             target_layout,
             pipeline_layout,
@@ -81,7 +80,7 @@ impl ComputeExact {
         target: &RenderTarget,
     ) {
         let variant = design.variant();
-        let pipeline = self.pipelines[variant.index()].get_or_init(|| {
+        let pipeline = self.pipelines.get_or_init(variant, || {
             build(
                 device,
                 &self.pipeline_layout,
@@ -99,7 +98,7 @@ impl ComputeExact {
             label: Some("marbling render (compute)"),
             timestamp_writes: None,
         });
-        pass.set_pipeline(pipeline);
+        pass.set_pipeline(&pipeline);
         pass.set_bind_group(0, design.bind_group(), &[]);
         pass.set_bind_group(1, &target_group, &[]);
         pass.dispatch_workgroups(

@@ -9,21 +9,23 @@ use crate::encode::{GpuOp, OpLayout, TEXELS_PER_OP, records};
 use crate::params::RenderParams;
 use crate::shaders::{ExactVariant, RENDER_PLAIN_WGSL};
 use crate::surface::SurfaceParams;
+use crate::variants::Variants;
 use marbling_core::ImageFit;
 use marbling_core::image_background::ImagePixels;
 use marbling_core::{Antialias, Design, Op};
-use std::sync::{Arc, OnceLock};
+use marbling_noise::wgsl::NoiseKinds;
+use std::sync::Arc;
 
-/// The exact render pipeline for one target format, in the four [`ExactVariant`]s:
-/// plain (every v1 design; no noise or stylus code) built at once, the others (with
-/// schema v2 surfaces, with finite combs and styli, with both) on the first design that
-/// needs them.
-#[derive(Debug)]
+/// The exact render pipeline for one target format, in [`ExactVariant`]s: plain (every
+/// v1 design; no noise or stylus code) built at once, the others (with the noise types
+/// of a design's schema v2 surfaces, with finite combs and styli, with both) on the
+/// first design that needs them. Clones share the pipelines (the preview cache's
+/// renderer and the canvas's compile each variant once).
+#[derive(Clone, Debug)]
 pub struct ExactRenderer {
     layout: wgpu::BindGroupLayout,
     pipeline_layout: wgpu::PipelineLayout,
-    /// One per variant, in [`ExactVariant::ALL`] order.
-    pipelines: [OnceLock<wgpu::RenderPipeline>; 4],
+    pipelines: Arc<Variants<wgpu::RenderPipeline>>,
     format: wgpu::TextureFormat,
 }
 
@@ -117,8 +119,8 @@ impl ExactRenderer {
             &module,
             format,
         );
-        let pipelines: [OnceLock<wgpu::RenderPipeline>; 4] = Default::default();
-        let _ = pipelines[0].set(pipeline);
+        let pipelines = Arc::new(Variants::default());
+        pipelines.get_or_init(ExactVariant::PLAIN, || pipeline);
         Self {
             layout,
             pipeline_layout,
@@ -132,8 +134,8 @@ impl ExactRenderer {
         &self,
         device: &wgpu::Device,
         variant: ExactVariant,
-    ) -> &wgpu::RenderPipeline {
-        self.pipelines[variant.index()].get_or_init(|| {
+    ) -> wgpu::RenderPipeline {
+        self.pipelines.get_or_init(variant, || {
             let label = format!("marbling render ({})", variant.name());
             let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
                 label: Some(&label),
@@ -412,10 +414,10 @@ impl ExactRenderer {
 
     fn draw_full(&self, pass: &mut wgpu::RenderPass<'_>, design: &PreparedDesign) {
         // `update` built the variant of every design it uploaded.
-        let Some(pipeline) = self.pipelines[design.variant().index()].get() else {
+        let Some(pipeline) = self.pipelines.get(design.variant()) else {
             return;
         };
-        pass.set_pipeline(pipeline);
+        pass.set_pipeline(&pipeline);
         pass.set_bind_group(0, &design.bind_group, &[]);
         pass.draw(0..3, 0..1);
     }
@@ -543,7 +545,11 @@ impl PreparedDesign {
     /// The exact-renderer variant the design needs.
     pub(crate) fn variant(&self) -> ExactVariant {
         ExactVariant {
-            surface: self.textured,
+            noises: if self.textured {
+                self.surface_params.noise_kinds()
+            } else {
+                NoiseKinds::NONE
+            },
             v3: self.v3,
         }
     }

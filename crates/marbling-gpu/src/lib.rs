@@ -76,6 +76,7 @@ pub mod shaders;
 pub mod surface;
 mod target;
 mod tiles;
+mod variants;
 pub mod view3d;
 
 pub use compute::ComputeExact;

@@ -64,6 +64,17 @@ pub struct PreviewCache {
 impl PreviewRenderer {
     /// Builds the pipelines; previews are drawn into targets of `format`.
     pub fn new(device: &wgpu::Device, format: wgpu::TextureFormat) -> Self {
+        Self::sharing(device, format, &ExactRenderer::new(device, CACHE_FORMAT))
+    }
+
+    /// [`PreviewRenderer::new`] whose caches are drawn with `exact`'s pipelines where it
+    /// draws into [`CACHE_FORMAT`] (each exact variant is then compiled once: on a
+    /// software GPU a compile of a noise variant takes seconds).
+    pub fn sharing(
+        device: &wgpu::Device,
+        format: wgpu::TextureFormat,
+        exact: &ExactRenderer,
+    ) -> Self {
         let fragment = wgpu::ShaderStages::FRAGMENT;
         let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("marbling preview"),
@@ -110,7 +121,11 @@ impl PreviewRenderer {
             layout,
             pipelines,
             sampler,
-            cache_renderer: ExactRenderer::new(device, CACHE_FORMAT),
+            cache_renderer: if exact.format() == CACHE_FORMAT {
+                exact.clone()
+            } else {
+                ExactRenderer::new(device, CACHE_FORMAT)
+            },
             format,
         }
     }

@@ -3,7 +3,10 @@
 //! triangle), then for the exact renderer `records.wgsl` (the walk over op records),
 //! `ops_v3.wgsl` (the ops schema v3 added) or its stand-in, `image.wgsl` (image
 //! backgrounds, in every variant), marbling-noise's `noise` module and `surface.wgsl`
-//! (schema v2 noise backgrounds and grain overlays) or its stand-in, then its own file. [`ExactVariant`] names the four exact modules.
+//! (schema v2 noise backgrounds and grain overlays) or its stand-in, then its own file.
+//! [`ExactVariant`] names an exact module: its noise types and whether it walks v3 ops.
+
+use marbling_noise::wgsl::{NoiseKind, NoiseKinds};
 
 use crate::preview_kind::PreviewKind;
 
@@ -51,59 +54,67 @@ pub const RENDER_COMPUTE: &str = include_str!("../shaders/render_compute.wgsl");
 /// Which exact-renderer module a design needs.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct ExactVariant {
-    /// With schema v2 noise backgrounds or grain (`surface.wgsl` and the noise
-    /// module); image backgrounds alone need no noise.
-    pub surface: bool,
+    /// The noise types of its schema v2 noise background or grain (`surface.wgsl` and
+    /// the noise module, whose `sample_noise` draws only these); none without noise
+    /// (image backgrounds alone need none).
+    pub noises: NoiseKinds,
     /// With schema v3's ops (`ops_v3.wgsl`).
     pub v3: bool,
 }
 
 impl ExactVariant {
-    /// Every variant, in [`ExactVariant::index`] order; the first is the plain one.
+    /// The plain variant (no noise, no v3 ops): every v1 design.
+    pub const PLAIN: ExactVariant = ExactVariant {
+        noises: NoiseKinds::NONE,
+        v3: false,
+    };
+
+    /// The four kinds of module: plain, with every noise, with v3 ops, with both.
     pub const ALL: [ExactVariant; 4] = [
+        ExactVariant::PLAIN,
         ExactVariant {
-            surface: false,
+            noises: NoiseKinds::ALL,
             v3: false,
         },
         ExactVariant {
-            surface: true,
-            v3: false,
-        },
-        ExactVariant {
-            surface: false,
+            noises: NoiseKinds::NONE,
             v3: true,
         },
         ExactVariant {
-            surface: true,
+            noises: NoiseKinds::ALL,
             v3: true,
         },
     ];
 
-    /// Position in [`ExactVariant::ALL`].
-    pub fn index(self) -> usize {
-        usize::from(self.surface) + 2 * usize::from(self.v3)
+    /// True when it holds noise code.
+    pub fn surface(self) -> bool {
+        !self.noises.is_empty()
     }
 
-    /// Short name, for labels and test messages.
-    pub fn name(self) -> &'static str {
-        match (self.surface, self.v3) {
-            (false, false) => "plain",
-            (true, false) => "surface",
-            (false, true) => "v3",
-            (true, true) => "surface+v3",
+    /// Short name, for labels and test messages: `plain`, `v3`, `surface(gabor)`, …
+    pub fn name(self) -> String {
+        match (self.surface(), self.v3) {
+            (false, false) => "plain".to_owned(),
+            (false, true) => "v3".to_owned(),
+            (true, v3) => format!(
+                "surface({}){}",
+                self.noises.name(),
+                if v3 { "+v3" } else { "" }
+            ),
         }
     }
 
     /// The render module (vertex and fragment entry points).
     pub fn render_wgsl(self) -> String {
-        if !self.surface && !self.v3 {
+        if !self.surface() && !self.v3 {
             return RENDER_PLAIN_WGSL.to_owned();
         }
         let v3 = if self.v3 { OPS_V3 } else { OPS_V3_OFF };
-        let surface = if self.surface {
-            let noise = marbling_noise::wgsl::module("noise").unwrap_or_else(|| {
-                unreachable!("marbling-noise always provides its noise module");
-            });
+        let surface = if self.surface() {
+            let noise =
+                marbling_noise::wgsl::module_for("noise", self.noises).unwrap_or_else(|| {
+                    unreachable!("marbling-noise always provides its noise module");
+                });
             [noise.as_str(), SURFACE].join("\n")
         } else {
             SURFACE_OFF.to_owned()
@@ -150,18 +161,20 @@ pub const PRESENT_WGSL: &str = concat!(
 
 /// The exact renderer with everything: schema v2 surfaces and schema v3 ops.
 pub fn render_wgsl() -> String {
-    ExactVariant {
-        surface: true,
-        v3: true,
-    }
-    .render_wgsl()
+    ExactVariant::ALL[3].render_wgsl()
 }
 
 /// Every render-pipeline module (vertex + fragment; WebGPU and WebGL2) as (name,
 /// source), for validation: the exact renderers, each live-preview variant, present.
 pub fn all() -> Vec<(String, String)> {
+    // The four kinds of module, and one with each noise type alone.
+    let one_noise = NoiseKind::ALL.map(|k| ExactVariant {
+        noises: NoiseKinds::NONE.with(k),
+        v3: false,
+    });
     let mut out: Vec<(String, String)> = ExactVariant::ALL
         .iter()
+        .chain(&one_noise)
         .map(|v| (format!("render-{}", v.name()), v.render_wgsl()))
         .collect();
     for kind in PreviewKind::ALL {

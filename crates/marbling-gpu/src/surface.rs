@@ -5,7 +5,7 @@
 use marbling_core::image_background::{ImagePixels, fit_map};
 use marbling_core::surface::MAX_PALETTE_STOPS;
 use marbling_core::{Design, GrainKind, ImageFit, NoiseLayer};
-use marbling_noise::wgsl::NoiseGpu;
+use marbling_noise::wgsl::{NoiseGpu, NoiseKind, NoiseKinds};
 
 /// `SurfaceParams::flags` bit: the background is noise.
 pub const SURFACE_BACKGROUND: u32 = 1;
@@ -137,6 +137,22 @@ impl SurfaceParams {
         noise_background || self.flags & (SURFACE_PIGMENT | SURFACE_PAPER) != 0
     }
 
+    /// The noise types drawn: those of the noise layers in use.
+    pub fn noise_kinds(&self) -> NoiseKinds {
+        let used = [
+            (
+                LAYER_BACKGROUND,
+                self.flags & SURFACE_BACKGROUND != 0 && self.flags & SURFACE_IMAGE == 0,
+            ),
+            (LAYER_PIGMENT, self.flags & SURFACE_PIGMENT != 0),
+            (LAYER_PAPER, self.flags & SURFACE_PAPER != 0),
+        ];
+        used.into_iter()
+            .filter(|(_, on)| *on)
+            .filter_map(|(i, _)| NoiseKind::of(self.noises[i].noise_type))
+            .fold(NoiseKinds::NONE, NoiseKinds::with)
+    }
+
     /// Makes the background `pixels` laid on `design`'s sheet by `fit` (the design's
     /// own image, or a live video frame standing in for it).
     pub fn set_image(&mut self, pixels: &ImagePixels, fit: ImageFit, design: &Design) {
@@ -160,5 +176,35 @@ impl SurfaceParams {
         ];
         let [r, g, b] = design.background.to_linear();
         self.paper = [r, g, b, 1.0];
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use marbling_core::{NoiseBackground, Overlay, Palette, Rgb8};
+
+    fn layer(json: &str) -> NoiseLayer {
+        NoiseLayer::from_json(json).expect("valid noise")
+    }
+
+    #[test]
+    fn the_noise_kinds_are_those_of_the_layers_in_use() {
+        let mut d = Design::new(40, 30, Rgb8::new(200, 190, 180));
+        assert_eq!(SurfaceParams::new(&d).noise_kinds(), NoiseKinds::NONE);
+        d.set_background_noise(Some(NoiseBackground::new(
+            layer(r#"{"type":"worley","frequency":0.05,"seed":1}"#),
+            Palette::named("ocean").expect("palette"),
+        )));
+        let worley = NoiseKinds::NONE.with(NoiseKind::Worley);
+        assert_eq!(SurfaceParams::new(&d).noise_kinds(), worley);
+        d.overlays = vec![Overlay::paper_grain(
+            layer(r#"{"type":"value","frequency":0.2,"octaves":3,"seed":8}"#),
+            0.25,
+        )];
+        assert_eq!(
+            SurfaceParams::new(&d).noise_kinds(),
+            worley.with(NoiseKind::Fbm)
+        );
     }
 }

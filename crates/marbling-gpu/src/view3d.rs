@@ -8,12 +8,12 @@ use crate::bindings;
 use crate::exact::{ExactRenderer, PreparedDesign, View};
 use crate::shaders::ExactVariant;
 use crate::target::RenderTarget;
+use crate::variants::Variants;
 use marbling_core::view3d::{
     AMBIENT, BACKDROP, BOOK_DEPTH, INSIDE_SHADE, PAGES, SPINE_SHADE, VASE_BISECTIONS, VASE_BOUND,
     VASE_STEPS, Vec3, View3d,
 };
 use marbling_core::{Design, Rgb8};
-use std::sync::OnceLock;
 
 /// `shaders/view3d.wgsl`.
 pub const VIEW3D: &str = include_str!("../shaders/view3d.wgsl");
@@ -106,8 +106,8 @@ impl View3dParams {
 pub struct View3dRenderer {
     layout: wgpu::BindGroupLayout,
     pipeline_layout: wgpu::PipelineLayout,
-    /// One per [`ExactVariant`], in [`ExactVariant::ALL`] order, built on first use.
-    pipelines: [OnceLock<wgpu::RenderPipeline>; 4],
+    /// One per [`ExactVariant`], built on first use.
+    pipelines: Variants<wgpu::RenderPipeline>,
     format: wgpu::TextureFormat,
     uniform: wgpu::Buffer,
     params: Option<View3dParams>,
@@ -239,7 +239,7 @@ impl View3dRenderer {
         prepared: &PreparedDesign,
     ) {
         let variant = prepared.variant();
-        let pipeline = self.pipelines[variant.index()].get_or_init(|| {
+        let pipeline = self.pipelines.get_or_init(variant, || {
             let label = format!("marbling 3d view ({})", variant.name());
             let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
                 label: Some(&label),
@@ -254,7 +254,7 @@ impl View3dRenderer {
                 self.format,
             )
         });
-        pass.set_pipeline(pipeline);
+        pass.set_pipeline(&pipeline);
         pass.set_bind_group(0, prepared.bind_group(), &[]);
         pass.set_bind_group(1, &self.bind_group, &[]);
         pass.draw(0..3, 0..1);

@@ -64,8 +64,9 @@ fn fbm(p: vec2<f32>, params: FbmParams) -> f32 {
     return s * fbm_inv_std(params);
 }
 
-// (n, dn/dx, dn/dy) of fbm, derivatives per output pixel (Perlin basis analytic, value
-// basis by central differences of 1/64 cell).
+// (n, dn/dx, dn/dy) of a Perlin-basis fbm (curl's potential, the only caller, always is),
+// derivatives per output pixel, analytic. (A value-basis branch here, by central
+// differences, made SwiftShader take 9 s to compile the curl shader.)
 fn fbm_with_gradient(p: vec2<f32>, params: FbmParams) -> vec3<f32> {
     var f = params.frequency;
     var a = 1.0;
@@ -74,18 +75,7 @@ fn fbm_with_gradient(p: vec2<f32>, params: FbmParams) -> vec3<f32> {
         let lat = fbm_octave_lattice(f, params.period);
         let per = vec2<i32>(i32(lat.y), i32(lat.y));
         let seed = params.seed + i * OCTAVE_SEED_STEP;
-        let q = p * lat.x;
-        var g: vec3<f32>;
-        if params.basis == 1u {
-            let h = 1.0 / 64.0;
-            g = vec3<f32>(
-                value2_periodic(q, seed, per),
-                (value2_periodic(q + vec2<f32>(h, 0.0), seed, per) - value2_periodic(q - vec2<f32>(h, 0.0), seed, per)) / (2.0 * h),
-                (value2_periodic(q + vec2<f32>(0.0, h), seed, per) - value2_periodic(q - vec2<f32>(0.0, h), seed, per)) / (2.0 * h),
-            );
-        } else {
-            g = perlin2_with_gradient(q, seed, per);
-        }
+        let g = perlin2_with_gradient(p * lat.x, seed, per);
         out = out + vec3<f32>(a * g.x, a * lat.x * g.y, a * lat.x * g.z);
         f = f * params.lacunarity;
         a = a * params.persistence;

@@ -82,7 +82,7 @@ impl NoiseStackGpu {
     pub fn from_spec(spec: &NoiseSpec, size: u32) -> Result<Self, StackUnsupported> {
         // An absent mask costs a white-noise lookup.
         let cheap = NoiseGpu {
-            noise_type: 3,
+            noise_type: crate::wgsl::NoiseKind::White as u32,
             ..NoiseGpu::default()
         };
         let mut s = Self {

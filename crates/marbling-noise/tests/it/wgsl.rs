@@ -83,3 +83,31 @@ fn host_structs_match_wgsl_layout() {
         size_of::<NoiseStackGpu>(),
     );
 }
+
+#[test]
+fn a_module_for_some_noise_types_draws_only_those() {
+    use marbling_noise::wgsl::{NoiseKind, NoiseKinds, module_for};
+
+    let kinds = NoiseKinds::NONE
+        .with(NoiseKind::Gabor)
+        .with(NoiseKind::Curl);
+    assert_eq!(kinds.name(), "gabor+curl");
+    let m = module_for("noise", kinds).expect("noise module");
+    marbling_testkit::wgsl::validate("noise (gabor+curl)", &m);
+    let switch = &m[m.find("fn sample_noise").expect("sample_noise")..];
+    assert!(switch.contains("case 0u") && switch.contains("case 4u"));
+    for other in ["case 1u", "case 2u", "case 3u", "case 5u"] {
+        assert!(!switch.contains(other), "{other} in {switch}");
+    }
+    // Every type has its case in the full module, in `noise_type` order.
+    let all = wgsl::module("noise").expect("noise module");
+    let all = &all[all.find("fn sample_noise").expect("sample_noise")..];
+    let at: Vec<usize> = NoiseKind::ALL
+        .iter()
+        .map(|k| all.find(&format!("case {}u", *k as u32)).expect("case"))
+        .collect();
+    assert!(at.windows(2).all(|w| w[0] < w[1]));
+    assert_eq!(NoiseKinds::ALL.iter().count(), NoiseKind::ALL.len());
+    assert_eq!(NoiseKind::of(5), Some(NoiseKind::Fibers));
+    assert_eq!(NoiseKind::of(6), None);
+}

@@ -189,9 +189,10 @@ pub struct CanvasGpu {
 impl CanvasGpu {
     /// Builds the pipelines for `device`; egui draws into targets of `surface_format`.
     pub fn new(device: &wgpu::Device, surface_format: wgpu::TextureFormat) -> Self {
+        let exact = ExactRenderer::new(device, CANVAS_FORMAT);
         Self {
-            exact: ExactRenderer::new(device, CANVAS_FORMAT),
-            preview: PreviewRenderer::new(device, surface_format),
+            preview: PreviewRenderer::sharing(device, surface_format, &exact),
+            exact,
             presenter: Presenter::new(device, surface_format),
             target: None,
             prepared: None,
