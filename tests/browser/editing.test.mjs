@@ -272,6 +272,10 @@ for (const backend of Object.keys(BACKENDS)) {
       await page.waitForFunction(() => document.body.dataset.mode === 'noise' && document.body.dataset.ops === '0' && document.body.dataset.ready === '1', null, { timeout: READY_MS });
       const noise = await shootSheet(page, STONE.design.width, STONE.design.height);
       assert.ok(differing(before.img, noise.img, 24) > 0.5, 'the canvas does not show the noise');
+      // The status line names the noise, not the (empty) op count.
+      const status = await attr(page, 'data-status');
+      assert.match(status, / · perlin noise · /);
+      assert.doesNotMatch(status, /\bops\b/);
       await page.screenshot({ path: path.join(SHOTS, `noise-panel-${backend}.png`), timeout: READY_MS });
       await clickControl(page, 'noise-background');
       await page.waitForFunction((k) => document.body.dataset.mode === 'marbling' && document.body.dataset.ops === String(k) && document.body.dataset.ready === '1', n, { timeout: READY_MS });
@@ -279,6 +283,7 @@ for (const backend of Object.keys(BACKENDS)) {
       const changed = differing(before.img, marbled.img, 24);
       assert.ok(changed > 0.05, `the background did not change (${(100 * changed).toFixed(1)} %)`);
       await page.screenshot({ path: path.join(SHOTS, `noise-marbled-${backend}.png`), timeout: READY_MS });
+      assert.match(await attr(page, 'data-status'), new RegExp(` · ${n} ops · `));
       // The design now carries the noise: Save JSON writes it (version 3: the stone
       // pattern's drop sets are v3 ops; a noise background needs at least 2).
       const saved = JSON.parse((await download(page, 'save-json')).bytes.toString('utf8'));

@@ -236,6 +236,8 @@ pub struct Hooks {
     pub requested: Option<crate::gpu::canvas_gpu::FrameRequest>,
     /// `data-memory` (src/automation/memory.rs) and when it was taken (egui's clock, seconds).
     pub memory: Option<(f64, String)>,
+    /// The status line's text as last drawn (for `data-status`).
+    pub status: String,
 }
 
 /// The panels' own state: the status line, file picks, thumbnails, the panel cache and

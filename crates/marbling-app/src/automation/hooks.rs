@@ -176,6 +176,7 @@ impl MarblingApp {
                 self.hooks.memory.as_ref().map(|(_, m)| m.clone()),
             ),
             ("data-mode", Some(self.editor.mode.name().to_owned())),
+            ("data-status", Some(self.hooks.status.clone())),
             (
                 "data-noise",
                 self.hooks.noise_json.as_ref().map(|(_, j)| j.clone()),

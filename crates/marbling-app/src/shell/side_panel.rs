@@ -531,6 +531,7 @@ impl MarblingApp {
                 .is_some_and(|s| s.progress.is_some_and(|p| p < 1.0));
         // One row, always the same height (a second row would move the canvas's edge
         // under the user's finger); the message comes last.
+        let mut said = Vec::new();
         ui.horizontal(|ui| {
             let (w, h) = self.editor.shown.size();
             let what = match self.editor.mode {
@@ -541,8 +542,10 @@ impl MarblingApp {
                 Mode::Marbling if self.editor.landing => "the gallery".to_owned(),
                 Mode::Marbling => format!("{} ops", self.editor.shown.op_count()),
             };
-            ui.label(format!("{w}×{h} · {what} · {}", self.rendering.backend));
+            said.push(format!("{w}×{h} · {what} · {}", self.rendering.backend));
+            ui.label(said[0].as_str());
             if previewing && self.rendering.fast_paint.preview_reduced() {
+                said.push("· preview 1 sample/px".to_owned());
                 ui.label("· preview 1 sample/px").on_hover_text(
                     "Frames came slower than 30 per second while dragging, so the live \
                      preview takes one sample per pixel; released ops are still rendered \
@@ -550,6 +553,7 @@ impl MarblingApp {
                 );
             }
             if let Some(v) = &self.editor.view {
+                said.push(format!("zoom {:.0} %", v.zoom * 100.0));
                 ui.label(format!("zoom {:.0} %", v.zoom * 100.0));
                 if ui.small_button("fit").clicked() {
                     self.editor.view = None;
@@ -561,8 +565,10 @@ impl MarblingApp {
                 } else {
                     ui.visuals().text_color()
                 };
+                said.push(m.text.clone());
                 ui.label(RichText::new(&m.text).color(color));
             }
         });
+        self.hooks.status = said.join(" ");
     }
 }
