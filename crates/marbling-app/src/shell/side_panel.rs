@@ -522,13 +522,14 @@ impl MarblingApp {
         }
         // The live preview's note, only while the preview is on screen (a drag, or an
         // exact frame still being drawn).
-        let previewing = self.editor.active.is_some()
-            || self
-                .rendering
-                .status
-                .lock()
-                .ok()
-                .is_some_and(|s| s.progress.is_some_and(|p| p < 1.0));
+        let drawing = self
+            .rendering
+            .status
+            .lock()
+            .ok()
+            .and_then(|s| s.progress)
+            .filter(|p| *p < 1.0);
+        let previewing = self.editor.active.is_some() || drawing.is_some();
         // One row, always the same height (a second row would move the canvas's edge
         // under the user's finger); the message comes last.
         let mut said = Vec::new();
@@ -551,6 +552,13 @@ impl MarblingApp {
                      preview takes one sample per pixel; released ops are still rendered \
                      exactly with the chosen antialiasing.",
                 );
+            }
+            // The exact frame's progress while its tiles are drawn (a noise on a software
+            // GPU can take a minute), in whole per cent (each change redraws the panel).
+            if let Some(p) = drawing.filter(|_| self.editor.active.is_none()) {
+                let text = format!("· drawing {:.0} %", (p * 100.0).floor());
+                ui.label(text.as_str());
+                said.push(text);
             }
             if let Some(v) = &self.editor.view {
                 said.push(format!("zoom {:.0} %", v.zoom * 100.0));
