@@ -2,6 +2,7 @@
 //! (view, pan and zoom, footprints), the step player and the ink sets.
 
 pub(crate) mod canvas;
+pub(crate) mod colour_words;
 pub(crate) mod drop_patterns;
 pub(crate) mod explain_geometry;
 pub(crate) mod fingers;

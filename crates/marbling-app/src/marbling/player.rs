@@ -6,7 +6,7 @@
 use crate::action::Action;
 use crate::app::MarblingApp;
 use crate::marbling::explain_geometry::{ExplainGeometry, Window};
-use egui::{Color32, RichText, Sense, Slider, Stroke, vec2};
+use egui::{Color32, Sense, Slider, Stroke, vec2};
 use marbling_core::{Design, Point};
 use std::sync::Arc;
 
@@ -131,7 +131,12 @@ impl MarblingApp {
                 captions.get(k).map_or("", String::as_str)
             ),
         };
-        ui.label(RichText::new(caption).strong());
+        // Ink codes ("#3b2a1a") read as a swatch and a colour name.
+        let font = egui::TextStyle::Body.resolve(ui.style());
+        let color = ui.visuals().strong_text_color();
+        ui.label(crate::marbling::colour_words::caption_job(
+            &caption, font, color,
+        ));
         if self.editor.explain.on {
             // What is left of the bar's share scrolls the explain text; always the same
             // height, so stepping does not move the canvas.
