@@ -541,7 +541,10 @@ impl MarblingApp {
                     self.editor.noise.settings().spec.source.type_name()
                 ),
                 Mode::Marbling if self.editor.landing => "the gallery".to_owned(),
-                Mode::Marbling => format!("{} ops", self.editor.shown.op_count()),
+                Mode::Marbling => match self.editor.shown.op_count() {
+                    1 => "1 op".to_owned(),
+                    n => format!("{n} ops"),
+                },
             };
             said.push(format!("{w}×{h} · {what} · {}", self.rendering.backend));
             ui.label(said[0].as_str());
