@@ -245,6 +245,10 @@ pub struct Hooks {
 pub struct Panels {
     /// A line shown in the status bar; errors also go to `data-error`.
     pub message: Option<Message>,
+    /// The History list's current row and row count it last scrolled to (it scrolls to
+    /// the current row when either changes, and leaves the user's scrolling alone
+    /// otherwise).
+    pub history_scrolled: Option<(usize, usize)>,
     /// Where an asynchronous file pick delivers.
     pub pick: PickSlot,
     /// Where a data file pick (noise playground) delivers.
@@ -288,6 +292,7 @@ impl Default for Panels {
     fn default() -> Self {
         Self {
             message: None,
+            history_scrolled: None,
             pick: PickSlot::default(),
             data_pick: PickSlot::default(),
             image_pick: PickSlot::default(),

@@ -329,38 +329,48 @@ impl MarblingApp {
             .map(|s| s.label.clone())
             .collect();
         let weak = ui.visuals().weak_text_color();
-        egui::ScrollArea::vertical()
-            .max_height(124.0)
-            .id_salt("history")
-            .stick_to_bottom(true)
-            .show_rows(ui, 18.0, n + 1 + undone.len(), |ui, rows| {
-                for i in rows {
-                    if i > n {
-                        let j = i - n - 1;
-                        let r = ui
-                            .selectable_label(
-                                false,
-                                RichText::new(format!("{i}. {}", undone[j])).color(weak),
-                            )
-                            .on_hover_text("Undone: click to redo up to here");
-                        if r.clicked() {
-                            redo_to = Some(j + 1);
-                        }
-                        rows_drawn.push((format!("redo-step-{}", j + 1), r));
-                        continue;
-                    }
-                    let label = if i == 0 {
-                        "start".to_owned()
-                    } else {
-                        format!("{i}. {}", self.editor.history.steps()[i - 1].label)
-                    };
-                    let r = ui.selectable_label(i == shown, label);
+        const LIST_HEIGHT: f32 = 124.0;
+        // A row is a selectable label: one interactive height.
+        let row_height = ui.spacing().interact_size.y;
+        let rows = n + 1 + undone.len();
+        let mut list = egui::ScrollArea::vertical()
+            .max_height(LIST_HEIGHT)
+            .id_salt("history");
+        if self.panels.history_scrolled != Some((shown, rows)) {
+            // A new step, an undo or a step played: the current row comes into view at
+            // the list's bottom (greyed undone steps below it stay reachable).
+            self.panels.history_scrolled = Some((shown, rows));
+            let row = row_height + ui.spacing().item_spacing.y;
+            list = list.vertical_scroll_offset(((shown + 1) as f32 * row - LIST_HEIGHT).max(0.0));
+        }
+        list.show_rows(ui, row_height, rows, |ui, rows| {
+            for i in rows {
+                if i > n {
+                    let j = i - n - 1;
+                    let r = ui
+                        .selectable_label(
+                            false,
+                            RichText::new(format!("{i}. {}", undone[j])).color(weak),
+                        )
+                        .on_hover_text("Undone: click to redo up to here");
                     if r.clicked() {
-                        clicked = Some(i);
+                        redo_to = Some(j + 1);
                     }
-                    rows_drawn.push((format!("history-{i}"), r));
+                    rows_drawn.push((format!("redo-step-{}", j + 1), r));
+                    continue;
                 }
-            });
+                let label = if i == 0 {
+                    "start".to_owned()
+                } else {
+                    format!("{i}. {}", self.editor.history.steps()[i - 1].label)
+                };
+                let r = ui.selectable_label(i == shown, label);
+                if r.clicked() {
+                    clicked = Some(i);
+                }
+                rows_drawn.push((format!("history-{i}"), r));
+            }
+        });
         for (name, r) in rows_drawn {
             self.control(name, &r);
         }
