@@ -192,6 +192,11 @@ pub struct Rendering {
 }
 
 impl Rendering {
+    /// The fraction of the exact frame drawn so far, while it is being drawn.
+    pub fn progress(&self) -> Option<f64> {
+        self.status.lock().ok().and_then(|s| s.progress)
+    }
+
     /// A renderer on `backend` (`gpu`: whether a wgpu render state exists).
     pub fn new(backend: String, gpu: bool) -> Self {
         Self {

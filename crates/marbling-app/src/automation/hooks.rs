@@ -38,10 +38,7 @@ impl MarblingApp {
         }
         let progress = self
             .rendering
-            .status
-            .lock()
-            .ok()
-            .and_then(|s| s.progress)
+            .progress()
             .filter(|_| self.rendering.gpu && self.editor.active.is_none() && !ready)
             // Rounded down: 1 only when done (and then the hook is gone).
             .map(|p| format!("{:.3}", (p * 1000.0).floor() / 1000.0));

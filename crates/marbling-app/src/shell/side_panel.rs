@@ -532,13 +532,7 @@ impl MarblingApp {
         }
         // The live preview's note, only while the preview is on screen (a drag, or an
         // exact frame still being drawn).
-        let drawing = self
-            .rendering
-            .status
-            .lock()
-            .ok()
-            .and_then(|s| s.progress)
-            .filter(|p| *p < 1.0);
+        let drawing = self.rendering.progress().filter(|p| *p < 1.0);
         let previewing = self.editor.active.is_some() || drawing.is_some();
         // One row, always the same height (a second row would move the canvas's edge
         // under the user's finger); the message comes last.
