@@ -14,7 +14,7 @@ pub fn num(v: f64) -> String {
     }
 }
 
-fn at(p: Point) -> String {
+pub(crate) fn at(p: Point) -> String {
     format!("({}, {})", num(p.x), num(p.y))
 }
 
@@ -36,7 +36,7 @@ pub fn heading(d: Vec2) -> String {
     format!("at {}°", num(deg))
 }
 
-fn plural(n: usize, one: &str, many: &str) -> String {
+pub(crate) fn plural(n: usize, one: &str, many: &str) -> String {
     if n == 1 {
         format!("1 {one}")
     } else {
@@ -44,7 +44,7 @@ fn plural(n: usize, one: &str, many: &str) -> String {
     }
 }
 
-fn range(lo: f64, hi: f64) -> String {
+pub(crate) fn range(lo: f64, hi: f64) -> String {
     if num(lo) == num(hi) {
         num(lo)
     } else {
@@ -65,132 +65,18 @@ pub fn radii_text(radii: &Radii) -> String {
     }
 }
 
-/// The caption of one op.
-pub fn describe_op(op: &Op) -> String {
-    match op {
-        Op::Drop(d) => format!(
-            "a drop of {}, radius {} px, at {}",
-            d.color,
-            num(d.radius),
-            at(d.center)
-        ),
-        Op::Spray(d) => format!(
-            "a spray of {}, radius {} px, at {}",
-            d.color,
-            num(d.radius),
-            at(d.center)
-        ),
-        Op::Drops(s) | Op::Sprays(s) => {
-            let what = if matches!(op, Op::Drops(_)) {
-                ("drop", "drops")
-            } else {
-                ("spray", "sprays")
-            };
-            let colors = if s.colors.len() == 1 {
-                format!("of {}", s.colors[0])
-            } else {
-                format!("in {} colours", s.colors.len())
-            };
-            format!(
-                "{} {colors}, radius {} px",
-                plural(s.centers.len(), what.0, what.1),
-                radii_text(&s.radii)
-            )
-        }
-        Op::Tine(t) => format!(
-            "a tine drawn {} through {}: shift {} px, decay {} px",
-            heading(t.direction),
-            at(t.origin),
-            num(t.alpha),
-            num(t.lambda)
-        ),
-        Op::Rake(r) => format!(
-            "rake drawn {}: tines {} px apart, shift {} px, decay {} px",
-            heading(r.direction * r.alpha.signum()),
-            num(r.spacing),
-            num(r.alpha.abs()),
-            num(r.lambda)
-        ),
-        Op::Comb(c) => {
-            let n = c.tines.len();
-            let gaps: Vec<f64> = c.tines.windows(2).map(|w| (w[1] - w[0]).abs()).collect();
-            let apart = if gaps.is_empty() {
-                String::new()
-            } else {
-                let lo = gaps.iter().cloned().fold(f64::INFINITY, f64::min);
-                let hi = gaps.iter().cloned().fold(0.0, f64::max);
-                format!(", {} px apart", range(lo, hi))
-            };
-            format!(
-                "comb drawn {}: {}{apart}, shift {} px, decay {} px",
-                heading(c.direction * c.alpha.signum()),
-                plural(n, "tine", "tines"),
-                num(c.alpha.abs()),
-                num(c.lambda)
-            )
-        }
-        Op::Wavy(w) => format!(
-            "wavy comb moving {}: amplitude {} px, wavelength {} px",
-            heading(Vec2::new(w.angle.cos(), w.angle.sin())),
-            num(w.amplitude),
-            num(w.wavelength)
-        ),
-        Op::Circular(c) => format!(
-            "circular comb around {}: {} px along the circle of radius {} px, decay {} px",
-            at(c.center),
-            num(c.alpha),
-            num(c.radius),
-            num(c.lambda)
-        ),
-        Op::Vortex(v) => format!(
-            "swirl at {}: strength {} px, decay {} px",
-            at(v.center),
-            num(v.alpha),
-            num(v.lambda)
-        ),
-        Op::Shift(s) => format!(
-            "the tank shifted by ({}, {}) px",
-            num(s.offset.x),
-            num(s.offset.y)
-        ),
-        Op::Turn(t) => format!(
-            "the tank turned {}° about {}",
-            num(t.angle.to_degrees()),
-            at(t.center)
-        ),
-        Op::Jiggle(j) => format!(
-            "the tank jiggled {}: wavelength {} px, {} px along, {} px across",
-            heading(Vec2::new(j.angle.cos(), j.angle.sin())),
-            num(j.wavelength),
-            num(j.along),
-            num(j.across)
-        ),
-        Op::Stylus(s) => {
-            let len: f64 = s.path.windows(2).map(|w| (w[1] - w[0]).hypot()).sum();
-            let tips = s.tips.as_ref().map_or(1, |t| t.len());
-            format!(
-                "stylus drawn {} px from {} with {}, wake {} px",
-                num(len),
-                at(s.path[0]),
-                plural(tips, "tip", "tips"),
-                num(s.wake)
-            )
-        }
-    }
-}
-
-/// The caption of one step (a gesture's ops): one op as [`describe_op`]; several of
+/// The caption of one step (a gesture's ops): one op as [`Op::caption`]; several of
 /// one type as "12 drops: …" with the first one's numbers.
 pub fn describe(ops: &[Op]) -> String {
     match ops {
         [] => "nothing".into(),
-        [op] => describe_op(op),
+        [op] => op.caption(),
         [first, rest @ ..] => {
             let kind = first.type_name();
             if rest.iter().all(|o| o.type_name() == kind) {
-                format!("{} {kind}s, the first {}", ops.len(), describe_op(first))
+                format!("{} {kind}s, the first {}", ops.len(), first.caption())
             } else {
-                format!("{} ops, the first {}", ops.len(), describe_op(first))
+                format!("{} ops, the first {}", ops.len(), first.caption())
             }
         }
     }
@@ -212,7 +98,7 @@ mod tests {
             lambda: 6.0,
         });
         assert_eq!(
-            describe_op(&comb),
+            comb.caption(),
             "comb drawn left to right: 9 tines, 40 px apart, shift 30 px, decay 6 px"
         );
         let back = Op::Rake(Rake {
@@ -223,7 +109,7 @@ mod tests {
             lambda: 8.0,
         });
         assert_eq!(
-            describe_op(&back),
+            back.caption(),
             "rake drawn bottom to top: tines 36 px apart, shift 48 px, decay 8 px"
         );
         let drop = Op::Drop(Drop {

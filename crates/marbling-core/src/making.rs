@@ -3,8 +3,7 @@
 //! before are done and the next step's ops ease in one after another, each from zero
 //! strength (combs, swirls), zero radius (drops) or zero length (strokes).
 
-use crate::{Design, Op, Point, Radii};
-use std::sync::Arc;
+use crate::Design;
 
 /// What is shown at one moment: the first `done` ops, then op `easing.0` at progress
 /// `easing.1` (0..1, before easing) if a step is under way.
@@ -48,7 +47,7 @@ pub fn design_at(design: &Design, position: f64) -> Design {
     let mut d = design.clone();
     d.truncate_ops(m.done);
     if let Some((k, t)) = m.easing {
-        d.ops.push(scaled(&design.ops[k], ease(t)));
+        d.ops.push(design.ops[k].scaled(ease(t)));
     }
     d
 }
@@ -59,63 +58,12 @@ pub fn ease(t: f64) -> f64 {
     t * t * (3.0 - 2.0 * t)
 }
 
-/// `op` at fraction `s` (0..=1) of its strength or radius.
-pub fn scaled(op: &Op, s: f64) -> Op {
-    let mut op = op.clone();
-    // Radii stay > 0 so the scaled op is still valid.
-    let tiny = 1e-6;
-    match &mut op {
-        Op::Drop(d) => d.radius = (d.radius * s).max(tiny),
-        Op::Spray(d) => d.radius = (d.radius * s).max(tiny),
-        Op::Tine(t) => t.alpha *= s,
-        Op::Rake(r) => r.alpha *= s,
-        Op::Wavy(w) => w.amplitude *= s,
-        Op::Circular(c) => c.alpha *= s,
-        Op::Vortex(v) => v.alpha *= s,
-        Op::Shift(t) => t.offset *= s,
-        Op::Turn(t) => t.angle *= s,
-        Op::Comb(c) => c.alpha *= s,
-        Op::Drops(d) | Op::Sprays(d) => {
-            d.radii = match &d.radii {
-                Radii::One(r) => Radii::One((r * s).max(tiny)),
-                Radii::Each(list) => Radii::Each(list.iter().map(|r| (r * s).max(tiny)).collect()),
-            }
-        }
-        Op::Jiggle(j) => {
-            j.along *= s;
-            j.across *= s;
-        }
-        // A stroke is drawn along its path: the first fraction s of its length.
-        Op::Stylus(st) => st.path = path_part(&st.path, s),
-    }
-    op
-}
-
-/// The first fraction `s` (0..=1) of a path's length (at least two points).
-fn path_part(path: &[Point], s: f64) -> Arc<[Point]> {
-    let total: f64 = path.windows(2).map(|w| (w[1] - w[0]).hypot()).sum();
-    let mut left = total * s.clamp(0.0, 1.0);
-    let mut out = vec![path[0]];
-    for w in path.windows(2) {
-        let len = (w[1] - w[0]).hypot();
-        if left >= len {
-            out.push(w[1]);
-            left -= len;
-        } else {
-            out.push(w[0] + (w[1] - w[0]) * (left / len));
-            break;
-        }
-    }
-    if out.len() < 2 {
-        out.push(path[0]);
-    }
-    out.into()
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::synth::{Mix, random_design};
+    use crate::{Op, Point};
+    use std::sync::Arc;
 
     #[test]
     fn moments_walk_the_steps_and_the_last_is_the_design() {
@@ -169,7 +117,7 @@ mod tests {
             wake: 4.0,
             tips: None,
         });
-        let Op::Stylus(half) = scaled(&op, 0.75) else {
+        let Op::Stylus(half) = op.scaled(0.75) else {
             panic!()
         };
         // Three quarters of 200 px: the first segment and half the second.
@@ -181,10 +129,10 @@ mod tests {
                 Point::new(100.0, 50.0)
             ]
         );
-        let Op::Stylus(none) = scaled(&op, 0.0) else {
+        let Op::Stylus(none) = op.scaled(0.0) else {
             panic!()
         };
         assert_eq!(none.sub_steps(), 0);
-        assert_eq!(scaled(&op, 1.0), op);
+        assert_eq!(op.scaled(1.0), op);
     }
 }

@@ -1,8 +1,7 @@
 //! Value rules of the design schema, each error naming its JSON path.
 
+use crate::Design;
 use crate::design::{MAX_OPS, MAX_SIDE};
-use crate::ops::{MAX_COMB_TINES, MAX_DROPS, MAX_STYLUS_POINTS, MAX_STYLUS_TIPS, MAX_STYLUS_WORK};
-use crate::{Design, DropSet, Op, Radii};
 use kurbo::{Point, Vec2};
 use std::fmt;
 
@@ -110,35 +109,6 @@ impl Checker<'_> {
         ok
     }
 
-    fn drop_set(&mut self, f: &dyn Fn(&str) -> String, d: &DropSet) {
-        if self.count(&f("centers"), d.len(), 1, MAX_DROPS, "centres") {
-            for (i, &c) in d.centers.iter().enumerate() {
-                self.point(&format!("{}[{i}]", f("centers")), c);
-            }
-        }
-        match &d.radii {
-            Radii::One(r) => self.positive(&f("radius"), *r),
-            Radii::Each(list) => {
-                if list.len() != d.len() {
-                    self.push(
-                        f("radii"),
-                        format!(
-                            "must hold one radius per centre ({}), got {}",
-                            d.len(),
-                            list.len()
-                        ),
-                    );
-                }
-                for (i, &r) in list.iter().enumerate() {
-                    self.positive(&format!("{}[{i}]", f("radii")), r);
-                }
-            }
-        }
-        if d.colors.is_empty() {
-            self.push(f("colors"), "must hold at least one colour, got none");
-        }
-    }
-
     /// Gesture spans: at least 2 ops each, inside the `ops` list, sorted and disjoint.
     /// A recipe's text lengths (the caption count is checked against the steps by the
     /// reader; the writer drops captions of steps that no longer exist).
@@ -191,121 +161,71 @@ impl Checker<'_> {
         }
     }
 
-    /// Checks the values of op number `i`.
-    pub(crate) fn op(&mut self, i: usize, op: &Op) {
-        let f = |name: &str| format!("ops[{i}].{name}");
-        match op {
-            Op::Drop(d) => {
-                self.point(&f("center"), d.center);
-                self.positive(&f("radius"), d.radius);
-            }
-            Op::Spray(s) => {
-                self.point(&f("center"), s.center);
-                self.positive(&f("radius"), s.radius);
-            }
-            Op::Tine(t) => {
-                self.point(&f("origin"), t.origin);
-                self.direction(&f("direction"), t.direction);
-                self.finite(&f("alpha"), t.alpha);
-                self.positive(&f("lambda"), t.lambda);
-            }
-            Op::Rake(r) => {
-                self.point(&f("origin"), r.origin);
-                self.direction(&f("direction"), r.direction);
-                self.positive(&f("spacing"), r.spacing);
-                self.finite(&f("alpha"), r.alpha);
-                self.positive(&f("lambda"), r.lambda);
-            }
-            Op::Wavy(w) => {
-                self.finite(&f("angle"), w.angle);
-                self.finite(&f("amplitude"), w.amplitude);
-                self.positive(&f("wavelength"), w.wavelength);
-                self.finite(&f("phase"), w.phase);
-            }
-            Op::Circular(c) => {
-                self.point(&f("center"), c.center);
-                self.positive(&f("radius"), c.radius);
-                self.finite(&f("alpha"), c.alpha);
-                self.positive(&f("lambda"), c.lambda);
-            }
-            Op::Vortex(v) => {
-                self.point(&f("center"), v.center);
-                self.finite(&f("alpha"), v.alpha);
-                self.positive(&f("lambda"), v.lambda);
-            }
-            Op::Shift(s) => self.point(&f("offset"), s.offset.to_point()),
-            Op::Turn(t) => {
-                self.point(&f("center"), t.center);
-                self.finite(&f("angle"), t.angle);
-            }
-            Op::Comb(c) => {
-                self.point(&f("origin"), c.origin);
-                self.direction(&f("direction"), c.direction);
-                if self.count(
-                    &f("tines"),
-                    c.tines.len(),
-                    1,
-                    MAX_COMB_TINES,
-                    "tine offsets",
-                ) {
-                    for (k, &o) in c.tines.iter().enumerate() {
-                        self.finite(&format!("{}[{k}]", f("tines")), o);
-                    }
-                }
-                self.finite(&f("alpha"), c.alpha);
-                self.positive(&f("lambda"), c.lambda);
-            }
-            Op::Drops(d) | Op::Sprays(d) => self.drop_set(&f, d),
-            Op::Jiggle(j) => {
-                self.finite(&f("angle"), j.angle);
-                self.positive(&f("wavelength"), j.wavelength);
-                let along_ok = self.finite(&f("along"), j.along);
-                self.finite(&f("across"), j.across);
-                self.finite(&f("phase"), j.phase);
-                let ka = j.k_along();
-                if along_ok && j.wavelength > 0.0 && ka.abs() >= 1.0 {
-                    self.push(
-                        f("along"),
-                        format!(
-                            "must satisfy |2π·along/wavelength| < 1 (the jiggle must not fold the tank), got {:.4} for along {} and wavelength {}; use a smaller along or a longer wavelength",
-                            ka.abs(),
-                            j.along,
-                            j.wavelength
-                        ),
-                    );
-                }
-            }
-            Op::Stylus(s) => {
-                let path_ok = self.count(&f("path"), s.path.len(), 2, MAX_STYLUS_POINTS, "points");
-                let mut finite = path_ok;
-                for (k, &p) in s.path.iter().enumerate() {
-                    let ok = self.finite(&format!("{}[{k}][0]", f("path")), p.x)
-                        & self.finite(&format!("{}[{k}][1]", f("path")), p.y);
-                    finite &= ok;
-                }
-                self.positive(&f("wake"), s.wake);
-                let mut tips_ok = true;
-                if let Some(tips) = &s.tips {
-                    tips_ok = self.count(&f("tips"), tips.len(), 1, MAX_STYLUS_TIPS, "tip offsets");
-                    for (k, &o) in tips.iter().enumerate() {
-                        tips_ok &= self.finite(&format!("{}[{k}]", f("tips")), o);
-                    }
-                }
-                if finite && tips_ok && s.wake.is_finite() && s.wake > 0.0 {
-                    let work = s.sub_steps().saturating_mul(s.tip_count());
-                    if work > MAX_STYLUS_WORK {
-                        self.push(
-                            f("path"),
-                            format!(
-                                "needs {} sub-steps × {} tip(s) = {work}, more than {MAX_STYLUS_WORK}; use a larger wake or a shorter path",
-                                s.sub_steps(),
-                                s.tip_count()
-                            ),
-                        );
-                    }
-                }
-            }
+    /// The rules of op number `index`.
+    pub(crate) fn op(&mut self, index: usize) -> OpCheck<'_> {
+        OpCheck {
+            checker: Checker {
+                errors: &mut *self.errors,
+            },
+            index,
         }
+    }
+}
+
+/// The value rules as each op type's file applies them ([`crate::ops::OpType::check`]):
+/// field names are relative to the op (`"radius"`, `"tines[3]"`), errors name
+/// `ops[i].<field>`.
+pub(crate) struct OpCheck<'a> {
+    checker: Checker<'a>,
+    index: usize,
+}
+
+impl OpCheck<'_> {
+    fn path(&self, field: &str) -> String {
+        format!("ops[{}].{field}", self.index)
+    }
+
+    /// Reports a broken rule at `field`.
+    pub(crate) fn push(&mut self, field: &str, message: impl Into<String>) {
+        let path = self.path(field);
+        self.checker.push(path, message);
+    }
+
+    /// A finite number; false (reported) when not.
+    pub(crate) fn finite(&mut self, field: &str, v: f64) -> bool {
+        let path = self.path(field);
+        self.checker.finite(&path, v)
+    }
+
+    /// A finite number > 0.
+    pub(crate) fn positive(&mut self, field: &str, v: f64) {
+        let path = self.path(field);
+        self.checker.positive(&path, v);
+    }
+
+    /// A point with finite coordinates.
+    pub(crate) fn point(&mut self, field: &str, p: Point) {
+        let path = self.path(field);
+        self.checker.point(&path, p);
+    }
+
+    /// A finite, non-zero direction.
+    pub(crate) fn direction(&mut self, field: &str, v: Vec2) {
+        let path = self.path(field);
+        self.checker.direction(&path, v);
+    }
+
+    /// A list's length in `lo..=hi` (`what` names its items); false (reported) when not.
+    pub(crate) fn count(
+        &mut self,
+        field: &str,
+        n: usize,
+        lo: usize,
+        hi: usize,
+        what: &str,
+    ) -> bool {
+        let path = self.path(field);
+        self.checker.count(&path, n, lo, hi, what)
     }
 }
 
@@ -321,7 +241,7 @@ impl Design {
         c.side("height", self.height);
         c.op_count(self.counted_ops());
         for (i, op) in self.ops.iter().enumerate() {
-            c.op(i, op);
+            op.check(&mut c.op(i));
         }
         c.gestures(&self.gestures, self.ops.len());
         if let Some(r) = &self.recipe {

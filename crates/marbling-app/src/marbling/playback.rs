@@ -3,7 +3,7 @@
 //! swirls), zero radius (drops) or zero length (strokes); it can pause, step and scrub.
 
 use crate::marbling::shown::Shown;
-use marbling_core::making::{ease, moment, scaled};
+use marbling_core::making::{ease, moment};
 use marbling_core::{Design, Op};
 use std::sync::Arc;
 
@@ -91,7 +91,7 @@ impl Playback {
             Some((k, frac)) => Shown {
                 design: full.clone(),
                 ops: k,
-                tail: vec![scaled(&full.ops[k], ease(frac))],
+                tail: vec![full.ops[k].scaled(ease(frac))],
             },
             None => Shown {
                 design: full.clone(),
@@ -146,7 +146,7 @@ mod tests {
             Some(ease(0.5))
         );
         assert_eq!(Playback::at(99.0, steps).position(), steps as f64);
-        assert_eq!(scaled(&full.ops[3], 1.0), full.ops[3]);
+        assert_eq!(full.ops[3].scaled(1.0), full.ops[3]);
         assert_eq!((ease(0.0), ease(0.5), ease(1.0)), (0.0, 0.5, 1.0));
     }
 }

@@ -94,7 +94,7 @@ pub fn draw_tool(
             painter.circle_filled(at(v.center), 2.0, Color32::WHITE);
         }
         Op::Stylus(s) => {
-            let Op::Stylus(part) = marbling_core::making::scaled(op, e) else {
+            let Op::Stylus(part) = op.scaled(e) else {
                 return;
             };
             polyline(painter, part.path.iter().map(|p| at(*p)).collect());

@@ -14,9 +14,12 @@
 //! jiggle, stylus; see [`crate::Op`]). A design is written with the lowest version that
 //! holds it: 1 when it uses neither v2's surfaces nor v3's ops.
 
+mod op_fields;
 mod read;
 mod read_surface;
 mod write;
+
+pub(crate) use op_fields::{FieldReader, FieldWriter};
 
 use crate::Design;
 use crate::validate::ValidationErrors;

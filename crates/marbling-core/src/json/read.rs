@@ -1,17 +1,13 @@
 //! The design reader: JSON value → [`Design`], every problem with its path.
 
+use super::op_fields::FieldReader;
 use crate::design::{CURRENT_VERSION, SUPPORTED_VERSIONS};
 use crate::ops::{OP_TYPES_V3, op_fields};
 use crate::validate::{Checker, FieldError};
-use crate::{
-    Circular, Comb, Design, Drop, DropSet, GestureSpan, Jiggle, Op, Radii, Rake, Recipe, Rgb8,
-    Shift, Spray, Stylus, Tine, Turn, Vortex, Wavy,
-};
-use kurbo::{Point, Vec2};
+use crate::{Design, GestureSpan, Op, Recipe, Rgb8};
 use marbling_json::{PathReader, join, short, type_of};
 use serde_json::{Map, Value};
 use std::ops::{Deref, DerefMut};
-use std::sync::Arc;
 
 /// Reads a design from its JSON value: the design, or every problem found.
 pub(super) fn design(value: &Value) -> Result<Design, Vec<FieldError>> {
@@ -71,14 +67,6 @@ impl Reader {
         }
     }
 
-    fn point(&mut self, path: &str, obj: &Map<String, Value>, name: &str) -> Option<Point> {
-        self.pair(path, obj, name).map(Point::from)
-    }
-
-    fn vector(&mut self, path: &str, obj: &Map<String, Value>, name: &str) -> Option<Vec2> {
-        self.pair(path, obj, name).map(Vec2::from)
-    }
-
     pub(super) fn color(
         &mut self,
         path: &str,
@@ -97,56 +85,6 @@ impl Reader {
                 None
             }
         }
-    }
-
-    fn numbers(&mut self, path: &str, obj: &Map<String, Value>, name: &str) -> Option<Arc<[f64]>> {
-        self.json
-            .list(path, obj, name, "numbers", |r, p, v| r.number_value(p, v))
-            .map(Arc::from)
-    }
-
-    fn points(&mut self, path: &str, obj: &Map<String, Value>, name: &str) -> Option<Arc<[Point]>> {
-        self.json
-            .list(path, obj, name, "[x, y] points", |r, p, v| {
-                r.pair_value(p, v).map(Point::from)
-            })
-            .map(Arc::from)
-    }
-
-    fn colors(&mut self, path: &str, obj: &Map<String, Value>, name: &str) -> Option<Arc<[Rgb8]>> {
-        self.json
-            .list(path, obj, name, "colours \"#rrggbb\"", |r, p, v| {
-                let c = v.as_str().and_then(|s| s.parse::<Rgb8>().ok());
-                if c.is_none() {
-                    r.push(p, format!("must be a colour \"#rrggbb\", got {}", short(v)));
-                }
-                c
-            })
-            .map(Arc::from)
-    }
-
-    /// A drop pattern's fields: `centers`, `radius` or `radii` (one of them), `colors`.
-    fn drop_set(&mut self, p: &str, obj: &Map<String, Value>) -> Option<DropSet> {
-        let centers = self.points(p, obj, "centers");
-        let radii = match (obj.contains_key("radius"), obj.contains_key("radii")) {
-            (true, false) => self.number(p, obj, "radius").map(Radii::One),
-            (false, true) => self.numbers(p, obj, "radii").map(Radii::Each),
-            (both, _) => {
-                let m = if both {
-                    "give either \"radius\" (one for all) or \"radii\" (one per centre), not both"
-                } else {
-                    "missing; give \"radius\" (one for all) or \"radii\" (one per centre)"
-                };
-                self.push(join(p, "radius"), m);
-                None
-            }
-        };
-        let colors = self.colors(p, obj, "colors");
-        Some(DropSet {
-            centers: centers?,
-            radii: radii?,
-            colors: colors?,
-        })
     }
 
     fn side(&mut self, obj: &Map<String, Value>, name: &str) -> Option<u32> {
@@ -210,153 +148,13 @@ impl Reader {
                 ),
             );
         }
-        let p = path.as_str();
-        let op = match kind {
-            "drop" | "spray" => {
-                let (center, radius, color) = (
-                    self.point(p, obj, "center"),
-                    self.number(p, obj, "radius"),
-                    self.color(p, obj, "color"),
-                );
-                let (center, radius, color) = (center?, radius?, color?);
-                if kind == "drop" {
-                    Op::Drop(Drop {
-                        center,
-                        radius,
-                        color,
-                    })
-                } else {
-                    Op::Spray(Spray {
-                        center,
-                        radius,
-                        color,
-                    })
-                }
-            }
-            "tine" => {
-                let (origin, direction) = (
-                    self.point(p, obj, "origin"),
-                    self.vector(p, obj, "direction"),
-                );
-                let (alpha, lambda) = (self.number(p, obj, "alpha"), self.number(p, obj, "lambda"));
-                Op::Tine(Tine {
-                    origin: origin?,
-                    direction: direction?,
-                    alpha: alpha?,
-                    lambda: lambda?,
-                })
-            }
-            "rake" => {
-                let (origin, direction) = (
-                    self.point(p, obj, "origin"),
-                    self.vector(p, obj, "direction"),
-                );
-                let spacing = self.number(p, obj, "spacing");
-                let (alpha, lambda) = (self.number(p, obj, "alpha"), self.number(p, obj, "lambda"));
-                Op::Rake(Rake {
-                    origin: origin?,
-                    direction: direction?,
-                    spacing: spacing?,
-                    alpha: alpha?,
-                    lambda: lambda?,
-                })
-            }
-            "wavy" => {
-                let (angle, amplitude) = (
-                    self.number(p, obj, "angle"),
-                    self.number(p, obj, "amplitude"),
-                );
-                let (wavelength, phase) = (
-                    self.number(p, obj, "wavelength"),
-                    self.number(p, obj, "phase"),
-                );
-                Op::Wavy(Wavy {
-                    angle: angle?,
-                    amplitude: amplitude?,
-                    wavelength: wavelength?,
-                    phase: phase?,
-                })
-            }
-            "circular" => {
-                let (center, radius) =
-                    (self.point(p, obj, "center"), self.number(p, obj, "radius"));
-                let (alpha, lambda) = (self.number(p, obj, "alpha"), self.number(p, obj, "lambda"));
-                Op::Circular(Circular {
-                    center: center?,
-                    radius: radius?,
-                    alpha: alpha?,
-                    lambda: lambda?,
-                })
-            }
-            "vortex" => {
-                let center = self.point(p, obj, "center");
-                let (alpha, lambda) = (self.number(p, obj, "alpha"), self.number(p, obj, "lambda"));
-                Op::Vortex(Vortex {
-                    center: center?,
-                    alpha: alpha?,
-                    lambda: lambda?,
-                })
-            }
-            "shift" => Op::Shift(Shift {
-                offset: self.vector(p, obj, "offset")?,
-            }),
-            "turn" => {
-                let (center, angle) = (self.point(p, obj, "center"), self.number(p, obj, "angle"));
-                Op::Turn(Turn {
-                    center: center?,
-                    angle: angle?,
-                })
-            }
-            "comb" => {
-                let (origin, direction) = (
-                    self.point(p, obj, "origin"),
-                    self.vector(p, obj, "direction"),
-                );
-                let tines = self.numbers(p, obj, "tines");
-                let (alpha, lambda) = (self.number(p, obj, "alpha"), self.number(p, obj, "lambda"));
-                Op::Comb(Comb {
-                    origin: origin?,
-                    direction: direction?,
-                    tines: tines?,
-                    alpha: alpha?,
-                    lambda: lambda?,
-                })
-            }
-            "drops" => Op::Drops(self.drop_set(p, obj)?),
-            "sprays" => Op::Sprays(self.drop_set(p, obj)?),
-            "jiggle" => {
-                let (angle, wavelength) = (
-                    self.number(p, obj, "angle"),
-                    self.number(p, obj, "wavelength"),
-                );
-                let (along, across, phase) = (
-                    self.number(p, obj, "along"),
-                    self.number(p, obj, "across"),
-                    self.number(p, obj, "phase"),
-                );
-                Op::Jiggle(Jiggle {
-                    angle: angle?,
-                    wavelength: wavelength?,
-                    along: along?,
-                    across: across?,
-                    phase: phase?,
-                })
-            }
-            _ => {
-                let (path_points, wake) =
-                    (self.points(p, obj, "path"), self.number(p, obj, "wake"));
-                let tips = match obj.get("tips") {
-                    None => Some(None),
-                    Some(_) => self.numbers(p, obj, "tips").map(Some),
-                };
-                Op::Stylus(Stylus {
-                    path: path_points?,
-                    wake: wake?,
-                    tips: tips?,
-                })
-            }
+        let mut reader = FieldReader {
+            reader: self,
+            path: &path,
+            obj,
         };
-        self.rules().op(i, &op);
+        let op = Op::read(kind, &mut reader)?;
+        op.check(&mut self.rules().op(i));
         Some(op)
     }
 

@@ -1,89 +1,17 @@
 //! The design writer: [`Design`] → JSON in schema field order.
 
+use super::op_fields::{FieldWriter, num};
 use crate::design::CURRENT_VERSION;
 use crate::surface::{Overlay, Palette};
-use crate::{Design, Drop, Op, Radii, Rgb8, Spray};
-use kurbo::Point;
+use crate::{Design, Op, Rgb8};
 use serde_json::{Map, Value, json};
 
-/// A number written as an integer when it is one (shorter documents and share links).
-fn num(v: f64) -> Value {
-    if v.fract() == 0.0 && v.abs() < 9.0e15 {
-        json!(v as i64)
-    } else {
-        json!(v)
-    }
-}
-
-fn pair(x: f64, y: f64) -> Value {
-    json!([num(x), num(y)])
-}
-
+/// An op as its JSON object: `type`, then its fields ([`crate::ops::OpType::write`]).
 fn op_value(op: &Op) -> Value {
-    let t = op.type_name();
-    match op {
-        Op::Drop(Drop {
-            center,
-            radius,
-            color,
-        })
-        | Op::Spray(Spray {
-            center,
-            radius,
-            color,
-        }) => {
-            json!({"type": t, "center": pair(center.x, center.y), "radius": num(*radius), "color": color.to_string()})
-        }
-        Op::Tine(o) => json!({"type": t, "origin": pair(o.origin.x, o.origin.y),
-            "direction": pair(o.direction.x, o.direction.y), "alpha": num(o.alpha), "lambda": num(o.lambda)}),
-        Op::Rake(o) => json!({"type": t, "origin": pair(o.origin.x, o.origin.y),
-            "direction": pair(o.direction.x, o.direction.y), "spacing": num(o.spacing),
-            "alpha": num(o.alpha), "lambda": num(o.lambda)}),
-        Op::Wavy(o) => json!({"type": t, "angle": num(o.angle), "amplitude": num(o.amplitude),
-            "wavelength": num(o.wavelength), "phase": num(o.phase)}),
-        Op::Circular(o) => json!({"type": t, "center": pair(o.center.x, o.center.y),
-            "radius": num(o.radius), "alpha": num(o.alpha), "lambda": num(o.lambda)}),
-        Op::Vortex(o) => json!({"type": t, "center": pair(o.center.x, o.center.y),
-            "alpha": num(o.alpha), "lambda": num(o.lambda)}),
-        Op::Shift(o) => json!({"type": t, "offset": pair(o.offset.x, o.offset.y)}),
-        Op::Turn(o) => json!({"type": t, "center": pair(o.center.x, o.center.y),
-            "angle": num(o.angle)}),
-        Op::Comb(o) => json!({"type": t, "origin": pair(o.origin.x, o.origin.y),
-            "direction": pair(o.direction.x, o.direction.y), "tines": nums(&o.tines),
-            "alpha": num(o.alpha), "lambda": num(o.lambda)}),
-        Op::Drops(d) | Op::Sprays(d) => {
-            let mut m = Map::new();
-            m.insert("type".into(), json!(t));
-            m.insert("centers".into(), points(&d.centers));
-            match &d.radii {
-                Radii::One(r) => m.insert("radius".into(), num(*r)),
-                Radii::Each(list) => m.insert("radii".into(), nums(list)),
-            };
-            let colors = d.colors.iter().map(|c| json!(c.to_string())).collect();
-            m.insert("colors".into(), Value::Array(colors));
-            Value::Object(m)
-        }
-        Op::Jiggle(o) => json!({"type": t, "angle": num(o.angle), "wavelength": num(o.wavelength),
-            "along": num(o.along), "across": num(o.across), "phase": num(o.phase)}),
-        Op::Stylus(o) => {
-            let mut m = Map::new();
-            m.insert("type".into(), json!(t));
-            m.insert("path".into(), points(&o.path));
-            m.insert("wake".into(), num(o.wake));
-            if let Some(tips) = &o.tips {
-                m.insert("tips".into(), nums(tips));
-            }
-            Value::Object(m)
-        }
-    }
-}
-
-fn nums(list: &[f64]) -> Value {
-    Value::Array(list.iter().map(|&v| num(v)).collect())
-}
-
-fn points(list: &[Point]) -> Value {
-    Value::Array(list.iter().map(|p| pair(p.x, p.y)).collect())
+    let mut w = FieldWriter { map: Map::new() };
+    w.map.insert("type".into(), json!(op.type_name()));
+    op.write(&mut w);
+    Value::Object(w.map)
 }
 
 fn palette_value(p: &Palette) -> Value {

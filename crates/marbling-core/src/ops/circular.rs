@@ -1,6 +1,11 @@
 //! Circular comb: tines moving on circles about a centre.
 
+use super::OpType;
 use super::rotation::rotate_about;
+use super::rounding as round;
+use crate::caption::{at, num};
+use crate::json::{FieldReader, FieldWriter};
+use crate::validate::OpCheck;
 use kurbo::Point;
 
 /// Tines moving on circles about `center`, the strongest on the circle of `radius`.
@@ -34,5 +39,55 @@ impl Circular {
     /// Undoes [`Circular::forward`] (ρ is unchanged by the rotation).
     pub fn inverse(&self, p: Point) -> Point {
         rotate_about(self.center, p, -1.0, |r| self.angle(r))
+    }
+}
+
+impl OpType for Circular {
+    const FIELDS: &'static [&'static str] = &["type", "center", "radius", "alpha", "lambda"];
+
+    fn read(r: &mut FieldReader<'_>) -> Option<Self> {
+        let (center, radius) = (r.point("center"), r.number("radius"));
+        let (alpha, lambda) = (r.number("alpha"), r.number("lambda"));
+        Some(Circular {
+            center: center?,
+            radius: radius?,
+            alpha: alpha?,
+            lambda: lambda?,
+        })
+    }
+
+    fn write(&self, w: &mut FieldWriter) {
+        w.point("center", self.center);
+        w.number("radius", self.radius);
+        w.number("alpha", self.alpha);
+        w.number("lambda", self.lambda);
+    }
+
+    fn check(&self, c: &mut OpCheck<'_>) {
+        c.point("center", self.center);
+        c.positive("radius", self.radius);
+        c.finite("alpha", self.alpha);
+        c.positive("lambda", self.lambda);
+    }
+
+    fn round(&mut self) {
+        self.center = round::point(self.center);
+        self.radius = round::positive(self.radius);
+        self.alpha = round::length(self.alpha);
+        self.lambda = round::positive(self.lambda);
+    }
+
+    fn scale(&mut self, s: f64) {
+        self.alpha *= s;
+    }
+
+    fn caption(&self, _tag: &str) -> String {
+        format!(
+            "circular comb around {}: {} px along the circle of radius {} px, decay {} px",
+            at(self.center),
+            num(self.alpha),
+            num(self.radius),
+            num(self.lambda)
+        )
     }
 }

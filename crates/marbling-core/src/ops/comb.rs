@@ -1,5 +1,10 @@
 //! Comb: a finite comb whose tines move together along one direction.
 
+use super::OpType;
+use super::rounding as round;
+use crate::caption::{heading, num, plural, range};
+use crate::json::{FieldReader, FieldWriter};
+use crate::validate::OpCheck;
 use kurbo::{Point, Vec2};
 use std::sync::Arc;
 
@@ -46,5 +51,74 @@ impl Comb {
     /// Undoes [`Comb::forward`].
     pub fn inverse(&self, p: Point) -> Point {
         p - self.shift(p)
+    }
+}
+
+impl OpType for Comb {
+    const FIELDS: &'static [&'static str] =
+        &["type", "origin", "direction", "tines", "alpha", "lambda"];
+
+    fn read(r: &mut FieldReader<'_>) -> Option<Self> {
+        let (origin, direction) = (r.point("origin"), r.vector("direction"));
+        let tines = r.numbers("tines");
+        let (alpha, lambda) = (r.number("alpha"), r.number("lambda"));
+        Some(Comb {
+            origin: origin?,
+            direction: direction?,
+            tines: tines?,
+            alpha: alpha?,
+            lambda: lambda?,
+        })
+    }
+
+    fn write(&self, w: &mut FieldWriter) {
+        w.point("origin", self.origin);
+        w.vector("direction", self.direction);
+        w.numbers("tines", &self.tines);
+        w.number("alpha", self.alpha);
+        w.number("lambda", self.lambda);
+    }
+
+    fn check(&self, c: &mut OpCheck<'_>) {
+        c.point("origin", self.origin);
+        c.direction("direction", self.direction);
+        if c.count("tines", self.tines.len(), 1, MAX_COMB_TINES, "tine offsets") {
+            for (k, &o) in self.tines.iter().enumerate() {
+                c.finite(&format!("tines[{k}]"), o);
+            }
+        }
+        c.finite("alpha", self.alpha);
+        c.positive("lambda", self.lambda);
+    }
+
+    fn round(&mut self) {
+        self.origin = round::point(self.origin);
+        self.direction = round::direction(self.direction);
+        self.tines = self.tines.iter().map(|&o| round::length(o)).collect();
+        self.alpha = round::length(self.alpha);
+        self.lambda = round::positive(self.lambda);
+    }
+
+    fn scale(&mut self, s: f64) {
+        self.alpha *= s;
+    }
+
+    fn caption(&self, _tag: &str) -> String {
+        let n = self.tines.len();
+        let gaps: Vec<f64> = self.tines.windows(2).map(|w| (w[1] - w[0]).abs()).collect();
+        let apart = if gaps.is_empty() {
+            String::new()
+        } else {
+            let lo = gaps.iter().cloned().fold(f64::INFINITY, f64::min);
+            let hi = gaps.iter().cloned().fold(0.0, f64::max);
+            format!(", {} px apart", range(lo, hi))
+        };
+        format!(
+            "comb drawn {}: {}{apart}, shift {} px, decay {} px",
+            heading(self.direction * self.alpha.signum()),
+            plural(n, "tine", "tines"),
+            num(self.alpha.abs()),
+            num(self.lambda)
+        )
     }
 }

@@ -1,6 +1,12 @@
 //! Ink drop: a disc of new ink that pushes all older ink radially outwards.
 
+use super::MIN_SCALED_RADIUS;
+use super::OpType;
+use super::rounding as round;
 use crate::Rgb8;
+use crate::caption::{at, num};
+use crate::json::{FieldReader, FieldWriter};
+use crate::validate::OpCheck;
 use kurbo::Point;
 
 /// An ink drop of radius `radius` (design pixels) at `center`.
@@ -38,5 +44,47 @@ impl Drop {
             return None;
         }
         Some(self.center + v * (1.0 - r2 / rho2).sqrt())
+    }
+}
+
+impl OpType for Drop {
+    const FIELDS: &'static [&'static str] = &["type", "center", "radius", "color"];
+
+    fn read(r: &mut FieldReader<'_>) -> Option<Self> {
+        let (center, radius, color) = (r.point("center"), r.number("radius"), r.color("color"));
+        Some(Drop {
+            center: center?,
+            radius: radius?,
+            color: color?,
+        })
+    }
+
+    fn write(&self, w: &mut FieldWriter) {
+        w.point("center", self.center);
+        w.number("radius", self.radius);
+        w.color("color", self.color);
+    }
+
+    fn check(&self, c: &mut OpCheck<'_>) {
+        c.point("center", self.center);
+        c.positive("radius", self.radius);
+    }
+
+    fn round(&mut self) {
+        self.center = round::point(self.center);
+        self.radius = round::positive(self.radius);
+    }
+
+    fn scale(&mut self, s: f64) {
+        self.radius = (self.radius * s).max(MIN_SCALED_RADIUS);
+    }
+
+    fn caption(&self, _tag: &str) -> String {
+        format!(
+            "a drop of {}, radius {} px, at {}",
+            self.color,
+            num(self.radius),
+            at(self.center)
+        )
     }
 }

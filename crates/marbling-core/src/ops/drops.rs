@@ -1,8 +1,14 @@
 //! Drop patterns: many drops (or spray droplets) in one op, exactly the sequence of
 //! single `drop` (or `spray`) ops i = 0, 1, … with colour `colors[i mod len]`.
 
+use super::MIN_SCALED_RADIUS;
+use super::OpType;
+use super::rounding as round;
 use super::{Drop, Op, Spray};
 use crate::Rgb8;
+use crate::caption::{plural, radii_text};
+use crate::json::{FieldReader, FieldWriter};
+use crate::validate::OpCheck;
 use kurbo::Point;
 use std::sync::Arc;
 
@@ -72,5 +78,108 @@ impl DropSet {
                 })
             }
         })
+    }
+}
+
+impl OpType for DropSet {
+    const FIELDS: &'static [&'static str] = &["type", "centers", "radius", "radii", "colors"];
+
+    /// `centers`, `radius` or `radii` (one of them), `colors`.
+    fn read(r: &mut FieldReader<'_>) -> Option<Self> {
+        let centers = r.points("centers");
+        let radii = match (r.has("radius"), r.has("radii")) {
+            (true, false) => r.number("radius").map(Radii::One),
+            (false, true) => r.numbers("radii").map(Radii::Each),
+            (both, _) => {
+                let m = if both {
+                    "give either \"radius\" (one for all) or \"radii\" (one per centre), not both"
+                } else {
+                    "missing; give \"radius\" (one for all) or \"radii\" (one per centre)"
+                };
+                r.push("radius", m);
+                None
+            }
+        };
+        let colors = r.colors("colors");
+        Some(DropSet {
+            centers: centers?,
+            radii: radii?,
+            colors: colors?,
+        })
+    }
+
+    fn write(&self, w: &mut FieldWriter) {
+        w.points("centers", &self.centers);
+        match &self.radii {
+            Radii::One(r) => w.number("radius", *r),
+            Radii::Each(list) => w.numbers("radii", list),
+        }
+        w.colors("colors", &self.colors);
+    }
+
+    fn check(&self, c: &mut OpCheck<'_>) {
+        if c.count("centers", self.len(), 1, MAX_DROPS, "centres") {
+            for (i, &p) in self.centers.iter().enumerate() {
+                c.point(&format!("centers[{i}]"), p);
+            }
+        }
+        match &self.radii {
+            Radii::One(r) => c.positive("radius", *r),
+            Radii::Each(list) => {
+                if list.len() != self.len() {
+                    c.push(
+                        "radii",
+                        format!(
+                            "must hold one radius per centre ({}), got {}",
+                            self.len(),
+                            list.len()
+                        ),
+                    );
+                }
+                for (i, &r) in list.iter().enumerate() {
+                    c.positive(&format!("radii[{i}]"), r);
+                }
+            }
+        }
+        if self.colors.is_empty() {
+            c.push("colors", "must hold at least one colour, got none");
+        }
+    }
+
+    fn round(&mut self) {
+        self.centers = self.centers.iter().map(|&p| round::point(p)).collect();
+        self.radii = match &self.radii {
+            Radii::One(r) => Radii::One(round::positive(*r)),
+            Radii::Each(list) => Radii::Each(list.iter().map(|&r| round::positive(r)).collect()),
+        };
+    }
+
+    fn scale(&mut self, s: f64) {
+        self.radii = match &self.radii {
+            Radii::One(r) => Radii::One((r * s).max(MIN_SCALED_RADIUS)),
+            Radii::Each(list) => Radii::Each(
+                list.iter()
+                    .map(|r| (r * s).max(MIN_SCALED_RADIUS))
+                    .collect(),
+            ),
+        }
+    }
+
+    fn caption(&self, tag: &str) -> String {
+        let (one, many) = if tag == "sprays" {
+            ("spray", "sprays")
+        } else {
+            ("drop", "drops")
+        };
+        let colors = if self.colors.len() == 1 {
+            format!("of {}", self.colors[0])
+        } else {
+            format!("in {} colours", self.colors.len())
+        };
+        format!(
+            "{} {colors}, radius {} px",
+            plural(self.centers.len(), one, many),
+            radii_text(&self.radii)
+        )
     }
 }

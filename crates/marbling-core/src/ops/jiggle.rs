@@ -5,6 +5,11 @@
 //! preserving when A ≠ 0: its Jacobian is 1 + kA·cos φ. With A = 0 it is a shear, like
 //! the wavy comb.
 
+use super::OpType;
+use super::rounding as round;
+use crate::caption::{heading, num};
+use crate::json::{FieldReader, FieldWriter};
+use crate::validate::OpCheck;
 use kurbo::{Point, Vec2};
 use std::f64::consts::TAU;
 
@@ -87,5 +92,73 @@ impl Jiggle {
         let (u, _, k) = self.frame();
         let phi = k * p.to_vec2().dot(u) + self.phase;
         1.0 + k * self.along * phi.cos()
+    }
+}
+
+impl OpType for Jiggle {
+    const FIELDS: &'static [&'static str] =
+        &["type", "angle", "wavelength", "along", "across", "phase"];
+
+    fn read(r: &mut FieldReader<'_>) -> Option<Self> {
+        let (angle, wavelength) = (r.number("angle"), r.number("wavelength"));
+        let (along, across, phase) = (r.number("along"), r.number("across"), r.number("phase"));
+        Some(Jiggle {
+            angle: angle?,
+            wavelength: wavelength?,
+            along: along?,
+            across: across?,
+            phase: phase?,
+        })
+    }
+
+    fn write(&self, w: &mut FieldWriter) {
+        w.number("angle", self.angle);
+        w.number("wavelength", self.wavelength);
+        w.number("along", self.along);
+        w.number("across", self.across);
+        w.number("phase", self.phase);
+    }
+
+    fn check(&self, c: &mut OpCheck<'_>) {
+        c.finite("angle", self.angle);
+        c.positive("wavelength", self.wavelength);
+        let along_ok = c.finite("along", self.along);
+        c.finite("across", self.across);
+        c.finite("phase", self.phase);
+        let ka = self.k_along();
+        if along_ok && self.wavelength > 0.0 && ka.abs() >= 1.0 {
+            c.push(
+                "along",
+                format!(
+                    "must satisfy |2π·along/wavelength| < 1 (the jiggle must not fold the tank), got {:.4} for along {} and wavelength {}; use a smaller along or a longer wavelength",
+                    ka.abs(),
+                    self.along,
+                    self.wavelength
+                ),
+            );
+        }
+    }
+
+    fn round(&mut self) {
+        self.angle = round::angle(self.angle);
+        self.wavelength = round::positive(self.wavelength);
+        self.along = round::length(self.along);
+        self.across = round::length(self.across);
+        self.phase = round::angle(self.phase);
+    }
+
+    fn scale(&mut self, s: f64) {
+        self.along *= s;
+        self.across *= s;
+    }
+
+    fn caption(&self, _tag: &str) -> String {
+        format!(
+            "the tank jiggled {}: wavelength {} px, {} px along, {} px across",
+            heading(Vec2::new(self.angle.cos(), self.angle.sin())),
+            num(self.wavelength),
+            num(self.along),
+            num(self.across)
+        )
     }
 }

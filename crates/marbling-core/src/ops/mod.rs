@@ -7,6 +7,7 @@ mod comb;
 mod drop;
 mod drops;
 mod jiggle;
+mod op_type;
 mod rake;
 mod rotation;
 mod rounding;
@@ -24,6 +25,7 @@ pub use drop::Drop;
 pub use drops::{DropSet, MAX_DROPS, Radii};
 pub use jiggle::Jiggle;
 pub(crate) use jiggle::solve_kepler;
+pub(crate) use op_type::OpType;
 pub use rake::Rake;
 pub use rounding::{ANGLE_STEP, LENGTH_STEP};
 pub use shift::Shift;
@@ -39,6 +41,8 @@ pub use vortex::Vortex;
 pub use wavy::Wavy;
 
 use crate::Rgb8;
+use crate::json::{FieldReader, FieldWriter};
+use crate::validate::OpCheck;
 use kurbo::Point;
 
 /// One operation of a design's history.
@@ -75,6 +79,10 @@ pub enum Op {
     Stylus(Stylus),
 }
 
+/// Smallest radius of a drop scaled toward 0 ([`Op::scaled`]), design pixels: it stays
+/// > 0 so the scaled op is still valid.
+pub(crate) const MIN_SCALED_RADIUS: f64 = 1e-6;
+
 /// Walk cost of one segment of a stylus path, in simple ops ([`Op::walk_cost`]).
 pub const STYLUS_SEGMENT_COST: u64 = 8;
 /// Walk cost of a jiggle, in simple ops ([`Op::walk_cost`]).
@@ -94,53 +102,101 @@ pub(crate) const OP_TYPES_V3: [&str; 7] = [
     "shift", "turn", "comb", "drops", "sprays", "jiggle", "stylus",
 ];
 
-/// Every op type name, in the order used by summaries: schema v1's seven, then v3's.
-pub const OP_TYPES: [&str; 14] = [
-    "drop", "spray", "tine", "rake", "wavy", "circular", "vortex", "shift", "turn", "comb",
-    "drops", "sprays", "jiggle", "stylus",
-];
+/// The one table of op types: each `"type"` tag with its [`Op`] variant and the type
+/// holding its fields (an [`OpType`]). Everything that goes by an op's type (its tag,
+/// its fields, reading, writing, value rules, rounding, scaling and caption) is made
+/// from this table, in this order (schema v1's seven, then v3's).
+macro_rules! op_types {
+    ($($tag:literal => $variant:ident($ty:ty),)*) => {
+        /// Every op type name, in the order used by summaries: schema v1's seven, then v3's.
+        pub const OP_TYPES: &[&str] = &[$($tag),*];
 
-/// Field names of each op type, `type` first, in the order they are written: the
-/// schema's one list (the reader refuses any other field; a test holds the writer to it).
-pub(crate) fn op_fields(kind: &str) -> Option<&'static [&'static str]> {
-    Some(match kind {
-        "drop" | "spray" => &["type", "center", "radius", "color"],
-        "tine" => &["type", "origin", "direction", "alpha", "lambda"],
-        "rake" => &["type", "origin", "direction", "spacing", "alpha", "lambda"],
-        "wavy" => &["type", "angle", "amplitude", "wavelength", "phase"],
-        "circular" => &["type", "center", "radius", "alpha", "lambda"],
-        "vortex" => &["type", "center", "alpha", "lambda"],
-        "shift" => &["type", "offset"],
-        "turn" => &["type", "center", "angle"],
-        "comb" => &["type", "origin", "direction", "tines", "alpha", "lambda"],
-        "drops" | "sprays" => &["type", "centers", "radius", "radii", "colors"],
-        "jiggle" => &["type", "angle", "wavelength", "along", "across", "phase"],
-        "stylus" => &["type", "path", "wake", "tips"],
-        _ => return None,
-    })
+        /// Field names of op type `kind`, `type` first, in the order they are written.
+        pub(crate) fn op_fields(kind: &str) -> Option<&'static [&'static str]> {
+            match kind {
+                $($tag => Some(<$ty as OpType>::FIELDS),)*
+                _ => None,
+            }
+        }
+
+        impl Op {
+            /// The `"type"` tag of the op in design documents.
+            pub fn type_name(&self) -> &'static str {
+                match self {
+                    $(Op::$variant(_) => $tag,)*
+                }
+            }
+
+            /// Reads an op of type `kind` from its fields (`None` after reporting).
+            pub(crate) fn read(kind: &str, r: &mut FieldReader<'_>) -> Option<Op> {
+                match kind {
+                    $($tag => <$ty as OpType>::read(r).map(Op::$variant),)*
+                    _ => None,
+                }
+            }
+
+            /// Writes the op's fields after `type`.
+            pub(crate) fn write(&self, w: &mut FieldWriter) {
+                match self {
+                    $(Op::$variant(o) => o.write(w),)*
+                }
+            }
+
+            /// Reports every value rule the op breaks.
+            pub(crate) fn check(&self, c: &mut OpCheck<'_>) {
+                match self {
+                    $(Op::$variant(o) => o.check(c),)*
+                }
+            }
+
+            /// This op with its parameters rounded as `ops/rounding.rs` says (idempotent).
+            pub fn rounded(&self) -> Op {
+                let mut op = self.clone();
+                match &mut op {
+                    $(Op::$variant(o) => o.round(),)*
+                }
+                op
+            }
+
+            /// This op at fraction `s` (0..=1) of its strength or radius (a stroke: the
+            /// first fraction `s` of its path).
+            pub fn scaled(&self, s: f64) -> Op {
+                let mut op = self.clone();
+                match &mut op {
+                    $(Op::$variant(o) => o.scale(s),)*
+                }
+                op
+            }
+
+            /// The op in plain language with its numbers: "a drop of #1f3a5f, radius
+            /// 40 px, at (120, 80)".
+            pub fn caption(&self) -> String {
+                match self {
+                    $(Op::$variant(o) => o.caption($tag),)*
+                }
+            }
+        }
+    };
+}
+
+op_types! {
+    "drop" => Drop(Drop),
+    "spray" => Spray(Spray),
+    "tine" => Tine(Tine),
+    "rake" => Rake(Rake),
+    "wavy" => Wavy(Wavy),
+    "circular" => Circular(Circular),
+    "vortex" => Vortex(Vortex),
+    "shift" => Shift(Shift),
+    "turn" => Turn(Turn),
+    "comb" => Comb(Comb),
+    "drops" => Drops(DropSet),
+    "sprays" => Sprays(DropSet),
+    "jiggle" => Jiggle(Jiggle),
+    "stylus" => Stylus(Stylus),
 }
 
 impl Op {
-    /// The `"type"` tag of the op in design documents.
-    pub fn type_name(&self) -> &'static str {
-        match self {
-            Op::Drop(_) => "drop",
-            Op::Spray(_) => "spray",
-            Op::Tine(_) => "tine",
-            Op::Rake(_) => "rake",
-            Op::Wavy(_) => "wavy",
-            Op::Circular(_) => "circular",
-            Op::Vortex(_) => "vortex",
-            Op::Shift(_) => "shift",
-            Op::Turn(_) => "turn",
-            Op::Comb(_) => "comb",
-            Op::Drops(_) => "drops",
-            Op::Sprays(_) => "sprays",
-            Op::Jiggle(_) => "jiggle",
-            Op::Stylus(_) => "stylus",
-        }
-    }
-
     /// Whether the op is one schema v3 adds (a design holding one is written as v3).
     pub fn is_v3(&self) -> bool {
         OP_TYPES_V3.contains(&self.type_name())

@@ -1,5 +1,10 @@
 //! Rake: evenly spaced parallel tines.
 
+use super::OpType;
+use super::rounding as round;
+use crate::caption::{heading, num};
+use crate::json::{FieldReader, FieldWriter};
+use crate::validate::OpCheck;
 use kurbo::{Point, Vec2};
 
 /// Parallel tines `spacing` apart, one through `origin`, all moving along `direction`.
@@ -39,5 +44,61 @@ impl Rake {
     /// Undoes [`Rake::forward`].
     pub fn inverse(&self, p: Point) -> Point {
         p - self.shift(p)
+    }
+}
+
+impl OpType for Rake {
+    const FIELDS: &'static [&'static str] =
+        &["type", "origin", "direction", "spacing", "alpha", "lambda"];
+
+    fn read(r: &mut FieldReader<'_>) -> Option<Self> {
+        let (origin, direction) = (r.point("origin"), r.vector("direction"));
+        let spacing = r.number("spacing");
+        let (alpha, lambda) = (r.number("alpha"), r.number("lambda"));
+        Some(Rake {
+            origin: origin?,
+            direction: direction?,
+            spacing: spacing?,
+            alpha: alpha?,
+            lambda: lambda?,
+        })
+    }
+
+    fn write(&self, w: &mut FieldWriter) {
+        w.point("origin", self.origin);
+        w.vector("direction", self.direction);
+        w.number("spacing", self.spacing);
+        w.number("alpha", self.alpha);
+        w.number("lambda", self.lambda);
+    }
+
+    fn check(&self, c: &mut OpCheck<'_>) {
+        c.point("origin", self.origin);
+        c.direction("direction", self.direction);
+        c.positive("spacing", self.spacing);
+        c.finite("alpha", self.alpha);
+        c.positive("lambda", self.lambda);
+    }
+
+    fn round(&mut self) {
+        self.origin = round::point(self.origin);
+        self.direction = round::direction(self.direction);
+        self.spacing = round::positive(self.spacing);
+        self.alpha = round::length(self.alpha);
+        self.lambda = round::positive(self.lambda);
+    }
+
+    fn scale(&mut self, s: f64) {
+        self.alpha *= s;
+    }
+
+    fn caption(&self, _tag: &str) -> String {
+        format!(
+            "rake drawn {}: tines {} px apart, shift {} px, decay {} px",
+            heading(self.direction * self.alpha.signum()),
+            num(self.spacing),
+            num(self.alpha.abs()),
+            num(self.lambda)
+        )
     }
 }

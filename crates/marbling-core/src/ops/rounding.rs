@@ -8,7 +8,6 @@
 //! wavelength) are at least one step; a direction that would round to zero keeps its
 //! angle at unit length.
 
-use super::{Op, Radii};
 use kurbo::{Point, Vec2};
 
 /// Step of rounded lengths and positions, design pixels.
@@ -24,23 +23,28 @@ fn round_to(v: f64, step: f64) -> f64 {
     if r == 0.0 { 0.0 } else { r }
 }
 
-fn length(v: f64) -> f64 {
+/// Rounded as the module doc says.
+pub(super) fn length(v: f64) -> f64 {
     round_to(v, LENGTH_STEP)
 }
 
-fn positive(v: f64) -> f64 {
+/// Rounded as the module doc says.
+pub(super) fn positive(v: f64) -> f64 {
     length(v).max(LENGTH_STEP)
 }
 
-fn angle(v: f64) -> f64 {
+/// Rounded as the module doc says.
+pub(super) fn angle(v: f64) -> f64 {
     round_to(v, ANGLE_STEP)
 }
 
-fn point(p: Point) -> Point {
+/// Rounded as the module doc says.
+pub(super) fn point(p: Point) -> Point {
     Point::new(length(p.x), length(p.y))
 }
 
-fn direction(v: Vec2) -> Vec2 {
+/// Rounded as the module doc says.
+pub(super) fn direction(v: Vec2) -> Vec2 {
     let r = Vec2::new(length(v.x), length(v.y));
     if r.hypot2() > 0.0 || v.hypot2() == 0.0 {
         return r;
@@ -49,93 +53,11 @@ fn direction(v: Vec2) -> Vec2 {
     Vec2::new(angle(u.x), angle(u.y))
 }
 
-impl Op {
-    /// This op with its parameters rounded as the module doc says (idempotent).
-    pub fn rounded(&self) -> Op {
-        let mut op = self.clone();
-        match &mut op {
-            Op::Drop(d) => {
-                d.center = point(d.center);
-                d.radius = positive(d.radius);
-            }
-            Op::Spray(s) => {
-                s.center = point(s.center);
-                s.radius = positive(s.radius);
-            }
-            Op::Tine(t) => {
-                t.origin = point(t.origin);
-                t.direction = direction(t.direction);
-                t.alpha = length(t.alpha);
-                t.lambda = positive(t.lambda);
-            }
-            Op::Rake(r) => {
-                r.origin = point(r.origin);
-                r.direction = direction(r.direction);
-                r.spacing = positive(r.spacing);
-                r.alpha = length(r.alpha);
-                r.lambda = positive(r.lambda);
-            }
-            Op::Wavy(w) => {
-                w.angle = angle(w.angle);
-                w.amplitude = length(w.amplitude);
-                w.wavelength = positive(w.wavelength);
-                w.phase = angle(w.phase);
-            }
-            Op::Circular(c) => {
-                c.center = point(c.center);
-                c.radius = positive(c.radius);
-                c.alpha = length(c.alpha);
-                c.lambda = positive(c.lambda);
-            }
-            Op::Vortex(v) => {
-                v.center = point(v.center);
-                v.alpha = length(v.alpha);
-                v.lambda = positive(v.lambda);
-            }
-            Op::Shift(s) => s.offset = Vec2::new(length(s.offset.x), length(s.offset.y)),
-            Op::Turn(t) => {
-                t.center = point(t.center);
-                t.angle = angle(t.angle);
-            }
-            Op::Comb(c) => {
-                c.origin = point(c.origin);
-                c.direction = direction(c.direction);
-                c.tines = c.tines.iter().map(|&o| length(o)).collect();
-                c.alpha = length(c.alpha);
-                c.lambda = positive(c.lambda);
-            }
-            Op::Drops(d) | Op::Sprays(d) => {
-                d.centers = d.centers.iter().map(|&p| point(p)).collect();
-                d.radii = match &d.radii {
-                    Radii::One(r) => Radii::One(positive(*r)),
-                    Radii::Each(list) => Radii::Each(list.iter().map(|&r| positive(r)).collect()),
-                };
-            }
-            Op::Jiggle(j) => {
-                j.angle = angle(j.angle);
-                j.wavelength = positive(j.wavelength);
-                j.along = length(j.along);
-                j.across = length(j.across);
-                j.phase = angle(j.phase);
-            }
-            Op::Stylus(s) => {
-                s.path = s.path.iter().map(|&p| point(p)).collect();
-                s.wake = positive(s.wake);
-                s.tips = s
-                    .tips
-                    .as_ref()
-                    .map(|t| t.iter().map(|&o| length(o)).collect());
-            }
-        }
-        op
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::synth::{Mix, random_design};
-    use crate::{Design, Drop, Rgb8, Tine};
+    use crate::{Design, Drop, Op, Rgb8, Tine};
 
     #[test]
     fn rounding_moves_values_by_at_most_half_a_step_and_is_idempotent() {

@@ -1,5 +1,10 @@
 //! Shift: the whole tank moves by one offset (P′ = P + offset).
 
+use super::OpType;
+use super::rounding as round;
+use crate::caption::num;
+use crate::json::{FieldReader, FieldWriter};
+use crate::validate::OpCheck;
 use kurbo::{Point, Vec2};
 
 /// A translation of everything by `offset`, design pixels.
@@ -18,5 +23,39 @@ impl Shift {
     /// Undoes [`Shift::forward`].
     pub fn inverse(&self, p: Point) -> Point {
         p - self.offset
+    }
+}
+
+impl OpType for Shift {
+    const FIELDS: &'static [&'static str] = &["type", "offset"];
+
+    fn read(r: &mut FieldReader<'_>) -> Option<Self> {
+        Some(Shift {
+            offset: r.vector("offset")?,
+        })
+    }
+
+    fn write(&self, w: &mut FieldWriter) {
+        w.vector("offset", self.offset);
+    }
+
+    fn check(&self, c: &mut OpCheck<'_>) {
+        c.point("offset", self.offset.to_point());
+    }
+
+    fn round(&mut self) {
+        self.offset = Vec2::new(round::length(self.offset.x), round::length(self.offset.y));
+    }
+
+    fn scale(&mut self, s: f64) {
+        self.offset *= s;
+    }
+
+    fn caption(&self, _tag: &str) -> String {
+        format!(
+            "the tank shifted by ({}, {}) px",
+            num(self.offset.x),
+            num(self.offset.y)
+        )
     }
 }

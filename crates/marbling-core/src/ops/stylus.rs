@@ -14,6 +14,11 @@
 //! order. With M = (P + P′)/2 it reads M = P + (δ/2)·u(M), P′ = 2M − P; M is found by
 //! Newton's method to 1e-12 relative.
 
+use super::OpType;
+use super::rounding as round;
+use crate::caption::{at, num, plural};
+use crate::json::{FieldReader, FieldWriter};
+use crate::validate::OpCheck;
 use kurbo::{Point, Vec2};
 use std::sync::Arc;
 
@@ -300,6 +305,109 @@ impl StylusSegment {
         }
         self.start + self.n * x + nt * y
     }
+}
+
+impl OpType for Stylus {
+    const FIELDS: &'static [&'static str] = &["type", "path", "wake", "tips"];
+
+    fn read(r: &mut FieldReader<'_>) -> Option<Self> {
+        let (path, wake) = (r.points("path"), r.number("wake"));
+        let tips = if r.has("tips") {
+            r.numbers("tips").map(Some)
+        } else {
+            Some(None)
+        };
+        Some(Stylus {
+            path: path?,
+            wake: wake?,
+            tips: tips?,
+        })
+    }
+
+    fn write(&self, w: &mut FieldWriter) {
+        w.points("path", &self.path);
+        w.number("wake", self.wake);
+        if let Some(tips) = &self.tips {
+            w.numbers("tips", tips);
+        }
+    }
+
+    fn check(&self, c: &mut OpCheck<'_>) {
+        let path_ok = c.count("path", self.path.len(), 2, MAX_STYLUS_POINTS, "points");
+        let mut finite = path_ok;
+        for (k, &p) in self.path.iter().enumerate() {
+            let ok =
+                c.finite(&format!("path[{k}][0]"), p.x) & c.finite(&format!("path[{k}][1]"), p.y);
+            finite &= ok;
+        }
+        c.positive("wake", self.wake);
+        let mut tips_ok = true;
+        if let Some(tips) = &self.tips {
+            tips_ok = c.count("tips", tips.len(), 1, MAX_STYLUS_TIPS, "tip offsets");
+            for (k, &o) in tips.iter().enumerate() {
+                tips_ok &= c.finite(&format!("tips[{k}]"), o);
+            }
+        }
+        if finite && tips_ok && self.wake.is_finite() && self.wake > 0.0 {
+            let work = self.sub_steps().saturating_mul(self.tip_count());
+            if work > MAX_STYLUS_WORK {
+                c.push(
+                    "path",
+                    format!(
+                        "needs {} sub-steps × {} tip(s) = {work}, more than {MAX_STYLUS_WORK}; use a larger wake or a shorter path",
+                        self.sub_steps(),
+                        self.tip_count()
+                    ),
+                );
+            }
+        }
+    }
+
+    fn round(&mut self) {
+        self.path = self.path.iter().map(|&p| round::point(p)).collect();
+        self.wake = round::positive(self.wake);
+        self.tips = self
+            .tips
+            .as_ref()
+            .map(|t| t.iter().map(|&o| round::length(o)).collect());
+    }
+
+    /// A stroke is drawn along its path: the first fraction `s` of its length.
+    fn scale(&mut self, s: f64) {
+        self.path = path_part(&self.path, s);
+    }
+
+    fn caption(&self, _tag: &str) -> String {
+        let len: f64 = self.path.windows(2).map(|w| (w[1] - w[0]).hypot()).sum();
+        format!(
+            "stylus drawn {} px from {} with {}, wake {} px",
+            num(len),
+            at(self.path[0]),
+            plural(self.tip_count(), "tip", "tips"),
+            num(self.wake)
+        )
+    }
+}
+
+/// The first fraction `s` (0..=1) of a path's length (at least two points).
+fn path_part(path: &[Point], s: f64) -> Arc<[Point]> {
+    let total: f64 = path.windows(2).map(|w| (w[1] - w[0]).hypot()).sum();
+    let mut left = total * s.clamp(0.0, 1.0);
+    let mut out = vec![path[0]];
+    for w in path.windows(2) {
+        let len = (w[1] - w[0]).hypot();
+        if left >= len {
+            out.push(w[1]);
+            left -= len;
+        } else {
+            out.push(w[0] + (w[1] - w[0]) * (left / len));
+            break;
+        }
+    }
+    if out.len() < 2 {
+        out.push(path[0]);
+    }
+    out.into()
 }
 
 #[cfg(test)]

@@ -1,5 +1,10 @@
 //! Tine: one straight tine drawn across the tank.
 
+use super::OpType;
+use super::rounding as round;
+use crate::caption::{at, heading, num};
+use crate::json::{FieldReader, FieldWriter};
+use crate::validate::OpCheck;
 use kurbo::{Point, Vec2};
 
 /// A tine through `origin` moving along `direction`.
@@ -36,5 +41,55 @@ impl Tine {
     /// Undoes [`Tine::forward`].
     pub fn inverse(&self, p: Point) -> Point {
         p - self.shift(p)
+    }
+}
+
+impl OpType for Tine {
+    const FIELDS: &'static [&'static str] = &["type", "origin", "direction", "alpha", "lambda"];
+
+    fn read(r: &mut FieldReader<'_>) -> Option<Self> {
+        let (origin, direction) = (r.point("origin"), r.vector("direction"));
+        let (alpha, lambda) = (r.number("alpha"), r.number("lambda"));
+        Some(Tine {
+            origin: origin?,
+            direction: direction?,
+            alpha: alpha?,
+            lambda: lambda?,
+        })
+    }
+
+    fn write(&self, w: &mut FieldWriter) {
+        w.point("origin", self.origin);
+        w.vector("direction", self.direction);
+        w.number("alpha", self.alpha);
+        w.number("lambda", self.lambda);
+    }
+
+    fn check(&self, c: &mut OpCheck<'_>) {
+        c.point("origin", self.origin);
+        c.direction("direction", self.direction);
+        c.finite("alpha", self.alpha);
+        c.positive("lambda", self.lambda);
+    }
+
+    fn round(&mut self) {
+        self.origin = round::point(self.origin);
+        self.direction = round::direction(self.direction);
+        self.alpha = round::length(self.alpha);
+        self.lambda = round::positive(self.lambda);
+    }
+
+    fn scale(&mut self, s: f64) {
+        self.alpha *= s;
+    }
+
+    fn caption(&self, _tag: &str) -> String {
+        format!(
+            "a tine drawn {} through {}: shift {} px, decay {} px",
+            heading(self.direction),
+            at(self.origin),
+            num(self.alpha),
+            num(self.lambda)
+        )
     }
 }

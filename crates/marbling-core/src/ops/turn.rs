@@ -1,5 +1,10 @@
 //! Turn: the whole tank rotates about a centre (P′ = C + R(θ)(P − C)).
 
+use super::OpType;
+use super::rounding as round;
+use crate::caption::{at, num};
+use crate::json::{FieldReader, FieldWriter};
+use crate::validate::OpCheck;
 use kurbo::{Point, Vec2};
 
 /// A rigid rotation by `angle` about `center`, with
@@ -29,5 +34,44 @@ impl Turn {
     pub fn inverse(&self, p: Point) -> Point {
         let (s, c) = self.angle.sin_cos();
         self.center + rotate(p - self.center, -s, c)
+    }
+}
+
+impl OpType for Turn {
+    const FIELDS: &'static [&'static str] = &["type", "center", "angle"];
+
+    fn read(r: &mut FieldReader<'_>) -> Option<Self> {
+        let (center, angle) = (r.point("center"), r.number("angle"));
+        Some(Turn {
+            center: center?,
+            angle: angle?,
+        })
+    }
+
+    fn write(&self, w: &mut FieldWriter) {
+        w.point("center", self.center);
+        w.number("angle", self.angle);
+    }
+
+    fn check(&self, c: &mut OpCheck<'_>) {
+        c.point("center", self.center);
+        c.finite("angle", self.angle);
+    }
+
+    fn round(&mut self) {
+        self.center = round::point(self.center);
+        self.angle = round::angle(self.angle);
+    }
+
+    fn scale(&mut self, s: f64) {
+        self.angle *= s;
+    }
+
+    fn caption(&self, _tag: &str) -> String {
+        format!(
+            "the tank turned {}° about {}",
+            num(self.angle.to_degrees()),
+            at(self.center)
+        )
     }
 }

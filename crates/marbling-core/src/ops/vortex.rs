@@ -1,6 +1,11 @@
 //! Vortex: a swirl that is strongest at its centre.
 
+use super::OpType;
 use super::rotation::rotate_about;
+use super::rounding as round;
+use crate::caption::{at, num};
+use crate::json::{FieldReader, FieldWriter};
+use crate::validate::OpCheck;
 use kurbo::Point;
 
 /// A vortex: [`crate::Circular`] with d = ρ, strongest at the centre.
@@ -28,5 +33,50 @@ impl Vortex {
     /// Undoes [`Vortex::forward`].
     pub fn inverse(&self, p: Point) -> Point {
         rotate_about(self.center, p, -1.0, |r| self.angle(r))
+    }
+}
+
+impl OpType for Vortex {
+    const FIELDS: &'static [&'static str] = &["type", "center", "alpha", "lambda"];
+
+    fn read(r: &mut FieldReader<'_>) -> Option<Self> {
+        let center = r.point("center");
+        let (alpha, lambda) = (r.number("alpha"), r.number("lambda"));
+        Some(Vortex {
+            center: center?,
+            alpha: alpha?,
+            lambda: lambda?,
+        })
+    }
+
+    fn write(&self, w: &mut FieldWriter) {
+        w.point("center", self.center);
+        w.number("alpha", self.alpha);
+        w.number("lambda", self.lambda);
+    }
+
+    fn check(&self, c: &mut OpCheck<'_>) {
+        c.point("center", self.center);
+        c.finite("alpha", self.alpha);
+        c.positive("lambda", self.lambda);
+    }
+
+    fn round(&mut self) {
+        self.center = round::point(self.center);
+        self.alpha = round::length(self.alpha);
+        self.lambda = round::positive(self.lambda);
+    }
+
+    fn scale(&mut self, s: f64) {
+        self.alpha *= s;
+    }
+
+    fn caption(&self, _tag: &str) -> String {
+        format!(
+            "swirl at {}: strength {} px, decay {} px",
+            at(self.center),
+            num(self.alpha),
+            num(self.lambda)
+        )
     }
 }

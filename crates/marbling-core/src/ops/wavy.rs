@@ -1,5 +1,10 @@
 //! Wavy comb: every point moves along one direction by a sine of its position across it.
 
+use super::OpType;
+use super::rounding as round;
+use crate::caption::{heading, num};
+use crate::json::{FieldReader, FieldWriter};
+use crate::validate::OpCheck;
 use kurbo::{Point, Vec2};
 use std::f64::consts::TAU;
 
@@ -35,5 +40,54 @@ impl Wavy {
     /// Undoes [`Wavy::forward`].
     pub fn inverse(&self, p: Point) -> Point {
         p - self.shift(p)
+    }
+}
+
+impl OpType for Wavy {
+    const FIELDS: &'static [&'static str] = &["type", "angle", "amplitude", "wavelength", "phase"];
+
+    fn read(r: &mut FieldReader<'_>) -> Option<Self> {
+        let (angle, amplitude) = (r.number("angle"), r.number("amplitude"));
+        let (wavelength, phase) = (r.number("wavelength"), r.number("phase"));
+        Some(Wavy {
+            angle: angle?,
+            amplitude: amplitude?,
+            wavelength: wavelength?,
+            phase: phase?,
+        })
+    }
+
+    fn write(&self, w: &mut FieldWriter) {
+        w.number("angle", self.angle);
+        w.number("amplitude", self.amplitude);
+        w.number("wavelength", self.wavelength);
+        w.number("phase", self.phase);
+    }
+
+    fn check(&self, c: &mut OpCheck<'_>) {
+        c.finite("angle", self.angle);
+        c.finite("amplitude", self.amplitude);
+        c.positive("wavelength", self.wavelength);
+        c.finite("phase", self.phase);
+    }
+
+    fn round(&mut self) {
+        self.angle = round::angle(self.angle);
+        self.amplitude = round::length(self.amplitude);
+        self.wavelength = round::positive(self.wavelength);
+        self.phase = round::angle(self.phase);
+    }
+
+    fn scale(&mut self, s: f64) {
+        self.amplitude *= s;
+    }
+
+    fn caption(&self, _tag: &str) -> String {
+        format!(
+            "wavy comb moving {}: amplitude {} px, wavelength {} px",
+            heading(Vec2::new(self.angle.cos(), self.angle.sin())),
+            num(self.amplitude),
+            num(self.wavelength)
+        )
     }
 }
