@@ -4,6 +4,7 @@ use super::OpType;
 use super::rotation::rotate_about;
 use super::rounding as round;
 use crate::caption::{at, num};
+use crate::explain::{Formula, pt};
 use crate::json::{FieldReader, FieldWriter};
 use crate::validate::OpCheck;
 use kurbo::Point;
@@ -89,5 +90,24 @@ impl OpType for Circular {
             num(self.radius),
             num(self.lambda)
         )
+    }
+
+    fn formula(&self, _tag: &str) -> Formula {
+        Formula {
+            forward: "P′ = C + R(θ)(P − C), θ = α·λ/(|ρ − r| + λ)/ρ, ρ = |P − C|".into(),
+            inverse: "P = C + R(−θ)(P′ − C) (ρ is the same before and after)".into(),
+            values: format!(
+                "C = {}, r = {}, α = {}, λ = {}",
+                pt(self.center),
+                num(self.radius),
+                num(self.alpha),
+                num(self.lambda)
+            ),
+            symbols: "C: the centre, r: the circular tine's radius (px), ρ: P's distance \
+                 from C (px), θ: the angle P turns, R(θ): the turn by θ, α: how far ink on the \
+                 tine's circle moves along it (px), λ: how fast that fades (px)"
+                .into(),
+            area_preserving: true,
+        }
     }
 }

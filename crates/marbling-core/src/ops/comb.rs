@@ -3,6 +3,7 @@
 use super::OpType;
 use super::rounding as round;
 use crate::caption::{heading, num, plural, range};
+use crate::explain::{Formula, TINE_FORWARD, TINE_INVERSE, TINE_SYMBOLS, unit};
 use crate::json::{FieldReader, FieldWriter};
 use crate::validate::OpCheck;
 use kurbo::{Point, Vec2};
@@ -120,5 +121,24 @@ impl OpType for Comb {
             num(self.alpha.abs()),
             num(self.lambda)
         )
+    }
+
+    fn formula(&self, _tag: &str) -> Formula {
+        Formula {
+            forward: format!("{TINE_FORWARD}, d = min over i of |(P − O)·N − t_i|"),
+            inverse: TINE_INVERSE.into(),
+            values: format!(
+                "α = {}, λ = {}, {} tines, M = {}",
+                num(self.alpha),
+                num(self.lambda),
+                self.tines.len(),
+                unit(self.direction)
+            ),
+            symbols: format!(
+                "O: the comb's origin, t_i: tine i's offset from O along N (px), d: P's distance \
+                 from the nearest tine's line (px), {TINE_SYMBOLS}"
+            ),
+            area_preserving: true,
+        }
     }
 }

@@ -5,6 +5,7 @@ use super::OpType;
 use super::rounding as round;
 use crate::Rgb8;
 use crate::caption::{at, num};
+use crate::explain::{DROP_FORWARD, DROP_INVERSE, DROP_SYMBOLS, Formula, pt};
 use crate::json::{FieldReader, FieldWriter};
 use crate::validate::OpCheck;
 use kurbo::Point;
@@ -86,5 +87,15 @@ impl OpType for Drop {
             num(self.radius),
             at(self.center)
         )
+    }
+
+    fn formula(&self, _tag: &str) -> Formula {
+        Formula {
+            forward: DROP_FORWARD.into(),
+            inverse: DROP_INVERSE.into(),
+            values: format!("C = {}, r = {}", pt(self.center), num(self.radius)),
+            symbols: DROP_SYMBOLS.into(),
+            area_preserving: true,
+        }
     }
 }

@@ -6,7 +6,9 @@ use super::OpType;
 use super::rounding as round;
 use super::{Drop, Op, Spray};
 use crate::Rgb8;
+use crate::caption::num;
 use crate::caption::{plural, radii_text};
+use crate::explain::{DROP_FORWARD, DROP_INVERSE, DROP_SYMBOLS, Formula, SPRAY_SYMBOLS, pt};
 use crate::json::{FieldReader, FieldWriter};
 use crate::validate::OpCheck;
 use kurbo::Point;
@@ -181,5 +183,36 @@ impl OpType for DropSet {
             plural(self.centers.len(), one, many),
             radii_text(&self.radii)
         )
+    }
+
+    fn formula(&self, tag: &str) -> Formula {
+        if tag == "sprays" {
+            return Formula {
+                forward: "P′ = P (sprays lay ink on top without moving anything)".into(),
+                inverse: "P = P′; inside a spray's disc: its ink".into(),
+                values: format!(
+                    "{} sprays, C₁ = {}",
+                    self.centers.len(),
+                    pt(self.centers[0])
+                ),
+                symbols: SPRAY_SYMBOLS.into(),
+                area_preserving: true,
+            };
+        }
+        let r = match &self.radii {
+            Radii::One(r) => num(*r),
+            Radii::Each(list) => format!("{} (first of {})", num(list[0]), list.len()),
+        };
+        Formula {
+            forward: format!("{DROP_FORWARD}, once per drop in order"),
+            inverse: format!("the drops undone newest first: {DROP_INVERSE}"),
+            values: format!(
+                "{} drops, C₁ = {}, r₁ = {r}",
+                self.centers.len(),
+                pt(self.centers[0])
+            ),
+            symbols: DROP_SYMBOLS.into(),
+            area_preserving: true,
+        }
     }
 }

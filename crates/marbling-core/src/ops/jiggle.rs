@@ -8,6 +8,7 @@
 use super::OpType;
 use super::rounding as round;
 use crate::caption::{heading, num};
+use crate::explain::Formula;
 use crate::json::{FieldReader, FieldWriter};
 use crate::validate::OpCheck;
 use kurbo::{Point, Vec2};
@@ -160,5 +161,26 @@ impl OpType for Jiggle {
             num(self.along),
             num(self.across)
         )
+    }
+
+    fn formula(&self, _tag: &str) -> Formula {
+        Formula {
+            forward: "P′ = P + A·sin φ·u + B·cos φ·v, φ = 2π(P·u)/λ + φ₀".into(),
+            inverse:
+                "solve P·u = P′·u − A·sin φ for φ (Newton), then P = P′ − A·sin φ·u − B·cos φ·v"
+                    .into(),
+            values: format!(
+                "A = {}, B = {}, λ = {}, u at {}°; area scales by 1 + 2πA/λ·cos φ",
+                num(self.along),
+                num(self.across),
+                num(self.wavelength),
+                num(self.angle.to_degrees())
+            ),
+            symbols: "u: the unit direction of the wave, v: u turned 90°, A: the swing \
+                 along u (px), B: the swing across (px), λ: the wavelength (px), φ₀: the phase, \
+                 φ: the phase at P"
+                .into(),
+            area_preserving: self.along == 0.0,
+        }
     }
 }

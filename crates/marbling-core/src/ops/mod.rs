@@ -168,6 +168,13 @@ macro_rules! op_types {
                 op
             }
 
+            /// Its forward and inverse maps with its numbers (see [`crate::explain::formula`]).
+            pub(crate) fn type_formula(&self) -> crate::explain::Formula {
+                match self {
+                    $(Op::$variant(o) => o.formula($tag),)*
+                }
+            }
+
             /// The op in plain language with its numbers: "a drop of #1f3a5f, radius
             /// 40 px, at (120, 80)".
             pub fn caption(&self) -> String {

@@ -1,6 +1,7 @@
 //! What each op type's file says about its type: the [`OpType`] trait. [`super::Op`]
 //! dispatches to it through the one table of op types in `ops/mod.rs`.
 
+use crate::explain::Formula;
 use crate::json::{FieldReader, FieldWriter};
 use crate::validate::OpCheck;
 
@@ -30,4 +31,8 @@ pub(crate) trait OpType: Sized {
     /// A plain-language caption with the op's numbers; `tag` is its `type` (one field
     /// type serves both `drops` and `sprays`).
     fn caption(&self, tag: &str) -> String;
+
+    /// Its forward and inverse maps with its numbers, for the explain view; `symbols`
+    /// names only this type's symbols (`P` and `P′` are added by [`crate::explain::formula`]).
+    fn formula(&self, tag: &str) -> Formula;
 }

@@ -3,6 +3,7 @@
 use super::OpType;
 use super::rounding as round;
 use crate::caption::{heading, num};
+use crate::explain::{Formula, TINE_FORWARD, TINE_INVERSE, TINE_SYMBOLS, unit};
 use crate::json::{FieldReader, FieldWriter};
 use crate::validate::OpCheck;
 use kurbo::{Point, Vec2};
@@ -100,5 +101,26 @@ impl OpType for Rake {
             num(self.alpha.abs()),
             num(self.lambda)
         )
+    }
+
+    fn formula(&self, _tag: &str) -> Formula {
+        Formula {
+            forward: format!(
+                "{TINE_FORWARD}, d = distance to the nearest tine line (lines every s along N)"
+            ),
+            inverse: TINE_INVERSE.into(),
+            values: format!(
+                "α = {}, λ = {}, s = {}, M = {}",
+                num(self.alpha),
+                num(self.lambda),
+                num(self.spacing),
+                unit(self.direction)
+            ),
+            symbols: format!(
+                "O: a point on one tine's line, s: the spacing of the lines (px), d: P's distance \
+                 from the nearest (px), {TINE_SYMBOLS}"
+            ),
+            area_preserving: true,
+        }
     }
 }

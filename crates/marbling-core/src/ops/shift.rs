@@ -3,6 +3,7 @@
 use super::OpType;
 use super::rounding as round;
 use crate::caption::num;
+use crate::explain::Formula;
 use crate::json::{FieldReader, FieldWriter};
 use crate::validate::OpCheck;
 use kurbo::{Point, Vec2};
@@ -57,5 +58,15 @@ impl OpType for Shift {
             num(self.offset.x),
             num(self.offset.y)
         )
+    }
+
+    fn formula(&self, _tag: &str) -> Formula {
+        Formula {
+            forward: "P′ = P + D".into(),
+            inverse: "P = P′ − D".into(),
+            values: format!("D = ({}, {})", num(self.offset.x), num(self.offset.y)),
+            symbols: "D: how far the whole tank moves (px)".into(),
+            area_preserving: true,
+        }
     }
 }

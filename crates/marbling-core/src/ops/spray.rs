@@ -5,6 +5,7 @@ use super::OpType;
 use super::rounding as round;
 use crate::Rgb8;
 use crate::caption::{at, num};
+use crate::explain::{Formula, SPRAY_SYMBOLS, pt};
 use crate::json::{FieldReader, FieldWriter};
 use crate::validate::OpCheck;
 use kurbo::Point;
@@ -66,5 +67,15 @@ impl OpType for Spray {
             num(self.radius),
             at(self.center)
         )
+    }
+
+    fn formula(&self, _tag: &str) -> Formula {
+        Formula {
+            forward: "P′ = P (a spray lays ink on top without moving anything)".into(),
+            inverse: "P = P′; inside |P′ − C| < r: this spray's ink".into(),
+            values: format!("C = {}, r = {}", pt(self.center), num(self.radius)),
+            symbols: SPRAY_SYMBOLS.into(),
+            area_preserving: true,
+        }
     }
 }

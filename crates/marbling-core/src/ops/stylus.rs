@@ -17,6 +17,7 @@
 use super::OpType;
 use super::rounding as round;
 use crate::caption::{at, num, plural};
+use crate::explain::Formula;
 use crate::json::{FieldReader, FieldWriter};
 use crate::validate::OpCheck;
 use kurbo::{Point, Vec2};
@@ -386,6 +387,26 @@ impl OpType for Stylus {
             plural(self.tip_count(), "tip", "tips"),
             num(self.wake)
         )
+    }
+
+    fn formula(&self, _tag: &str) -> Formula {
+        Formula {
+            forward: "each sub-step δ along the path: P′ = P + δ·u((P + P′)/2), u from \
+                 ψ = y·e^(−ρ/L)·(1 − (ρ/8L)²)³ around every tip"
+                .into(),
+            inverse: "the sub-steps undone newest first with −δ".into(),
+            values: format!(
+                "L = {}, {} sub-steps, {} tip(s)",
+                num(self.wake),
+                self.sub_steps(),
+                self.tip_count()
+            ),
+            symbols: "δ: one sub-step along the path (px), u: the flow's direction, ψ: \
+                 the stream function it follows, y: the distance across the path, ρ: the distance from a \
+                 tip (px), L: the wake, how far the flow reaches (px)"
+                .into(),
+            area_preserving: true,
+        }
     }
 }
 

@@ -3,6 +3,7 @@
 use super::OpType;
 use super::rounding as round;
 use crate::caption::{at, heading, num};
+use crate::explain::{Formula, TINE_FORWARD, TINE_INVERSE, TINE_SYMBOLS, pt, unit};
 use crate::json::{FieldReader, FieldWriter};
 use crate::validate::OpCheck;
 use kurbo::{Point, Vec2};
@@ -91,5 +92,23 @@ impl OpType for Tine {
             num(self.alpha),
             num(self.lambda)
         )
+    }
+
+    fn formula(&self, _tag: &str) -> Formula {
+        Formula {
+            forward: format!("{TINE_FORWARD}, d = |(P − O)·N|"),
+            inverse: TINE_INVERSE.into(),
+            values: format!(
+                "α = {}, λ = {}, O = {}, M = {}",
+                num(self.alpha),
+                num(self.lambda),
+                pt(self.origin),
+                unit(self.direction)
+            ),
+            symbols: format!(
+                "O: a point on the tine's line, d: P's distance from that line (px), {TINE_SYMBOLS}"
+            ),
+            area_preserving: true,
+        }
     }
 }

@@ -3,6 +3,7 @@
 use super::OpType;
 use super::rounding as round;
 use crate::caption::{at, num};
+use crate::explain::{Formula, pt};
 use crate::json::{FieldReader, FieldWriter};
 use crate::validate::OpCheck;
 use kurbo::{Point, Vec2};
@@ -73,5 +74,19 @@ impl OpType for Turn {
             num(self.angle.to_degrees()),
             at(self.center)
         )
+    }
+
+    fn formula(&self, _tag: &str) -> Formula {
+        Formula {
+            forward: "P′ = C + R(θ)(P − C)".into(),
+            inverse: "P = C + R(−θ)(P′ − C)".into(),
+            values: format!(
+                "C = {}, θ = {}°",
+                pt(self.center),
+                num(self.angle.to_degrees())
+            ),
+            symbols: "C: the centre, θ: the angle, R(θ): the turn by θ".into(),
+            area_preserving: true,
+        }
     }
 }

@@ -4,6 +4,7 @@ use super::OpType;
 use super::rotation::rotate_about;
 use super::rounding as round;
 use crate::caption::{at, num};
+use crate::explain::{Formula, pt};
 use crate::json::{FieldReader, FieldWriter};
 use crate::validate::OpCheck;
 use kurbo::Point;
@@ -78,5 +79,22 @@ impl OpType for Vortex {
             num(self.alpha),
             num(self.lambda)
         )
+    }
+
+    fn formula(&self, _tag: &str) -> Formula {
+        Formula {
+            forward: "P′ = C + R(θ)(P − C), θ = α·λ/(ρ + λ)/ρ, ρ = |P − C|".into(),
+            inverse: "P = C + R(−θ)(P′ − C)".into(),
+            values: format!(
+                "C = {}, α = {}, λ = {}",
+                pt(self.center),
+                num(self.alpha),
+                num(self.lambda)
+            ),
+            symbols: "C: the centre, ρ: P's distance from C (px), θ: the angle P turns, \
+                 R(θ): the turn by θ, α: the swirl's strength (px), λ: how fast it fades (px)"
+                .into(),
+            area_preserving: true,
+        }
     }
 }

@@ -3,6 +3,7 @@
 use super::OpType;
 use super::rounding as round;
 use crate::caption::{heading, num};
+use crate::explain::{Formula, num2};
 use crate::json::{FieldReader, FieldWriter};
 use crate::validate::OpCheck;
 use kurbo::{Point, Vec2};
@@ -89,5 +90,23 @@ impl OpType for Wavy {
             num(self.amplitude),
             num(self.wavelength)
         )
+    }
+
+    fn formula(&self, _tag: &str) -> Formula {
+        Formula {
+            forward: "P′ = P + A·sin(2π(P·N)/ℓ + φ)·M".into(),
+            inverse: "P = P′ − A·sin(2π(P′·N)/ℓ + φ)·M".into(),
+            values: format!(
+                "A = {}, ℓ = {}, φ = {}, M at {}°",
+                num(self.amplitude),
+                num(self.wavelength),
+                num2(self.phase),
+                num(self.angle.to_degrees())
+            ),
+            symbols: "M: the unit direction ink moves, N: M turned 90°, A: the amplitude \
+                 (px), ℓ: the wavelength along N (px), φ: the phase (radians)"
+                .into(),
+            area_preserving: true,
+        }
     }
 }
