@@ -36,6 +36,14 @@ pub fn heading(d: Vec2) -> String {
     format!("at {}°", num(deg))
 }
 
+/// The arrow closest to a direction in design space (y down, so +y is ↓).
+pub fn arrow(v: Vec2) -> char {
+    const ARROWS: [char; 8] = ['→', '↘', '↓', '↙', '←', '↖', '↑', '↗'];
+    let a = v.y.atan2(v.x).rem_euclid(std::f64::consts::TAU);
+    let i = (a / std::f64::consts::FRAC_PI_4).round() as usize % 8;
+    ARROWS[i]
+}
+
 pub(crate) fn plural(n: usize, one: &str, many: &str) -> String {
     if n == 1 {
         format!("1 {one}")
@@ -87,6 +95,14 @@ mod tests {
     use super::*;
     use crate::{Comb, Drop, Rake, Rgb8};
     use std::sync::Arc;
+
+    #[test]
+    fn arrows_follow_design_space_with_y_down() {
+        assert_eq!(arrow(Vec2::new(1.0, 0.0)), '→');
+        assert_eq!(arrow(Vec2::new(0.0, 3.0)), '↓');
+        assert_eq!(arrow(Vec2::new(-1.0, -1.1)), '↖');
+        assert_eq!(arrow(Vec2::new(0.2, -5.0)), '↑');
+    }
 
     #[test]
     fn captions_carry_the_numbers() {

@@ -92,6 +92,10 @@ impl OpType for Circular {
         )
     }
 
+    fn label(&self, _tag: &str) -> String {
+        "circular comb".to_owned()
+    }
+
     fn formula(&self, _tag: &str) -> Formula {
         Formula {
             forward: "P′ = C + R(θ)(P − C), θ = α·λ/(|ρ − r| + λ)/ρ, ρ = |P − C|".into(),

@@ -2,6 +2,7 @@
 
 use super::OpType;
 use super::rounding as round;
+use crate::caption::arrow;
 use crate::caption::{heading, num, plural, range};
 use crate::explain::{Formula, TINE_FORWARD, TINE_INVERSE, TINE_SYMBOLS, unit};
 use crate::json::{FieldReader, FieldWriter};
@@ -120,6 +121,14 @@ impl OpType for Comb {
             plural(n, "tine", "tines"),
             num(self.alpha.abs()),
             num(self.lambda)
+        )
+    }
+
+    fn label(&self, _tag: &str) -> String {
+        format!(
+            "comb of {} tines {}",
+            self.tines.len(),
+            arrow(self.direction)
         )
     }
 

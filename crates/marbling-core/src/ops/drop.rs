@@ -89,6 +89,10 @@ impl OpType for Drop {
         )
     }
 
+    fn label(&self, _tag: &str) -> String {
+        "drop".to_owned()
+    }
+
     fn formula(&self, _tag: &str) -> Formula {
         Formula {
             forward: DROP_FORWARD.into(),

@@ -185,6 +185,14 @@ impl OpType for DropSet {
         )
     }
 
+    fn label(&self, tag: &str) -> String {
+        if tag == "sprays" {
+            format!("{} spray droplets", self.len())
+        } else {
+            format!("{} drops", self.len())
+        }
+    }
+
     fn formula(&self, tag: &str) -> Formula {
         if tag == "sprays" {
             return Formula {

@@ -163,6 +163,10 @@ impl OpType for Jiggle {
         )
     }
 
+    fn label(&self, _tag: &str) -> String {
+        "jiggle".to_owned()
+    }
+
     fn formula(&self, _tag: &str) -> Formula {
         Formula {
             forward: "P′ = P + A·sin φ·u + B·cos φ·v, φ = 2π(P·u)/λ + φ₀".into(),

@@ -175,6 +175,13 @@ macro_rules! op_types {
                 }
             }
 
+            /// A short name for lists (the history): "tine →", "12 drops", "stylus stroke".
+            pub fn label(&self) -> String {
+                match self {
+                    $(Op::$variant(o) => o.label($tag),)*
+                }
+            }
+
             /// The op in plain language with its numbers: "a drop of #1f3a5f, radius
             /// 40 px, at (120, 80)".
             pub fn caption(&self) -> String {

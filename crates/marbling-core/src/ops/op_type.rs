@@ -32,6 +32,9 @@ pub(crate) trait OpType: Sized {
     /// type serves both `drops` and `sprays`).
     fn caption(&self, tag: &str) -> String;
 
+    /// A short name for lists (the history): "tine →", "12 drops".
+    fn label(&self, tag: &str) -> String;
+
     /// Its forward and inverse maps with its numbers, for the explain view; `symbols`
     /// names only this type's symbols (`P` and `P′` are added by [`crate::explain::formula`]).
     fn formula(&self, tag: &str) -> Formula;

@@ -2,6 +2,7 @@
 
 use super::OpType;
 use super::rounding as round;
+use crate::caption::arrow;
 use crate::caption::{heading, num};
 use crate::explain::{Formula, TINE_FORWARD, TINE_INVERSE, TINE_SYMBOLS, unit};
 use crate::json::{FieldReader, FieldWriter};
@@ -101,6 +102,10 @@ impl OpType for Rake {
             num(self.alpha.abs()),
             num(self.lambda)
         )
+    }
+
+    fn label(&self, _tag: &str) -> String {
+        format!("rake {} (whole sheet)", arrow(self.direction))
     }
 
     fn formula(&self, _tag: &str) -> Formula {

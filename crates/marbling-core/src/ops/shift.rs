@@ -2,6 +2,7 @@
 
 use super::OpType;
 use super::rounding as round;
+use crate::caption::arrow;
 use crate::caption::num;
 use crate::explain::Formula;
 use crate::json::{FieldReader, FieldWriter};
@@ -58,6 +59,10 @@ impl OpType for Shift {
             num(self.offset.x),
             num(self.offset.y)
         )
+    }
+
+    fn label(&self, _tag: &str) -> String {
+        format!("shift {}", arrow(self.offset))
     }
 
     fn formula(&self, _tag: &str) -> Formula {

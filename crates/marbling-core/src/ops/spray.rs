@@ -69,6 +69,10 @@ impl OpType for Spray {
         )
     }
 
+    fn label(&self, _tag: &str) -> String {
+        "spray droplet".to_owned()
+    }
+
     fn formula(&self, _tag: &str) -> Formula {
         Formula {
             forward: "P′ = P (a spray lays ink on top without moving anything)".into(),

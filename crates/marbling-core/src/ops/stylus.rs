@@ -389,6 +389,14 @@ impl OpType for Stylus {
         )
     }
 
+    fn label(&self, _tag: &str) -> String {
+        if self.tip_count() > 1 {
+            format!("stylus of {} tips", self.tip_count())
+        } else {
+            "stylus stroke".to_owned()
+        }
+    }
+
     fn formula(&self, _tag: &str) -> Formula {
         Formula {
             forward: "each sub-step δ along the path: P′ = P + δ·u((P + P′)/2), u from \

@@ -2,6 +2,7 @@
 
 use super::OpType;
 use super::rounding as round;
+use crate::caption::arrow;
 use crate::caption::{at, heading, num};
 use crate::explain::{Formula, TINE_FORWARD, TINE_INVERSE, TINE_SYMBOLS, pt, unit};
 use crate::json::{FieldReader, FieldWriter};
@@ -92,6 +93,10 @@ impl OpType for Tine {
             num(self.alpha),
             num(self.lambda)
         )
+    }
+
+    fn label(&self, _tag: &str) -> String {
+        format!("tine {}", arrow(self.direction))
     }
 
     fn formula(&self, _tag: &str) -> Formula {

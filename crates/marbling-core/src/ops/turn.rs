@@ -76,6 +76,10 @@ impl OpType for Turn {
         )
     }
 
+    fn label(&self, _tag: &str) -> String {
+        "turn".to_owned()
+    }
+
     fn formula(&self, _tag: &str) -> Formula {
         Formula {
             forward: "P′ = C + R(θ)(P − C)".into(),

@@ -81,6 +81,10 @@ impl OpType for Vortex {
         )
     }
 
+    fn label(&self, _tag: &str) -> String {
+        "vortex".to_owned()
+    }
+
     fn formula(&self, _tag: &str) -> Formula {
         Formula {
             forward: "P′ = C + R(θ)(P − C), θ = α·λ/(ρ + λ)/ρ, ρ = |P − C|".into(),

@@ -92,6 +92,10 @@ impl OpType for Wavy {
         )
     }
 
+    fn label(&self, _tag: &str) -> String {
+        "wavy comb".to_owned()
+    }
+
     fn formula(&self, _tag: &str) -> Formula {
         Formula {
             forward: "P′ = P + A·sin(2π(P·N)/ℓ + φ)·M".into(),
