@@ -160,9 +160,9 @@ impl MarblingApp {
                 // (a tab or the rail opens it again).
                 if on {
                     match self.panels.layout {
-                        crate::shell::layout::Layout::Portrait => self.panels.sheet_open = false,
+                        crate::shell::layout::Layout::Portrait => self.panels.sheet.close(),
                         crate::shell::layout::Layout::Landscape => {
-                            self.panels.rail_panel_open = false;
+                            self.panels.rail.close_panel();
                         }
                         crate::shell::layout::Layout::Desktop => {}
                     }

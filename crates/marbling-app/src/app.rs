@@ -2,6 +2,7 @@
 
 use crate::History;
 use crate::action::Action;
+use crate::frame::{Asked, with_frame};
 use crate::gpu::canvas_gpu::CanvasGpu;
 use crate::gpu::gpu_errors::GpuErrors;
 use crate::gpu::recovery::{self, LostFlag, ParkedState};
@@ -343,12 +344,21 @@ impl MarblingApp {
         name: impl Into<std::borrow::Cow<'static, str>>,
         response: &egui::Response,
     ) {
-        let (whole, shown) = (response.rect, response.interact_rect);
-        if !shown.contains(whole.center()) && response.ctx.content_rect().contains(whole.center()) {
-            return;
+        if let Some(rect) = crate::frame::shown_rect(response) {
+            self.hooks.controls.push((name.into(), rect));
         }
-        let rect = if shown.is_positive() { shown } else { whole };
-        self.hooks.controls.push((name.into(), rect));
+    }
+
+    /// Carries out what a feature asked for in its `ui` (src/frame.rs): its controls
+    /// are listed, its actions applied in order, then its message shown.
+    pub(crate) fn take_asked(&mut self, asked: Asked) {
+        self.hooks.controls.extend(asked.controls);
+        for action in asked.actions {
+            self.apply(action);
+        }
+        if let Some(m) = asked.message {
+            self.panels.message = Some(m);
+        }
     }
 
     fn handle_shortcuts(&mut self, ctx: &egui::Context) {
@@ -420,7 +430,7 @@ impl eframe::App for MarblingApp {
         self.advance_playback(&ctx);
         self.follow_recording();
         self.advance_export(frame, &ctx);
-        self.advance_svg_export(&ctx);
+        with_frame!(self, |f| self.rendering.svg.tick(&ctx, &mut f));
         self.advance_noise_export(&ctx);
         self.follow_noise();
         self.hooks.controls.clear();
@@ -450,8 +460,8 @@ impl eframe::App for MarblingApp {
                 false
             }
             crate::shell::layout::Layout::Landscape => {
-                self.tool_rail(ui);
-                self.panels.rail_panel_open
+                with_frame!(self, |frame| self.panels.rail.ui(ui, &mut frame));
+                self.panels.rail.panel_open()
             }
         };
         if side_panel {

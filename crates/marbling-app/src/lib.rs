@@ -7,6 +7,7 @@ mod action;
 mod app;
 mod automation;
 mod fast_paint;
+mod frame;
 mod gpu;
 mod marbling;
 mod media;

@@ -173,8 +173,8 @@ pub struct Rendering {
     pub fast_paint: crate::fast_paint::FastPaint,
     /// A PNG export in progress and the file name it will get.
     pub export: Option<(PngExport, String)>,
-    /// An SVG export in progress (src/store/svg_export.rs).
-    pub svg_export: Option<crate::store::svg_export::SvgExport>,
+    /// Export SVG and its running trace (src/store/svg_export.rs).
+    pub svg: crate::store::svg_export::SvgExporter,
     /// When the user last acted on the page (egui's clock, seconds): the canvas refines
     /// at its idle pace a while after.
     pub last_input_s: f64,
@@ -208,7 +208,7 @@ impl Rendering {
             parked: false,
             fast_paint: Default::default(),
             export: None,
-            svg_export: None,
+            svg: Default::default(),
             last_input_s: 0.0,
             #[cfg(target_arch = "wasm32")]
             video: None,
@@ -278,11 +278,10 @@ pub struct Panels {
     pub recorder: Option<crate::media::recorder::Recorder>,
     /// The 3D view window (src/media/view3d.rs).
     pub view3d: crate::media::view3d::View3dWindow,
-    /// The portrait layout's bottom sheet: its tab, and whether it is open.
-    pub sheet_tab: crate::shell::layout::SheetTab,
-    pub sheet_open: bool,
-    /// The landscape layout's full side panel beside the tool rail is open.
-    pub rail_panel_open: bool,
+    /// The portrait layout's bottom sheet (src/shell/bottom_sheet.rs).
+    pub sheet: crate::shell::bottom_sheet::BottomSheet,
+    /// The landscape layout's tool rail (src/shell/tool_rail.rs).
+    pub rail: crate::shell::tool_rail::ToolRail,
     /// The layout of the last frame (for `data-layout`).
     pub layout: crate::shell::layout::Layout,
     /// The explain view's geometry and what it was computed for (shown design's key,
@@ -310,9 +309,8 @@ impl Default for Panels {
             recorder: None,
             view3d: crate::media::view3d::View3dWindow::default(),
             explain_cache: None,
-            sheet_tab: crate::shell::layout::SheetTab::Tools,
-            sheet_open: true,
-            rail_panel_open: false,
+            sheet: Default::default(),
+            rail: Default::default(),
             layout: crate::shell::layout::Layout::Desktop,
         }
     }

@@ -123,8 +123,8 @@ impl MarblingApp {
                 Some(format!("{0}x{0}", e.size()))
             })
             .or_else(|| {
-                let e = self.rendering.svg_export.as_ref()?;
-                Some(format!("svg {:.0}%", 100.0 * e.progress()))
+                let done = self.rendering.svg.progress()?;
+                Some(format!("svg {:.0}%", 100.0 * done))
             });
         let wanted: Vec<(&'static str, Option<String>)> = vec![
             ("data-ready", ready.then(|| "1".to_owned())),

@@ -4,38 +4,47 @@
 
 use crate::action::Action;
 use crate::app::MarblingApp;
+use crate::frame::{Frame, with_frame};
 use crate::shell::layout::{SHEET_MAX_FRACTION, SheetTab, TOUCH_TARGET, touch_spacing};
 use crate::shell::mode::Mode;
 use crate::shell::sections;
 
-impl MarblingApp {
-    /// Shows the bottom sheet as the lowest panel of `ui` (the whole window).
-    pub(crate) fn bottom_sheet(&mut self, ui: &mut egui::Ui, frame: &mut eframe::Frame) {
-        let open_height = (ui.max_rect().height() * SHEET_MAX_FRACTION).round();
-        let panel = egui::Panel::bottom("marbling_sheet")
-            .frame(egui::Frame::side_top_panel(ui.style()))
-            .show_separator_line(false)
-            .resizable(false);
-        let panel = if self.panels.sheet_open {
-            panel.exact_size(open_height)
-        } else {
-            panel
-        };
-        panel.show(ui, |ui| {
-            touch_spacing(ui);
-            self.sheet_tabs(ui);
-            if self.panels.sheet_open {
-                egui::ScrollArea::vertical()
-                    .auto_shrink([false, false])
-                    .show(ui, |ui| self.sheet_content(ui, frame));
-            }
-        });
+/// The sheet's chosen tab and whether it is open.
+#[derive(Debug)]
+pub(crate) struct BottomSheet {
+    tab: SheetTab,
+    open: bool,
+}
+
+impl Default for BottomSheet {
+    fn default() -> Self {
+        Self {
+            tab: SheetTab::Tools,
+            open: true,
+        }
+    }
+}
+
+impl BottomSheet {
+    /// Collapses the sheet to its tab row (the player takes its room).
+    pub fn close(&mut self) {
+        self.open = false;
+    }
+
+    /// The tab the sheet shows in `mode`: the noise playground shows its own tab.
+    fn shown_tab(&self, mode: Mode) -> SheetTab {
+        match (mode, self.tab) {
+            (Mode::Noise, SheetTab::Files) => SheetTab::Files,
+            (Mode::Noise, _) => SheetTab::Noise,
+            (Mode::Marbling, SheetTab::Noise) => SheetTab::Tools,
+            (Mode::Marbling, tab) => tab,
+        }
     }
 
     /// The tab row and the collapse arrow, sharing the sheet's width.
-    fn sheet_tabs(&mut self, ui: &mut egui::Ui) {
-        let open = self.panels.sheet_open;
-        let current = self.shown_tab();
+    fn tabs_ui(&mut self, ui: &mut egui::Ui, frame: &mut Frame<'_>) {
+        let open = self.open;
+        let current = self.shown_tab(frame.editor.mode);
         ui.horizontal(|ui| {
             let gaps = ui.spacing().item_spacing.x * SheetTab::ALL.len() as f32;
             let width = ((ui.available_width() - TOUCH_TARGET - gaps) / SheetTab::ALL.len() as f32)
@@ -44,9 +53,9 @@ impl MarblingApp {
                 let button = egui::Button::selectable(open && current == tab, tab.label())
                     .min_size(egui::vec2(width, TOUCH_TARGET));
                 let r = ui.add(button);
-                self.control(tab.control(), &r);
+                frame.control(tab.control(), &r);
                 if r.clicked() {
-                    self.choose_tab(tab, open && current == tab);
+                    self.choose_tab(tab, open && current == tab, frame);
                 }
             }
             let arrow = ui
@@ -59,41 +68,57 @@ impl MarblingApp {
                 } else {
                     "Open the controls"
                 });
-            self.control("sheet-toggle", &arrow);
+            frame.control("sheet-toggle", &arrow);
             if arrow.clicked() {
-                self.panels.sheet_open = !open;
+                self.open = !open;
             }
         });
     }
 
-    /// The tab the sheet shows: the noise playground shows its own tab.
-    fn shown_tab(&self) -> SheetTab {
-        match (self.editor.mode, self.panels.sheet_tab) {
-            (Mode::Noise, SheetTab::Files) => SheetTab::Files,
-            (Mode::Noise, _) => SheetTab::Noise,
-            (Mode::Marbling, SheetTab::Noise) => SheetTab::Tools,
-            (Mode::Marbling, tab) => tab,
-        }
-    }
-
     /// A tap on `tab`: opens it (switching to the noise playground or back), or
     /// collapses the sheet when it was the open tab.
-    fn choose_tab(&mut self, tab: SheetTab, was_open: bool) {
+    fn choose_tab(&mut self, tab: SheetTab, was_open: bool, frame: &mut Frame<'_>) {
         if was_open {
-            self.panels.sheet_open = false;
+            self.open = false;
             return;
         }
-        self.panels.sheet_open = true;
-        self.panels.sheet_tab = tab;
+        self.open = true;
+        self.tab = tab;
         match tab {
-            SheetTab::Noise => self.apply(Action::SetMode(Mode::Noise)),
+            SheetTab::Noise => frame.act(Action::SetMode(Mode::Noise)),
             SheetTab::Files => {}
-            _ => self.apply(Action::SetMode(Mode::Marbling)),
+            _ => frame.act(Action::SetMode(Mode::Marbling)),
         }
+    }
+}
+
+impl MarblingApp {
+    /// Shows the bottom sheet as the lowest panel of `ui` (the whole window): its tabs,
+    /// then the open tab's sections of the side panel.
+    pub(crate) fn bottom_sheet(&mut self, ui: &mut egui::Ui, frame: &mut eframe::Frame) {
+        let open_height = (ui.max_rect().height() * SHEET_MAX_FRACTION).round();
+        let panel = egui::Panel::bottom("marbling_sheet")
+            .frame(egui::Frame::side_top_panel(ui.style()))
+            .show_separator_line(false)
+            .resizable(false);
+        let panel = if self.panels.sheet.open {
+            panel.exact_size(open_height)
+        } else {
+            panel
+        };
+        panel.show(ui, |ui| {
+            touch_spacing(ui);
+            with_frame!(self, |f| self.panels.sheet.tabs_ui(ui, &mut f));
+            if self.panels.sheet.open {
+                egui::ScrollArea::vertical()
+                    .auto_shrink([false, false])
+                    .show(ui, |ui| self.sheet_content(ui, frame));
+            }
+        });
     }
 
     fn sheet_content(&mut self, ui: &mut egui::Ui, frame: &mut eframe::Frame) {
-        let tab = self.shown_tab();
+        let tab = self.panels.sheet.shown_tab(self.editor.mode);
         if tab == SheetTab::Tools {
             // Undo beside the tools, where a phone's user draws.
             ui.horizontal(|ui| self.undo_redo(ui));

@@ -5,6 +5,7 @@
 use crate::INK_SETS;
 use crate::action::Action;
 use crate::app::MarblingApp;
+use crate::frame::with_frame;
 use crate::platform;
 use crate::shell::mode::Mode;
 use crate::shell::sections::{self, Section};
@@ -45,7 +46,9 @@ impl MarblingApp {
             Section::Export => self.export_section(ui, frame),
             Section::Noise => self.noise_section(ui),
             Section::Surface => self.surface_section(ui),
-            Section::Tool => self.tool_section(ui),
+            Section::Tool => {
+                with_frame!(self, |f| crate::marbling::tool_panel::ui(ui, &mut f));
+            }
             Section::Ink => self.ink_section(ui),
             Section::Picture => self.image_section(ui),
             Section::Video => self.video_section(ui),
@@ -183,32 +186,17 @@ impl MarblingApp {
                     self.rendering.export = None;
                     self.info("export cancelled");
                 }
-            } else if let Some(export) = &self.rendering.svg_export {
-                ui.label(format!(
-                    "tracing the SVG… {:.0} %",
-                    100.0 * export.progress()
-                ));
-                let cancel = ui.button("Cancel");
-                self.control("export-cancel", &cancel);
-                if cancel.clicked() {
-                    self.rendering.svg_export = None;
-                    self.info("export cancelled");
-                }
             } else {
-                let png = ui
-                    .button("Export PNG")
-                    .on_hover_text(format!("An exact render, {size_text}"));
-                self.control("export-png", &png);
-                if png.clicked() {
-                    self.start_png_export(frame);
+                if self.rendering.svg.progress().is_none() {
+                    let png = ui
+                        .button("Export PNG")
+                        .on_hover_text(format!("An exact render, {size_text}"));
+                    self.control("export-png", &png);
+                    if png.clicked() {
+                        self.start_png_export(frame);
+                    }
                 }
-                let svg = ui
-                    .button("Export SVG")
-                    .on_hover_text("Ink outlines traced forward, within 1 px");
-                self.control("export-svg", &svg);
-                if svg.clicked() {
-                    self.start_svg_export();
-                }
+                with_frame!(self, |f| self.rendering.svg.ui(ui, &mut f));
             }
             let view3d = ui
                 .selectable_label(self.panels.view3d.open, "3D view")

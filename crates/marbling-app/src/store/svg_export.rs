@@ -2,7 +2,7 @@
 //! design pixel) a frame's budget at a time, so the page keeps drawing while a long
 //! design traces; Cancel drops the trace. The file is offered when the trace completes.
 
-use crate::app::MarblingApp;
+use crate::frame::Frame;
 use marbling_core::Design;
 use marbling_vector::{TraceOptions, Tracer, to_svg};
 
@@ -63,26 +63,57 @@ impl SvgExport {
     }
 }
 
-impl MarblingApp {
-    /// Starts Export SVG of the current design.
-    pub(crate) fn start_svg_export(&mut self) {
-        match SvgExport::start(self.editor.history.design()) {
-            Ok(export) => {
-                self.info("tracing the SVG…");
-                self.rendering.svg_export = Some(export);
+/// Export SVG as the side panel's Export section offers it: the button, or the running
+/// trace's progress and Cancel.
+#[derive(Default)]
+pub(crate) struct SvgExporter {
+    running: Option<SvgExport>,
+}
+
+impl SvgExporter {
+    /// Share of the running trace done, [0, 1]; `None` when none runs.
+    pub fn progress(&self) -> Option<f32> {
+        self.running.as_ref().map(SvgExport::progress)
+    }
+
+    /// *Export SVG*, or the running trace's progress and *Cancel*.
+    pub fn ui(&mut self, ui: &mut egui::Ui, frame: &mut Frame<'_>) {
+        if let Some(export) = &self.running {
+            ui.label(format!(
+                "tracing the SVG… {:.0} %",
+                100.0 * export.progress()
+            ));
+            let cancel = ui.button("Cancel");
+            frame.control("export-cancel", &cancel);
+            if cancel.clicked() {
+                self.running = None;
+                frame.info("export cancelled");
             }
-            Err(e) => self.error(format!("Export SVG: {e}")),
+            return;
+        }
+        let svg = ui
+            .button("Export SVG")
+            .on_hover_text("Ink outlines traced forward, within 1 px");
+        frame.control("export-svg", &svg);
+        if svg.clicked() {
+            match SvgExport::start(frame.editor.history.design()) {
+                Ok(export) => {
+                    frame.info("tracing the SVG…");
+                    self.running = Some(export);
+                }
+                Err(e) => frame.error(format!("Export SVG: {e}")),
+            }
         }
     }
 
-    /// Moves a running SVG export on by one frame's budget; offers the file when done.
-    pub(crate) fn advance_svg_export(&mut self, ctx: &egui::Context) {
-        let Some(mut export) = self.rendering.svg_export.take() else {
+    /// Moves a running trace on by one frame's budget; offers the file when done.
+    pub fn tick(&mut self, ctx: &egui::Context, frame: &mut Frame<'_>) {
+        let Some(mut export) = self.running.take() else {
             return;
         };
         let saved = match export.advance(FRAME_BUDGET_MS, crate::platform::now_ms) {
             Ok(false) => {
-                self.rendering.svg_export = Some(export);
+                self.running = Some(export);
                 ctx.request_repaint();
                 return;
             }
@@ -96,8 +127,8 @@ impl MarblingApp {
             Err(e) => Err(e),
         };
         match saved {
-            Ok((name, bytes)) => self.info(format!("exported {name} ({bytes} bytes)")),
-            Err(e) => self.error(format!("Export SVG: {e}")),
+            Ok((name, bytes)) => frame.info(format!("exported {name} ({bytes} bytes)")),
+            Err(e) => frame.error(format!("Export SVG: {e}")),
         }
     }
 }
