@@ -6,7 +6,6 @@ use crate::frame::{Asked, with_frame};
 use crate::gpu::canvas_gpu::CanvasGpu;
 use crate::gpu::gpu_errors::GpuErrors;
 use crate::gpu::recovery::{self, LostFlag, ParkedState};
-use crate::marbling::history::Surface;
 use crate::marbling::tools::{Gesture, ToolKind};
 use crate::platform;
 use crate::shell::message::Message;
@@ -44,6 +43,8 @@ pub struct MarblingApp {
     pub(crate) hooks: Hooks,
     /// The panels' own state.
     pub(crate) panels: Panels,
+    /// The noise playground: its settings and what is made from them.
+    pub(crate) noise: crate::noise::Noise,
 }
 
 /// Default canvas of a new design, design pixels.
@@ -128,13 +129,10 @@ impl MarblingApp {
             None => {}
         }
         app.session.stored_prefs.0 = Some(app.prefs);
-        if let Some(Err(e)) = stored
-            .noise
-            .map(|s| s.and_then(|s| app.editor.noise.open(s)))
-        {
+        if let Some(Err(e)) = stored.noise.map(|s| s.and_then(|s| app.noise.open(s))) {
             log::warn!("the stored noise setup was not restored: {e}");
         }
-        app.session.stored_noise = Some(app.editor.noise.revision());
+        app.session.stored_noise = Some(app.noise.revision());
         if let Some(recent) = stored.recent {
             app.session.recent = recent;
         }
@@ -157,6 +155,7 @@ impl MarblingApp {
             rendering: Rendering::new(backend, gpu),
             hooks: Hooks::default(),
             panels: Panels::default(),
+            noise: crate::noise::Noise::default(),
         }
     }
 
@@ -204,11 +203,12 @@ impl MarblingApp {
             let size = [d.width, d.height];
             // The CPU preview draws a spec the background cannot hold: the GPU then
             // draws a bare sheet under it, not the (costly) base noise.
-            let noise = if self.editor.noise.settings().needs_preview() {
+            let noise = if self.noise.settings().needs_preview() {
                 Ok(marbling_core::Design::new(size[0], size[1], PREVIEW_PAPER))
             } else {
-                self.noise_layer()
-                    .and_then(|layer| self.editor.noise.settings().design(size, layer))
+                self.noise
+                    .layer_for(self.editor.view)
+                    .and_then(|layer| self.noise.settings().design(size, layer))
             };
             match noise {
                 Ok(noise) => {
@@ -234,7 +234,7 @@ impl MarblingApp {
             self.editor.mode = mode;
             self.editor.playback = None;
             self.editor.active = None;
-            self.editor.noise.forget_shown();
+            self.noise.forget_shown();
             self.refresh();
         }
     }
@@ -245,18 +245,10 @@ impl MarblingApp {
         if self.editor.mode != Mode::Noise {
             return;
         }
-        let factor = self.noise_zoom_factor();
-        if self.editor.noise.follow(factor) {
+        let factor = self.noise.factor_at(self.editor.view);
+        if self.noise.follow(factor) {
             self.refresh();
         }
-    }
-
-    /// Replaces the design's noise background and overlays (`what` for the status bar).
-    pub(crate) fn set_surface(&mut self, surface: Surface, what: &str) {
-        self.apply(Action::SetSurface {
-            surface,
-            what: what.to_owned(),
-        });
     }
 
     pub(crate) fn error(&mut self, text: impl Into<String>) {
@@ -305,7 +297,7 @@ impl MarblingApp {
             Link::None => {}
             Link::Noise(spec) => {
                 let opened = spec.and_then(|spec| {
-                    let opened = self.editor.noise.open(*spec);
+                    let opened = self.noise.open(*spec);
                     opened.map_err(|e| format!("noise link: {e}"))
                 });
                 match opened {
@@ -424,14 +416,14 @@ impl eframe::App for MarblingApp {
         self.poll_picked_image();
         self.poll_dropped_files(&ctx);
         self.advance_video(&ctx);
-        self.poll_picked_data();
+        with_frame!(self, |f| self.noise.poll_picked_data(&mut f));
         self.check_fragment();
         self.handle_shortcuts(&ctx);
         self.advance_playback(&ctx);
         self.follow_recording();
         self.advance_export(frame, &ctx);
         with_frame!(self, |f| self.rendering.svg.tick(&ctx, &mut f));
-        self.advance_noise_export(&ctx);
+        with_frame!(self, |f| self.noise.tick_export(&ctx, &mut f));
         self.follow_noise();
         self.hooks.controls.clear();
         // The window is cleared to the grey around the sheet and the canvas has no fill,

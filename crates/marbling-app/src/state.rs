@@ -73,8 +73,6 @@ pub struct Editor {
     pub last_fragment: Option<String>,
     /// Marbling or the noise playground.
     pub mode: Mode,
-    /// The noise playground: its settings and what is made from them.
-    pub noise: crate::noise::Noise,
 }
 
 impl Editor {
@@ -100,7 +98,6 @@ impl Editor {
             landing: false,
             last_fragment: None,
             mode: Mode::Marbling,
-            noise: crate::noise::Noise::default(),
         }
     }
 
@@ -256,8 +253,6 @@ pub struct Panels {
     pub history_scrolled: Option<(usize, usize)>,
     /// Where an asynchronous file pick delivers.
     pub pick: PickSlot,
-    /// Where a data file pick (noise playground) delivers.
-    pub data_pick: PickSlot,
     /// Where a picked or pasted picture delivers (src/media/picture.rs).
     pub image_pick: PickSlot,
     /// *Copy link* found the picture too large for a link, for the design of this key:
@@ -298,7 +293,6 @@ impl Default for Panels {
             message: None,
             history_scrolled: None,
             pick: PickSlot::default(),
-            data_pick: PickSlot::default(),
             image_pick: PickSlot::default(),
             picture_link_offer: None,
             gallery: None,

@@ -92,9 +92,9 @@ impl MarblingApp {
             .hooks
             .noise_json
             .as_ref()
-            .is_none_or(|(r, _)| *r != self.editor.noise.revision())
+            .is_none_or(|(r, _)| *r != self.noise.revision())
         {
-            let noise = &self.editor.noise;
+            let noise = &self.noise;
             let json = noise.settings().export_spec().to_value().to_string();
             self.hooks.noise_json = Some((noise.revision(), json));
         }
@@ -119,8 +119,8 @@ impl MarblingApp {
             .as_ref()
             .map(|(e, _)| format!("{}x{}", e.size().0, e.size().1))
             .or_else(|| {
-                let e = self.editor.noise.export.as_ref()?;
-                Some(format!("{0}x{0}", e.size()))
+                let side = self.noise.export_side()?;
+                Some(format!("{side}x{side}"))
             })
             .or_else(|| {
                 let done = self.rendering.svg.progress()?;
@@ -178,7 +178,7 @@ impl MarblingApp {
                 "data-noise",
                 self.hooks.noise_json.as_ref().map(|(_, j)| j.clone()),
             ),
-            ("data-noise-preview", Some(self.noise_preview_hook())),
+            ("data-noise-preview", Some(self.noise.preview_hook())),
             ("data-layout", Some(self.panels.layout.name().to_owned())),
             (
                 "data-focus",

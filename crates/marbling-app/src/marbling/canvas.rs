@@ -95,7 +95,11 @@ impl MarblingApp {
             );
         }
         if self.editor.mode == crate::shell::mode::Mode::Noise {
-            self.paint_noise_preview(ui, &painter, sheet);
+            let d = self.editor.history.design();
+            let (size, factor) = ([d.width, d.height], self.noise.factor_at(self.editor.view));
+            if let Err(e) = self.noise.paint_preview(ui, &painter, sheet, size, factor) {
+                self.error(e);
+            }
         }
         // The sheet's outline and the tool overlay: untextured shapes, drawn by the
         // flat-mesh pipeline (src/fast_paint/flat_overlay.rs) when fast paint is on.

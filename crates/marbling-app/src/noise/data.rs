@@ -3,7 +3,8 @@
 //! specs, and the panel section that maps three channels to frequency, orientation and
 //! colour, with its explanation and legend.
 
-use crate::app::MarblingApp;
+use crate::frame::Frame;
+use crate::noise::Noise;
 use egui::{Color32, RichText};
 use marbling_noise::{
     BlendBase, DataGrid, DataRef, DecayValue, DriveSource, NoiseSpec, Source, Transfer, WEATHER,
@@ -154,36 +155,36 @@ fn set_channel(spec: &mut NoiseSpec, role: Role, channel: usize) {
     }
 }
 
-impl MarblingApp {
+impl Noise {
     /// Takes a picked data file into the loaded sets and points the spec at it.
-    pub(crate) fn poll_picked_data(&mut self) {
-        let picked = self.panels.data_pick.lock().ok().and_then(|mut s| s.take());
+    pub(crate) fn poll_picked_data(&mut self, frame: &mut Frame<'_>) {
+        let picked = self.data_pick.lock().ok().and_then(|mut s| s.take());
         match picked {
             Some(Ok((name, bytes))) => {
                 let name = name.rsplit(['/', '\\']).next().unwrap_or(&name).to_owned();
-                match self.editor.noise.data.load(&name, &bytes) {
+                match self.data.load(&name, &bytes) {
                     Ok(text) => {
-                        if !self.editor.noise.settings().spec.has_data_frequency() {
+                        if !self.settings().spec.has_data_frequency() {
                             self.weather_example();
                         }
-                        let data = self.editor.noise.data.clone();
-                        rename_data(&mut self.editor.noise.edit().spec, &name, &data);
-                        self.info(text);
+                        let data = self.data.clone();
+                        rename_data(&mut self.edit().spec, &name, &data);
+                        frame.info(text);
                     }
-                    Err(e) => self.error(format!("Load data: {e}")),
+                    Err(e) => frame.error(format!("Load data: {e}")),
                 }
             }
-            Some(Err(e)) => self.error(format!("Load data: {e}")),
+            Some(Err(e)) => frame.error(format!("Load data: {e}")),
             None => {}
         }
     }
 
     /// Khlebnikov et al. (2013)'s weather figure in the panel's palette, zoom-independent.
-    pub(crate) fn weather_example(&mut self) {
-        let palette = marbling_noise::ColorRamp::named(self.editor.noise.settings().palette_name())
+    fn weather_example(&mut self) {
+        let palette = marbling_noise::ColorRamp::named(self.settings().palette_name())
             .or_else(|| marbling_noise::ColorRamp::named("viridis"));
         if let Some(p) = palette {
-            let s = self.editor.noise.edit();
+            let s = self.edit();
             s.spec = NoiseSpec::weather_example(p, s.spec.source.seed());
             s.zoom_independent = true;
         }
@@ -191,30 +192,30 @@ impl MarblingApp {
 
     /// The Data section: examples, loading, the channel mapping, the explanation and
     /// the legend.
-    pub(crate) fn noise_data_section(&mut self, ui: &mut egui::Ui) {
+    pub(crate) fn data_section_ui(&mut self, ui: &mut egui::Ui, frame: &mut Frame<'_>) {
         ui.label(RichText::new("Data (Khlebnikov et al. 2013)").strong());
         {
             ui.horizontal_wrapped(|ui| {
                 let weather = ui.button("Weather example").on_hover_text(
                     "Temperature → frequency and brightness, wind → orientation, pressure → colour",
                 );
-                self.control("noise-weather", &weather);
+                frame.control("noise-weather", &weather);
                 if weather.clicked() {
                     self.weather_example();
                 }
                 let load = ui
                     .button("Load data…")
                     .on_hover_text("A PNG (8/16-bit, up to 3 channels) or a CSV grid");
-                self.control("noise-load-data", &load);
+                frame.control("noise-load-data", &load);
                 if load.clicked() {
                     crate::platform::pick_file(
-                        self.panels.data_pick.clone(),
+                        self.data_pick.clone(),
                         crate::platform::DATA_FILE,
                         ui.ctx().clone(),
                     );
                 }
             });
-            if self.editor.noise.settings().spec.has_data_frequency() {
+            if self.settings().spec.has_data_frequency() {
                 self.data_mapping(ui);
             } else {
                 ui.label(
@@ -229,8 +230,8 @@ impl MarblingApp {
     }
 
     fn data_mapping(&mut self, ui: &mut egui::Ui) {
-        let data = self.editor.noise.data.clone();
-        self.editor.noise.edit_in(|s| {
+        let data = self.data.clone();
+        self.edit_in(|s| {
             let spec = &mut s.spec;
             let current = data_of(spec, Role::Frequency).map(|r| r.name.clone());
             egui::ComboBox::from_label("data set")
@@ -289,7 +290,7 @@ impl MarblingApp {
     /// One line per mapped channel: its name and physical range, and for the colour a
     /// bar of the palette from its low to its high value.
     fn data_legend(&self, ui: &mut egui::Ui) {
-        let spec = &self.editor.noise.settings().spec;
+        let spec = &self.settings().spec;
         for (role, what) in [
             (Role::Frequency, "coarse → fine"),
             (Role::Orientation, "0° → 180°"),
@@ -306,7 +307,7 @@ impl MarblingApp {
             ui.horizontal(|ui| {
                 ui.label(text.replace(".0000", ""));
                 if role == Role::Colour {
-                    palette_bar(ui, self.editor.noise.settings().palette_name());
+                    palette_bar(ui, self.settings().palette_name());
                 } else {
                     ui.label(RichText::new(what).weak());
                 }

@@ -3,7 +3,8 @@
 //! per frame so the page stays responsive, then encoded and offered as a download. A
 //! tiling spec is exported seamless over the exported size (`"tile": true`).
 
-use crate::app::MarblingApp;
+use crate::frame::Frame;
+use crate::noise::Noise;
 use marbling_noise::{Depth, NoiseSpec, Renderer, Tile};
 
 /// The sizes offered, pixels per side.
@@ -83,10 +84,48 @@ impl NoiseExport {
     }
 }
 
-impl MarblingApp {
+impl Noise {
+    /// Side of the running export, pixels; `None` when none runs.
+    pub(crate) fn export_side(&self) -> Option<u32> {
+        self.export.as_ref().map(NoiseExport::size)
+    }
+
+    /// Export PNG of the whole spec: its size and depth, then the button or the running
+    /// export's progress.
+    pub(crate) fn export_ui(&mut self, ui: &mut egui::Ui, frame: &mut Frame<'_>) {
+        ui.horizontal_wrapped(|ui| {
+            self.edit_in(|s| {
+                let size = EXPORT_SIZES[s.export_size.min(EXPORT_SIZES.len() - 1)];
+                egui::ComboBox::from_id_salt("noise-export-size")
+                    .selected_text(format!("{size}²"))
+                    .show_ui(ui, |ui| {
+                        for (i, n) in EXPORT_SIZES.iter().enumerate() {
+                            ui.selectable_value(&mut s.export_size, i, format!("{n}²"));
+                        }
+                    });
+                ui.checkbox(&mut s.export_16bit, "16-bit")
+                    .on_hover_text("65,536 levels per sample: height maps");
+            });
+            match &self.export {
+                Some(e) => {
+                    ui.label(format!("exporting… {:.0} %", 100.0 * e.progress()));
+                }
+                None => {
+                    let export = ui.button("Export noise PNG").on_hover_text(
+                        "The whole spec at this size (a tileable noise repeats over it)",
+                    );
+                    frame.control("noise-export-png", &export);
+                    if export.clicked() {
+                        self.start_export(frame);
+                    }
+                }
+            }
+        });
+    }
+
     /// Starts Export PNG of the noise at the panel's size and depth.
-    pub(crate) fn start_noise_export(&mut self) {
-        let s = self.editor.noise.settings();
+    fn start_export(&mut self, frame: &mut Frame<'_>) {
+        let s = self.settings();
         let size = EXPORT_SIZES[s.export_size.min(EXPORT_SIZES.len() - 1)];
         let depth = if s.export_16bit {
             Depth::Sixteen
@@ -95,20 +134,20 @@ impl MarblingApp {
         };
         match NoiseExport::start(&s.export_spec(), size, depth) {
             Ok(e) => {
-                self.info(format!("exporting {size}×{size} noise PNG…"));
-                self.editor.noise.export = Some(e);
+                frame.info(format!("exporting {size}×{size} noise PNG…"));
+                self.export = Some(e);
             }
-            Err(e) => self.error(format!("Export noise PNG: {e}")),
+            Err(e) => frame.error(format!("Export noise PNG: {e}")),
         }
     }
 
-    /// Moves a running noise export on by one frame's budget; offers the file when done.
-    pub(crate) fn advance_noise_export(&mut self, ctx: &egui::Context) {
-        let Some(mut export) = self.editor.noise.export.take() else {
+    /// Moves a running export on by one frame's budget; offers the file when done.
+    pub(crate) fn tick_export(&mut self, ctx: &egui::Context, frame: &mut Frame<'_>) {
+        let Some(mut export) = self.export.take() else {
             return;
         };
         if !export.advance(FRAME_BUDGET_MS, crate::platform::now_ms) {
-            self.editor.noise.export = Some(export);
+            self.export = Some(export);
             ctx.request_repaint();
             return;
         }
@@ -117,8 +156,8 @@ impl MarblingApp {
             .finish()
             .and_then(|bytes| crate::platform::save_file(&name, "image/png", &bytes));
         match saved {
-            Ok(()) => self.info(format!("{name} saved")),
-            Err(e) => self.error(format!("Export noise PNG: {e}")),
+            Ok(()) => frame.info(format!("{name} saved")),
+            Err(e) => frame.error(format!("Export noise PNG: {e}")),
         }
     }
 }

@@ -31,10 +31,12 @@ pub(crate) struct Noise {
     layer: Option<Result<marbling_core::NoiseLayer, String>>,
     /// The data sets loaded for data-driven noise.
     data: NoiseData,
+    /// Where a data file pick delivers (src/noise/data.rs).
+    data_pick: crate::platform::PickSlot,
     /// The CPU picture of what the noise background cannot show.
     preview: Option<NoisePreview>,
-    /// A running Export PNG of the noise.
-    pub(crate) export: Option<NoiseExport>,
+    /// A running Export PNG of the noise (src/noise/export.rs).
+    export: Option<NoiseExport>,
 }
 
 impl Noise {

@@ -3,7 +3,10 @@
 //! design's marbled background or as paper or pigment grain. The canvas shows the noise
 //! itself (drawn by the GPU renderer as a design with a noise background and no ops).
 
-use crate::app::MarblingApp;
+use crate::action::Action;
+use crate::frame::Frame;
+use crate::marbling::view::ViewState;
+use crate::noise::Noise;
 use egui::{RichText, Slider};
 use egui_plot::{Bar, BarChart, Line, Plot};
 use marbling_core::{GrainKind, NoiseBackground, NoiseLayer, Overlay, Palette};
@@ -48,25 +51,25 @@ impl NoiseAnalysis {
     }
 }
 
-impl MarblingApp {
-    /// The zoom factor the zoom-independent rule applies now (1 when it is off).
-    pub(crate) fn noise_zoom_factor(&self) -> f64 {
-        let zoom = self.editor.view.map_or(1.0, |v| v.zoom);
-        self.editor.noise.settings().zoom_factor(zoom)
+impl Noise {
+    /// The zoom factor the zoom-independent rule applies at `view`'s zoom (1 when it
+    /// is off).
+    pub(crate) fn factor_at(&self, view: Option<ViewState>) -> f64 {
+        self.settings().zoom_factor(view.map_or(1.0, |v| v.zoom))
     }
 
-    /// The noise layer of the current settings, made once per change of them
-    /// (`follow_noise` forgets it), not once a frame.
-    pub(crate) fn noise_layer(&mut self) -> Result<NoiseLayer, String> {
-        let factor = self.noise_zoom_factor();
-        self.editor.noise.layer_at(factor)
+    /// The noise layer of the current settings at `view`'s zoom, made once per change
+    /// of them (`follow` forgets it), not once a frame.
+    pub(crate) fn layer_for(&mut self, view: Option<ViewState>) -> Result<NoiseLayer, String> {
+        let factor = self.factor_at(view);
+        self.layer_at(factor)
     }
 
     /// The noise panel.
-    pub(crate) fn noise_section(&mut self, ui: &mut egui::Ui) {
+    pub(crate) fn ui(&mut self, ui: &mut egui::Ui, frame: &mut Frame<'_>) {
         ui.label(RichText::new("Noise").strong());
         let mut types = Vec::new();
-        let (controls, zoom_box) = self.editor.noise.edit_in(|s| {
+        let (controls, zoom_box) = self.edit_in(|s| {
             let shown = s.spec.source.type_name();
             let combo = egui::ComboBox::from_label("noise")
                 .selected_text(shown)
@@ -102,33 +105,34 @@ impl MarblingApp {
             (controls, zoom_box)
         });
         for (name, response) in &controls {
-            self.control(*name, response);
+            frame.control(*name, response);
         }
         // `noise-type` opens the list; `noise-type-gabor` and so on are its entries.
         for (t, response) in &types {
             match *t {
-                "" => self.control("noise-type", response),
-                t => self.control(format!("noise-type-{t}"), response),
+                "" => frame.control("noise-type", response),
+                t => frame.control(format!("noise-type-{t}"), response),
             }
         }
-        self.control("noise-zoom-independent", &zoom_box);
-        self.noise_data_section(ui);
-        let factor = self.noise_zoom_factor();
+        frame.control("noise-zoom-independent", &zoom_box);
+        self.data_section_ui(ui, frame);
+        let view = frame.editor.view;
+        let factor = self.factor_at(view);
         if factor != 1.0 {
             ui.label(RichText::new(format!("frequency × {factor:.3} at this zoom")).weak());
         }
-        self.noise_readout(ui);
+        self.readout(ui, view);
         ui.separator();
-        self.noise_uses(ui);
+        self.uses_ui(ui, frame);
     }
 
     /// Min/max/mean, the histogram and the spectrum.
-    fn noise_readout(&mut self, ui: &mut egui::Ui) {
-        if self.editor.noise.analysis.is_none() {
-            let layer = self.noise_layer();
-            self.editor.noise.analysis = Some(layer.ok().and_then(|l| NoiseAnalysis::of(&l)));
+    fn readout(&mut self, ui: &mut egui::Ui, view: Option<ViewState>) {
+        if self.analysis.is_none() {
+            let layer = self.layer_for(view);
+            self.analysis = Some(layer.ok().and_then(|l| NoiseAnalysis::of(&l)));
         }
-        let Some(Some(a)) = &self.editor.noise.analysis else {
+        let Some(Some(a)) = &self.analysis else {
             ui.label("no statistics for this noise");
             return;
         };
@@ -167,35 +171,35 @@ impl MarblingApp {
     }
 
     /// Export, link, and putting the noise on the design.
-    fn noise_uses(&mut self, ui: &mut egui::Ui) {
+    fn uses_ui(&mut self, ui: &mut egui::Ui, frame: &mut Frame<'_>) {
         ui.horizontal_wrapped(|ui| {
             let link = ui
                 .button("Copy noise link")
                 .on_hover_text("A link (#n=) that opens this noise in the Noise tab");
-            self.control("noise-copy-link", &link);
+            frame.control("noise-copy-link", &link);
             if link.clicked() {
                 let link = format!(
                     "{}#{}",
                     crate::platform::base_url(),
-                    marbling_core::noise_fragment(&self.editor.noise.settings().export_spec())
+                    marbling_core::noise_fragment(&self.settings().export_spec())
                 );
                 ui.ctx().copy_text(link.clone());
-                self.info(format!("noise link copied ({} characters)", link.len()));
+                frame.info(format!("noise link copied ({} characters)", link.len()));
             }
             let copy = ui
                 .button("Copy spec")
                 .on_hover_text("The JSON that `marbling noise SPEC -o OUT.png` renders");
-            self.control("noise-copy-spec", &copy);
+            frame.control("noise-copy-spec", &copy);
             if copy.clicked() {
-                let v = self.editor.noise.settings().export_spec().to_value();
+                let v = self.settings().export_spec().to_value();
                 ui.ctx()
                     .copy_text(serde_json::to_string_pretty(&v).unwrap_or_else(|_| v.to_string()));
-                self.info("noise spec copied");
+                frame.info("noise spec copied");
             }
         });
-        self.noise_export_row(ui);
+        self.export_ui(ui, frame);
         ui.label(RichText::new("Use on the design").strong());
-        if self.editor.noise.settings().needs_preview() {
+        if self.settings().needs_preview() {
             ui.label(
                 RichText::new(
                     "A design holds the base noise only (no layers, tiling, curve, spline \
@@ -204,7 +208,7 @@ impl MarblingApp {
                 .weak(),
             );
         }
-        let layer = match self.noise_layer() {
+        let layer = match self.layer_for(frame.editor.view) {
             Ok(l) => l,
             Err(e) => {
                 ui.label(RichText::new(e).color(egui::Color32::from_rgb(255, 110, 110)));
@@ -215,30 +219,33 @@ impl MarblingApp {
             let bg = ui
                 .button("Marble it")
                 .on_hover_text("The design's background becomes this noise, marbled like ink");
-            self.control("noise-background", &bg);
+            frame.control("noise-background", &bg);
             if bg.clicked() {
-                match Palette::named(self.editor.noise.settings().palette_name()) {
+                match Palette::named(self.settings().palette_name()) {
                     Ok(p) => {
-                        let mut surface = self.editor.history.surface();
+                        let mut surface = frame.editor.history.surface();
                         surface.0 = Some(NoiseBackground::new(layer.clone(), p));
-                        self.set_surface(surface, "noise background");
+                        frame.act(Action::SetSurface {
+                            surface,
+                            what: "noise background".to_owned(),
+                        });
                     }
-                    Err(e) => self.error(e.to_string()),
+                    Err(e) => frame.error(e.to_string()),
                 }
             }
         });
-        self.editor.noise.edit_in(|s| {
+        self.edit_in(|s| {
             ui.add(Slider::new(&mut s.grain_strength, 0.0..=1.0).text("grain strength"))
         });
         ui.horizontal_wrapped(|ui| {
             let paper = ui
                 .button("Paper grain")
                 .on_hover_text("Fixed to the paper: it stays put while the ink moves");
-            self.control("noise-paper-grain", &paper);
+            frame.control("noise-paper-grain", &paper);
             let pigment = ui
                 .button("Pigment grain")
                 .on_hover_text("Flows with the ink: combs drag it along");
-            self.control("noise-pigment-grain", &pigment);
+            frame.control("noise-pigment-grain", &pigment);
             let kind = if paper.clicked() {
                 Some(GrainKind::Paper)
             } else if pigment.clicked() {
@@ -247,87 +254,63 @@ impl MarblingApp {
                 None
             };
             if let Some(kind) = kind {
-                let strength = self.editor.noise.settings().grain_strength;
+                let strength = self.settings().grain_strength;
                 let overlay = match kind {
                     GrainKind::Paper => Overlay::paper_grain(layer.clone(), strength),
                     GrainKind::Pigment => Overlay::pigment_grain(layer.clone(), strength),
                 };
-                let mut surface = self.editor.history.surface();
+                let mut surface = frame.editor.history.surface();
                 surface.1.retain(|o| o.kind != kind);
                 surface.1.push(overlay);
-                self.set_surface(surface, kind.name());
+                frame.act(Action::SetSurface {
+                    surface,
+                    what: kind.name().to_owned(),
+                });
             }
         });
     }
+}
 
-    /// Export PNG of the whole spec: size, depth, progress.
-    fn noise_export_row(&mut self, ui: &mut egui::Ui) {
-        use crate::noise::export::EXPORT_SIZES;
-        ui.horizontal_wrapped(|ui| {
-            self.editor.noise.edit_in(|s| {
-                let size = EXPORT_SIZES[s.export_size.min(EXPORT_SIZES.len() - 1)];
-                egui::ComboBox::from_id_salt("noise-export-size")
-                    .selected_text(format!("{size}²"))
-                    .show_ui(ui, |ui| {
-                        for (i, n) in EXPORT_SIZES.iter().enumerate() {
-                            ui.selectable_value(&mut s.export_size, i, format!("{n}²"));
-                        }
-                    });
-                ui.checkbox(&mut s.export_16bit, "16-bit")
-                    .on_hover_text("65,536 levels per sample: height maps");
-            });
-            match &self.editor.noise.export {
-                Some(e) => {
-                    ui.label(format!("exporting… {:.0} %", 100.0 * e.progress()));
-                }
-                None => {
-                    let export = ui.button("Export noise PNG").on_hover_text(
-                        "The whole spec at this size (a tileable noise repeats over it)",
-                    );
-                    self.control("noise-export-png", &export);
-                    if export.clicked() {
-                        self.start_noise_export();
-                    }
-                }
+/// The design's noise background and overlays, with a way to remove them.
+pub(crate) fn surface_ui(ui: &mut egui::Ui, frame: &mut Frame<'_>) {
+    let (background, overlays) = frame.editor.history.surface();
+    if background.is_none() && overlays.is_empty() {
+        return;
+    }
+    ui.label(RichText::new("Surface").strong());
+    if let Some(b) = &background {
+        ui.horizontal(|ui| {
+            ui.label(format!("background: {} noise", b.noise.type_name()));
+            let remove = ui.small_button("remove");
+            frame.control("remove-background-noise", &remove);
+            if remove.clicked() {
+                frame.act(Action::SetSurface {
+                    surface: (None, overlays.clone()),
+                    what: "plain background".to_owned(),
+                });
             }
         });
     }
-
-    /// The design's noise background and overlays, with a way to remove them.
-    pub(crate) fn surface_section(&mut self, ui: &mut egui::Ui) {
-        let (background, overlays) = self.editor.history.surface();
-        if background.is_none() && overlays.is_empty() {
-            return;
-        }
-        ui.label(RichText::new("Surface").strong());
-        if let Some(b) = &background {
-            ui.horizontal(|ui| {
-                ui.label(format!("background: {} noise", b.noise.type_name()));
-                let remove = ui.small_button("remove");
-                self.control("remove-background-noise", &remove);
-                if remove.clicked() {
-                    self.set_surface((None, overlays.clone()), "plain background");
-                }
-            });
-        }
-        for o in &overlays {
-            ui.horizontal(|ui| {
-                ui.label(format!(
-                    "{}: {} at {:.2}",
-                    o.kind.name(),
-                    o.noise.type_name(),
-                    o.strength
-                ));
-                if ui.small_button("remove").clicked() {
-                    let kept = overlays
-                        .iter()
-                        .filter(|x| x.kind != o.kind)
-                        .cloned()
-                        .collect();
-                    self.set_surface((background.clone(), kept), "overlay removed");
-                }
-            });
-        }
+    for o in &overlays {
+        ui.horizontal(|ui| {
+            ui.label(format!(
+                "{}: {} at {:.2}",
+                o.kind.name(),
+                o.noise.type_name(),
+                o.strength
+            ));
+            if ui.small_button("remove").clicked() {
+                let kept = overlays
+                    .iter()
+                    .filter(|x| x.kind != o.kind)
+                    .cloned()
+                    .collect();
+                frame.act(Action::SetSurface {
+                    surface: (background.clone(), kept),
+                    what: "overlay removed".to_owned(),
+                });
+            }
+        });
     }
 }
 

@@ -4,7 +4,7 @@
 //! changes and finer once it settles, and drawn over the sheet — or, for a tiling spec,
 //! as 2×2 copies of one tile so the seams show.
 
-use crate::app::MarblingApp;
+use crate::noise::Noise;
 use egui::{Color32, Rect, TextureOptions, pos2};
 use marbling_noise::{NoiseSpec, Renderer, Tile};
 
@@ -22,9 +22,19 @@ pub enum Coverage {
     Tiles(u32),
 }
 
+/// What a preview picture was made for: the settings' revision, the zoom rule's factor,
+/// the sheet (design pixels) and the coverage.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct PreviewKey {
+    revision: u64,
+    factor: f64,
+    size: [u32; 2],
+    coverage: Coverage,
+}
+
 /// The preview texture and what it shows.
 pub struct NoisePreview {
-    key: String,
+    key: PreviewKey,
     fine: bool,
     texture: egui::TextureHandle,
     /// What the texture covers.
@@ -64,37 +74,36 @@ pub fn picture(
     Ok(egui::ColorImage::new([w, h], pixels))
 }
 
-impl MarblingApp {
+impl Noise {
     /// Keeps the preview in step with the noise settings (coarse on a change, fine on the
-    /// next frame without one) and draws it over `sheet`; nothing when the design's noise
-    /// background already shows the whole spec.
-    pub(crate) fn paint_noise_preview(
+    /// next frame without one) and draws it over `sheet` (a `size` design-pixel sheet
+    /// at zoom rule `factor`); nothing when the design's noise background already shows
+    /// the whole spec. An error is the spec's problem, for the status line.
+    pub(crate) fn paint_preview(
         &mut self,
         ui: &egui::Ui,
         painter: &egui::Painter,
         sheet: Rect,
-    ) {
-        let s = self.editor.noise.settings();
+        size: [u32; 2],
+        factor: f64,
+    ) -> Result<(), String> {
+        let s = self.settings();
         if !s.needs_preview() {
-            self.editor.noise.preview = None;
-            return;
+            self.preview = None;
+            return Ok(());
         }
-        let factor = self.noise_zoom_factor();
         let spec = s.shown_spec(factor);
         let coverage = match spec.tile {
             Tile::Period(p) if s.show_tiles => Coverage::Tiles(p),
             _ => Coverage::Sheet,
         };
-        let d = self.editor.history.design();
-        let size = [d.width, d.height];
-        let revision = self.editor.noise.revision();
-        let key = format!("{revision}|{factor}|{size:?}|{coverage:?}");
-        let stale = self
-            .editor
-            .noise
-            .preview
-            .as_ref()
-            .map(|p| (p.key != key, p.fine));
+        let key = PreviewKey {
+            revision: self.revision(),
+            factor,
+            size,
+            coverage,
+        };
+        let stale = self.preview.as_ref().map(|p| (p.key != key, p.fine));
         let long = match stale {
             None | Some((true, _)) => Some(COARSE),
             Some((false, false)) => Some(FINE),
@@ -109,7 +118,7 @@ impl MarblingApp {
                         ..TextureOptions::LINEAR
                     };
                     let texture = ui.ctx().load_texture("noise-preview", image, options);
-                    self.editor.noise.preview = Some(NoisePreview {
+                    self.preview = Some(NoisePreview {
                         key,
                         fine: long == FINE,
                         texture,
@@ -120,14 +129,13 @@ impl MarblingApp {
                     ui.ctx().request_repaint();
                 }
                 Err(e) => {
-                    self.editor.noise.preview = None;
-                    self.error(format!("noise: {e}"));
-                    return;
+                    self.preview = None;
+                    return Err(format!("noise: {e}"));
                 }
             }
         }
-        let Some(p) = &self.editor.noise.preview else {
-            return;
+        let Some(p) = &self.preview else {
+            return Ok(());
         };
         let (rect, uv) = match p.coverage {
             Coverage::Sheet => (sheet, Rect::from_min_max(pos2(0.0, 0.0), pos2(1.0, 1.0))),
@@ -140,11 +148,12 @@ impl MarblingApp {
             }
         };
         painter.image(p.texture.id(), rect, uv, Color32::WHITE);
+        Ok(())
     }
 
     /// `data-noise-preview`: `off`, `sheet WxH` or `tiles WxH` (texels).
-    pub(crate) fn noise_preview_hook(&self) -> String {
-        match &self.editor.noise.preview {
+    pub(crate) fn preview_hook(&self) -> String {
+        match &self.preview {
             None => "off".to_owned(),
             Some(p) => {
                 let kind = match p.coverage {

@@ -44,8 +44,10 @@ impl MarblingApp {
         match section {
             Section::File => self.file_section(ui),
             Section::Export => self.export_section(ui, frame),
-            Section::Noise => self.noise_section(ui),
-            Section::Surface => self.surface_section(ui),
+            Section::Noise => with_frame!(self, |f| self.noise.ui(ui, &mut f)),
+            Section::Surface => {
+                with_frame!(self, |f| crate::noise::panel::surface_ui(ui, &mut f));
+            }
             Section::Tool => {
                 with_frame!(self, |f| crate::marbling::tool_panel::ui(ui, &mut f));
             }
@@ -528,10 +530,7 @@ impl MarblingApp {
         ui.horizontal(|ui| {
             let (w, h) = self.editor.shown.size();
             let what = match self.editor.mode {
-                Mode::Noise => format!(
-                    "{} noise",
-                    self.editor.noise.settings().spec.source.type_name()
-                ),
+                Mode::Noise => format!("{} noise", self.noise.settings().spec.source.type_name()),
                 Mode::Marbling if self.editor.landing => "the gallery".to_owned(),
                 Mode::Marbling => match self.editor.shown.op_count() {
                     1 => "1 op".to_owned(),

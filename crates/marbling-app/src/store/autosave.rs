@@ -240,13 +240,13 @@ impl crate::app::MarblingApp {
         } else if self.session.stored_prefs.0 != Some(prefs) {
             ctx.request_repaint_after(std::time::Duration::from_secs(1));
         }
-        let noise = &self.editor.noise;
+        let noise = &self.noise;
         if self.session.stored_noise != Some(noise.revision()) {
             let json = noise.settings().export_spec().to_value().to_string();
             self.session
                 .pending_writes
                 .push((crate::noise::settings::KEY, json));
-            self.session.stored_noise = Some(self.editor.noise.revision());
+            self.session.stored_noise = Some(self.noise.revision());
         }
         for (key, value) in std::mem::take(&mut self.session.pending_writes) {
             if let Err(e) = platform::store_string(frame, key, &value) {
