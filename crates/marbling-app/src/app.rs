@@ -99,7 +99,7 @@ impl MarblingApp {
         let switch = crate::fast_paint::Switch::from_flag(platform::query("fast_paint").as_deref());
         app.rendering.fast_paint = crate::fast_paint::FastPaint::new(switch, adapter.as_ref());
         autosave::flush_on_page_hide();
-        platform::on_paste_image(app.panels.image_pick.clone(), cc.egui_ctx.clone());
+        platform::on_paste_image(app.panels.pictures.slot().clone(), cc.egui_ctx.clone());
         if let Some(parked) = recovery::take_parked() {
             app.unpark(parked);
             app.refresh();
@@ -413,9 +413,14 @@ impl eframe::App for MarblingApp {
         }
         self.check_device_lost();
         self.poll_picked_file();
-        self.poll_picked_image();
-        self.poll_dropped_files(&ctx);
-        self.advance_video(&ctx);
+        with_frame!(self, |f| self.panels.pictures.poll(&mut f));
+        let pictures = self.panels.pictures.slot();
+        crate::media::picture::route_dropped_files(&ctx, pictures, &self.panels.pick);
+        let drawn = self.rendering.status.lock().ok().and_then(|s| {
+            let live = s.drawn.as_ref().and_then(|r| r.live.as_ref());
+            live.map(|f| f.number)
+        });
+        with_frame!(self, |f| self.rendering.video.tick(&ctx, drawn, &mut f));
         with_frame!(self, |f| self.noise.poll_picked_data(&mut f));
         self.check_fragment();
         self.handle_shortcuts(&ctx);

@@ -175,17 +175,8 @@ pub struct Rendering {
     /// When the user last acted on the page (egui's clock, seconds): the canvas refines
     /// at its idle pace a while after.
     pub last_input_s: f64,
-    /// The live video playing as the background (src/media/video.rs).
-    #[cfg(target_arch = "wasm32")]
-    pub video: Option<crate::media::video::LiveVideo>,
-    /// The video's latest frame, shown as the design's picture.
-    pub live_frame: Option<crate::media::video::LiveFrame>,
-    /// How video frames are laid on the sheet.
-    pub video_fit: marbling_core::ImageFit,
-    /// Where a picked video file delivers.
-    pub video_pick: crate::platform::PickSlot,
-    /// Frames taken from the video since it started (for `data-video-frames`).
-    pub video_frames: u64,
+    /// The live video background (src/media/video_panel.rs).
+    pub video: crate::media::video_panel::LiveVideoBackground,
 }
 
 impl Rendering {
@@ -207,12 +198,7 @@ impl Rendering {
             export: None,
             svg: Default::default(),
             last_input_s: 0.0,
-            #[cfg(target_arch = "wasm32")]
-            video: None,
-            live_frame: None,
-            video_fit: marbling_core::ImageFit::Cover,
-            video_pick: Default::default(),
-            video_frames: 0,
+            video: Default::default(),
         }
     }
 }
@@ -253,11 +239,8 @@ pub struct Panels {
     pub history_scrolled: Option<(usize, usize)>,
     /// Where an asynchronous file pick delivers.
     pub pick: PickSlot,
-    /// Where a picked or pasted picture delivers (src/media/picture.rs).
-    pub image_pick: PickSlot,
-    /// *Copy link* found the picture too large for a link, for the design of this key:
-    /// the downscale-or-save offer is shown.
-    pub picture_link_offer: Option<u64>,
+    /// Pictures as the background (src/media/picture.rs).
+    pub pictures: crate::media::picture::Pictures,
     /// The gallery's designs and thumbnails (src/shell/landing.rs), read on first show.
     pub gallery: Option<crate::shell::landing::GalleryView>,
     /// The GPU thumbnail atlas (src/gpu/gallery_gpu.rs) as egui knows it.
@@ -293,8 +276,7 @@ impl Default for Panels {
             message: None,
             history_scrolled: None,
             pick: PickSlot::default(),
-            image_pick: PickSlot::default(),
-            picture_link_offer: None,
+            pictures: Default::default(),
             gallery: None,
             gallery_texture: None,
             recent_thumbnails: HashMap::new(),

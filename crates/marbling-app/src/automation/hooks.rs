@@ -138,9 +138,9 @@ impl MarblingApp {
             (
                 "data-video-frames",
                 self.rendering
-                    .live_frame
-                    .is_some()
-                    .then(|| self.rendering.video_frames.to_string()),
+                    .video
+                    .live_frame()
+                    .map(|_| self.rendering.video.frames_taken().to_string()),
             ),
             (
                 "data-view3d-frames",

@@ -350,7 +350,7 @@ impl MarblingApp {
             self.rendering
                 .fast_paint
                 .preview_antialias(self.prefs.antialias)
-        } else if self.rendering.live_frame.is_some() {
+        } else if self.rendering.video.live_frame().is_some() {
             // Live video: one sample per pixel, so frames keep coming (the 640×480
             // video is coarser than the canvas anyway); *Use this frame* keeps the
             // antialiasing setting.
@@ -377,7 +377,7 @@ impl MarblingApp {
                 })
             },
             transient: design_key != self.editor.key,
-            live: self.rendering.live_frame.clone(),
+            live: self.rendering.video.live_frame().cloned(),
         };
         self.hooks.requested = Some(request.exact_frame());
         let acting =

@@ -4,8 +4,8 @@
 //! is damaged or too large leaves the design as it is and says why.
 
 use crate::action::Action;
-use crate::app::MarblingApp;
-use crate::platform;
+use crate::frame::Frame;
+use crate::platform::{self, PickSlot};
 use egui::RichText;
 use marbling_core::image_background::IMAGE_FITS;
 use marbling_core::{
@@ -21,84 +21,93 @@ pub fn is_picture(name: &str) -> bool {
         .any(|ext| lower.ends_with(&format!(".{ext}")))
 }
 
-impl MarblingApp {
-    /// Makes the picture file `bytes` (named `name`) the design's background, keeping
-    /// the current picture's fit; a bad file leaves the design and says why.
-    pub(crate) fn open_image(&mut self, name: &str, bytes: &[u8]) {
-        let fit = self
-            .editor
-            .history
-            .design()
-            .background_image
-            .as_ref()
-            .map_or(ImageFit::default(), |b| b.fit);
-        match ImageBackground::from_file_bytes(bytes, fit) {
-            Ok(image) => {
-                let p = image.pixels();
-                let what = format!("picture {name} ({}×{})", p.width, p.height);
-                let big = image.source().len() > crate::store::autosave::AUTOSAVE_PICTURE_CHARS;
-                self.apply(Action::SetBackgroundImage {
-                    image: Some(image),
-                    what,
-                });
-                if big {
-                    self.info(format!(
-                        "{name} is large: the autosave keeps it at {} px; Save JSON keeps it whole",
-                        crate::store::autosave::AUTOSAVE_PICTURE_SIDE
-                    ));
-                }
+/// Where picked and pasted pictures arrive, and the offer made when *Copy link* found
+/// the picture too large for a link.
+#[derive(Default)]
+pub(crate) struct Pictures {
+    pick: PickSlot,
+    /// The key of the design the offer is for (it goes when the design changes).
+    link_offer: Option<u64>,
+}
+
+/// Makes the picture file `bytes` (named `name`) the design's background, keeping the
+/// current picture's fit; a bad file leaves the design and says why.
+pub(crate) fn open_image(name: &str, bytes: &[u8], frame: &mut Frame<'_>) {
+    let fit = frame
+        .editor
+        .history
+        .design()
+        .background_image
+        .as_ref()
+        .map_or(ImageFit::default(), |b| b.fit);
+    match ImageBackground::from_file_bytes(bytes, fit) {
+        Ok(image) => {
+            let p = image.pixels();
+            let what = format!("picture {name} ({}×{})", p.width, p.height);
+            let big = image.source().len() > crate::store::autosave::AUTOSAVE_PICTURE_CHARS;
+            frame.act(Action::SetBackgroundImage {
+                image: Some(image),
+                what,
+            });
+            if big {
+                frame.info(format!(
+                    "{name} is large: the autosave keeps it at {} px; Save JSON keeps it whole",
+                    crate::store::autosave::AUTOSAVE_PICTURE_SIDE
+                ));
             }
-            Err(e) => self.error(format!("{name}: {e}; the design is unchanged")),
         }
+        Err(e) => frame.error(format!("{name}: {e}; the design is unchanged")),
+    }
+}
+
+/// Files dropped on the window: pictures go to `pictures`, anything else to `designs`
+/// (read asynchronously on the web; they arrive through the pick slots).
+pub(crate) fn route_dropped_files(ctx: &egui::Context, pictures: &PickSlot, designs: &PickSlot) {
+    let dropped = ctx.input(|i| i.raw.dropped_files.clone());
+    for file in dropped {
+        let name = file.path().file_name().map_or_else(
+            || file.path().display().to_string(),
+            |n| n.to_string_lossy().into_owned(),
+        );
+        let slot = if is_picture(&name) { pictures } else { designs };
+        platform::read_dropped(file, name, slot.clone(), ctx.clone());
+    }
+}
+
+impl Pictures {
+    /// Where a picked, pasted or dropped picture delivers.
+    pub fn slot(&self) -> &PickSlot {
+        &self.pick
+    }
+
+    /// Offers the downscale-or-save choice for the design of `key`.
+    pub fn offer_link_choice(&mut self, key: u64) {
+        self.link_offer = Some(key);
     }
 
     /// A picked or pasted picture, when one has arrived.
-    pub(crate) fn poll_picked_image(&mut self) {
-        let picked = self
-            .panels
-            .image_pick
-            .lock()
-            .ok()
-            .and_then(|mut s| s.take());
+    pub fn poll(&mut self, frame: &mut Frame<'_>) {
+        let picked = self.pick.lock().ok().and_then(|mut s| s.take());
         match picked {
-            Some(Ok((name, bytes))) => self.open_image(&name, &bytes),
-            Some(Err(e)) => self.error(e),
+            Some(Ok((name, bytes))) => open_image(&name, &bytes, frame),
+            Some(Err(e)) => frame.error(e),
             None => {}
-        }
-    }
-
-    /// Files dropped on the window: pictures become the background, anything else is
-    /// opened as a design document (read asynchronously on the web; they arrive through
-    /// the pick slots).
-    pub(crate) fn poll_dropped_files(&mut self, ctx: &egui::Context) {
-        let dropped = ctx.input(|i| i.raw.dropped_files.clone());
-        for file in dropped {
-            let name = file.path().file_name().map_or_else(
-                || file.path().display().to_string(),
-                |n| n.to_string_lossy().into_owned(),
-            );
-            let slot = if is_picture(&name) {
-                self.panels.image_pick.clone()
-            } else {
-                self.panels.pick.clone()
-            };
-            platform::read_dropped(file, name, slot, ctx.clone());
         }
     }
 
     /// After *Copy link* found the picture too large for a link: downscale it for the
     /// link (the design keeps it whole) or save the JSON file instead.
-    pub(crate) fn picture_link_offer(&mut self, ui: &mut egui::Ui) {
-        if self.panels.picture_link_offer != Some(self.editor.key) {
-            self.panels.picture_link_offer = None;
+    pub fn link_offer_ui(&mut self, ui: &mut egui::Ui, frame: &mut Frame<'_>) {
+        if self.link_offer != Some(frame.editor.key) {
+            self.link_offer = None;
             return;
         }
         ui.horizontal_wrapped(|ui| {
             let shrink = ui.button("Downscale the picture for the link");
-            self.control("link-downscale", &shrink);
+            frame.control("link-downscale", &shrink);
             if shrink.clicked() {
-                self.panels.picture_link_offer = None;
-                let design = self.editor.history.design();
+                self.link_offer = None;
+                let design = frame.editor.history.design();
                 match with_link_sized_picture(design, MAX_PICTURE_LINK_CHARS) {
                     Some(small) => {
                         let fragment = share_fragment(&small);
@@ -106,44 +115,40 @@ impl MarblingApp {
                         let p = small.background_image.as_ref().map(|b| b.pixels());
                         let (w, h) = p.map_or((0, 0), |p| (p.width, p.height));
                         ui.ctx().copy_text(link.clone());
-                        self.info(format!(
+                        frame.info(format!(
                             "link copied ({} characters) with the picture at {w}×{h}; your design keeps it whole",
                             link.len()
                         ));
                     }
-                    None => self.error(
+                    None => frame.error(
                         "even a 96-pixel picture does not fit a link with these ops: save the JSON file",
                     ),
                 }
             }
             let save = ui.button("Save JSON instead");
-            self.control("link-save-json", &save);
+            frame.control("link-save-json", &save);
             if save.clicked() {
-                self.panels.picture_link_offer = None;
-                let json = self.editor.history.design().to_json_pretty();
+                self.link_offer = None;
+                let json = frame.editor.history.design().to_json_pretty();
                 match platform::save_file("design.json", "application/json", json.as_bytes()) {
-                    Ok(()) => self.info("design saved as JSON"),
-                    Err(e) => self.error(e),
+                    Ok(()) => frame.info("design saved as JSON"),
+                    Err(e) => frame.error(e),
                 }
             }
         });
     }
 
     /// The *Picture* section: open a picture, and with one, its fit and removing it.
-    pub(crate) fn image_section(&mut self, ui: &mut egui::Ui) {
-        let current = self.editor.history.design().background_image.clone();
+    pub fn ui(&mut self, ui: &mut egui::Ui, frame: &mut Frame<'_>) {
+        let current = frame.editor.history.design().background_image.clone();
         ui.horizontal_wrapped(|ui| {
             ui.label(RichText::new("Picture").strong());
             let open = ui
                 .button("Open image…")
                 .on_hover_text("Marble a photo: PNG, JPEG or WebP up to 4096×4096 (or drop one on the sheet, or paste one)");
-            self.control("open-image", &open);
+            frame.control("open-image", &open);
             if open.clicked() {
-                platform::pick_file(
-                    self.panels.image_pick.clone(),
-                    platform::IMAGE_FILE,
-                    ui.ctx().clone(),
-                );
+                platform::pick_file(self.pick.clone(), platform::IMAGE_FILE, ui.ctx().clone());
             }
         });
         let Some(image) = current else { return };
@@ -153,18 +158,18 @@ impl MarblingApp {
             for name in IMAGE_FITS {
                 let fit = ImageFit::from_name(name).unwrap_or_default();
                 let r = ui.selectable_label(image.fit == fit, *name);
-                self.control(format!("image-fit-{name}"), &r);
+                frame.control(format!("image-fit-{name}"), &r);
                 if r.clicked() && image.fit != fit {
-                    self.apply(Action::SetBackgroundImage {
+                    frame.act(Action::SetBackgroundImage {
                         image: Some(image.with_fit(fit)),
                         what: format!("picture fit: {name}"),
                     });
                 }
             }
             let remove = ui.small_button("remove");
-            self.control("remove-image", &remove);
+            frame.control("remove-image", &remove);
             if remove.clicked() {
-                self.apply(Action::SetBackgroundImage {
+                frame.act(Action::SetBackgroundImage {
                     image: None,
                     what: "picture removed".to_owned(),
                 });
@@ -178,6 +183,7 @@ mod tests {
     use super::is_picture;
     use crate::action::Action;
     use crate::app::MarblingApp;
+    use crate::frame::with_frame;
     use marbling_core::{Design, ImageFit, Op, Point, Rgb8, Spray};
 
     fn app() -> MarblingApp {
@@ -202,7 +208,7 @@ mod tests {
             radius: 2.0,
             color: Rgb8::new(0, 0, 0),
         })]));
-        a.open_image("photo.png", &photo());
+        with_frame!(a, |f| super::open_image("photo.png", &photo(), &mut f));
         let d = a.editor.history.design().clone();
         let img = d.background_image.as_ref().expect("a picture");
         assert_eq!((img.pixels().width, img.fit), (20, ImageFit::Cover));
@@ -240,13 +246,13 @@ mod tests {
     #[test]
     fn a_bad_picture_leaves_the_design_and_says_why() {
         let mut a = app();
-        a.open_image("photo.png", &photo());
+        with_frame!(a, |f| super::open_image("photo.png", &photo(), &mut f));
         let before = a.editor.history.design().clone();
         let steps = a.editor.history.steps().len();
         let mut cut = photo();
         cut.truncate(cut.len() / 2);
         for (name, bytes) in [("broken.png", cut), ("notes.jpg", b"hello".to_vec())] {
-            a.open_image(name, &bytes);
+            with_frame!(a, |f| super::open_image(name, &bytes, &mut f));
             assert_eq!(a.editor.history.design(), &before, "{name}");
             assert_eq!(a.editor.history.steps().len(), steps, "{name}");
             let m = a.panels.message.as_ref().expect("a message");

@@ -3,31 +3,61 @@
 //! and taking each new frame from the playing video (src/media/video.rs). Web only.
 
 use crate::action::Action;
-use crate::app::MarblingApp;
+use crate::frame::Frame;
+use crate::media::video::LiveFrame;
 #[cfg(target_arch = "wasm32")]
 use crate::media::video::VideoSource;
 use egui::RichText;
+use marbling_core::ImageFit;
 
-impl MarblingApp {
-    /// Takes the playing video's new frame, if any, and reports a video that could not
-    /// start (the design is left as it is).
-    pub(crate) fn advance_video(&mut self, ctx: &egui::Context) {
+/// The live video background: the playing video, its latest frame (shown as the
+/// design's picture), how frames are laid on the sheet, and where a picked file arrives.
+pub(crate) struct LiveVideoBackground {
+    #[cfg(target_arch = "wasm32")]
+    video: Option<crate::media::video::LiveVideo>,
+    live_frame: Option<LiveFrame>,
+    fit: ImageFit,
+    pick: crate::platform::PickSlot,
+    /// Frames taken since the video started (for `data-video-frames`).
+    frames: u64,
+}
+
+impl Default for LiveVideoBackground {
+    fn default() -> Self {
+        Self {
+            #[cfg(target_arch = "wasm32")]
+            video: None,
+            live_frame: None,
+            fit: ImageFit::Cover,
+            pick: Default::default(),
+            frames: 0,
+        }
+    }
+}
+
+impl LiveVideoBackground {
+    /// The video's latest frame, shown as the design's picture.
+    pub fn live_frame(&self) -> Option<&LiveFrame> {
+        self.live_frame.as_ref()
+    }
+
+    /// Frames taken since the video started.
+    pub fn frames_taken(&self) -> u64 {
+        self.frames
+    }
+
+    /// Takes the playing video's new frame, if any, once the canvas shows the last one
+    /// whole (`drawn`: the number of the live frame the canvas drew last), and reports
+    /// a video that could not start (the design is left as it is).
+    pub fn tick(&mut self, ctx: &egui::Context, drawn: Option<u64>, frame: &mut Frame<'_>) {
         #[cfg(target_arch = "wasm32")]
         {
-            if let Some(Ok((name, bytes))) = self
-                .rendering
-                .video_pick
-                .lock()
-                .ok()
-                .and_then(|mut s| s.take())
-            {
+            if let Some(Ok((name, bytes))) = self.pick.lock().ok().and_then(|mut s| s.take()) {
                 let mime = mime_of(&name);
-                self.start_video(
-                    &VideoSource::File(name, mime.to_owned(), std::sync::Arc::new(bytes)),
-                    ctx,
-                );
+                let source = VideoSource::File(name, mime.to_owned(), std::sync::Arc::new(bytes));
+                self.start(&source, ctx, frame);
             }
-            let Some(video) = &mut self.rendering.video else {
+            let Some(video) = &mut self.video else {
                 return;
             };
             if let Some(e) = video.take_failure() {
@@ -35,67 +65,61 @@ impl MarblingApp {
                     "camera" => "Camera not available".to_owned(),
                     name => format!("{name}: cannot play the video"),
                 };
-                self.stop_video();
-                self.error(format!("{what}: {e}; the design is unchanged"));
+                self.stop();
+                frame.error(format!("{what}: {e}; the design is unchanged"));
                 return;
             }
             // The next frame is taken once the canvas shows the last one whole: each
             // shown frame is marbled completely, as fast as the renderer goes.
-            let current = self.rendering.live_frame.as_ref().map(|f| f.number);
-            let drawn = self.rendering.status.lock().ok().and_then(|s| {
-                s.drawn
-                    .as_ref()
-                    .and_then(|r| r.live.as_ref())
-                    .map(|f| f.number)
-            });
+            let current = self.live_frame.as_ref().map(|f| f.number);
             if current.is_some() && drawn != current {
                 ctx.request_repaint();
                 return;
             }
-            let Some(video) = &mut self.rendering.video else {
+            let Some(video) = &mut self.video else {
                 return;
             };
-            if let Some(frame) = video.frame(self.rendering.video_fit) {
-                let size = (frame.pixels.width, frame.pixels.height);
-                self.rendering.live_frame = Some(frame);
-                self.rendering.video_frames += 1;
-                if self.rendering.video_frames == 1 {
+            if let Some(live) = video.frame(self.fit) {
+                let size = (live.pixels.width, live.pixels.height);
+                self.live_frame = Some(live);
+                self.frames += 1;
+                if self.frames == 1 {
                     let label = video.label.clone();
-                    self.info(format!("live video: {label}, {}×{}", size.0, size.1));
+                    frame.info(format!("live video: {label}, {}×{}", size.0, size.1));
                 }
             }
             // Frames arrive between egui's events: keep polling while it plays.
             ctx.request_repaint();
         }
         #[cfg(not(target_arch = "wasm32"))]
-        let _ = ctx;
+        let _ = (ctx, drawn, frame);
     }
 
     /// Starts `source` as the live background (replacing a video already playing).
     #[cfg(target_arch = "wasm32")]
-    fn start_video(&mut self, source: &VideoSource, ctx: &egui::Context) {
-        self.stop_video();
+    fn start(&mut self, source: &VideoSource, ctx: &egui::Context, frame: &mut Frame<'_>) {
+        self.stop();
         match crate::media::video::LiveVideo::start(source, ctx.clone()) {
             Ok(v) => {
-                self.info(format!("live video: {} starting…", v.label));
-                self.rendering.video = Some(v);
-                self.rendering.video_frames = 0;
+                frame.info(format!("live video: {} starting…", v.label));
+                self.video = Some(v);
+                self.frames = 0;
             }
-            Err(e) => self.error(format!("cannot start the video: {e}")),
+            Err(e) => frame.error(format!("cannot start the video: {e}")),
         }
     }
 
     /// Stops the live video (and its recording); the design's own background returns.
-    pub(crate) fn stop_video(&mut self) {
+    fn stop(&mut self) {
         #[cfg(target_arch = "wasm32")]
         {
-            self.rendering.video = None;
+            self.video = None;
         }
-        self.rendering.live_frame = None;
+        self.live_frame = None;
     }
 
     /// The *Live video* controls (web only: a desktop window has *Open image…*).
-    pub(crate) fn video_section(&mut self, ui: &mut egui::Ui) {
+    pub fn ui(&mut self, ui: &mut egui::Ui, frame: &mut Frame<'_>) {
         if !cfg!(target_arch = "wasm32") {
             return;
         }
@@ -104,67 +128,67 @@ impl MarblingApp {
             let camera = ui
                 .button("Camera")
                 .on_hover_text("Marble your webcam's picture, live");
-            self.control("video-camera", &camera);
+            frame.control("video-camera", &camera);
             let file = ui
                 .button("Video file…")
                 .on_hover_text("Marble a video file (WebM, MP4), looping");
-            self.control("video-file", &file);
+            frame.control("video-file", &file);
             #[cfg(target_arch = "wasm32")]
             if camera.clicked() {
-                self.start_video(&VideoSource::Camera, ui.ctx());
+                self.start(&VideoSource::Camera, ui.ctx(), frame);
             }
             if file.clicked() {
                 crate::platform::pick_file(
-                    self.rendering.video_pick.clone(),
+                    self.pick.clone(),
                     crate::media::video::VIDEO_FILE,
                     ui.ctx().clone(),
                 );
             }
         });
-        if self.rendering.live_frame.is_none() {
+        if self.live_frame.is_none() {
             return;
         }
         ui.horizontal_wrapped(|ui| {
             for name in marbling_core::image_background::IMAGE_FITS {
-                let fit = marbling_core::ImageFit::from_name(name).unwrap_or_default();
-                let r = ui.selectable_label(self.rendering.video_fit == fit, *name);
+                let fit = ImageFit::from_name(name).unwrap_or_default();
+                let r = ui.selectable_label(self.fit == fit, *name);
                 if r.clicked() {
-                    self.rendering.video_fit = fit;
+                    self.fit = fit;
                 }
             }
             let stop = ui.button("Stop");
-            self.control("video-stop", &stop);
+            frame.control("video-stop", &stop);
             if stop.clicked() {
-                self.stop_video();
-                self.info("live video stopped");
+                self.stop();
+                frame.info("live video stopped");
             }
             let keep = ui
                 .button("Use this frame")
                 .on_hover_text("Make the current frame the design's picture");
-            self.control("video-keep", &keep);
+            frame.control("video-keep", &keep);
             if keep.clicked()
-                && let Some(frame) = self.rendering.live_frame.clone()
+                && let Some(live) = self.live_frame.clone()
             {
-                match frame.to_background() {
+                match live.to_background() {
                     Ok(image) => {
-                        self.stop_video();
-                        self.apply(Action::SetBackgroundImage {
+                        self.stop();
+                        frame.act(Action::SetBackgroundImage {
                             image: Some(image),
                             what: "picture: a video frame".to_owned(),
                         });
                     }
-                    Err(e) => self.error(format!("cannot keep the frame: {e}")),
+                    Err(e) => frame.error(format!("cannot keep the frame: {e}")),
                 }
             }
-            self.record_video_button(ui);
+            self.record_button(ui, frame);
         });
     }
 
     /// *Record* / *Stop recording* of the marbled canvas while the video plays.
-    fn record_video_button(&mut self, ui: &mut egui::Ui) {
+    fn record_button(&mut self, ui: &mut egui::Ui, frame: &mut Frame<'_>) {
         #[cfg(target_arch = "wasm32")]
         {
-            let Some(video) = &mut self.rendering.video else {
+            let Some(video) = &mut self.video else {
                 return;
             };
             let recording = video.recording.is_some();
@@ -176,31 +200,28 @@ impl MarblingApp {
             let r = ui
                 .button(label)
                 .on_hover_text("Film the marbled canvas to a WebM video");
-            self.control("video-record", &r);
+            frame.control("video-record", &r);
             if !r.clicked() {
                 return;
             }
-            let Some(video) = &mut self.rendering.video else {
-                return;
-            };
             match video.recording.take() {
                 Some(rec) => {
                     rec.finish("marbled-video.webm");
-                    self.info("recording saved as marbled-video.webm");
+                    frame.info("recording saved as marbled-video.webm");
                 }
                 None => {
                     match crate::media::recorder::Recorder::start(crate::media::video::RECORD_FPS) {
                         Ok(rec) => {
                             video.recording = Some(rec);
-                            self.info("recording the marbled video…");
+                            frame.info("recording the marbled video…");
                         }
-                        Err(e) => self.error(e),
+                        Err(e) => frame.error(e),
                     }
                 }
             }
         }
         #[cfg(not(target_arch = "wasm32"))]
-        let _ = ui;
+        let _ = (ui, frame);
     }
 }
 

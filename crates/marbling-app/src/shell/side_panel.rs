@@ -52,8 +52,8 @@ impl MarblingApp {
                 with_frame!(self, |f| crate::marbling::tool_panel::ui(ui, &mut f));
             }
             Section::Ink => self.ink_section(ui),
-            Section::Picture => self.image_section(ui),
-            Section::Video => self.video_section(ui),
+            Section::Picture => with_frame!(self, |f| self.panels.pictures.ui(ui, &mut f)),
+            Section::Video => with_frame!(self, |f| self.rendering.video.ui(ui, &mut f)),
             Section::History => self.history_section(ui),
             Section::Recent => self.recent_section(ui),
         }
@@ -104,7 +104,7 @@ impl MarblingApp {
                 if self.editor.history.design().background_image.is_some()
                     && fragment > marbling_core::MAX_PICTURE_LINK_CHARS
                 {
-                    self.panels.picture_link_offer = Some(self.editor.key);
+                    self.panels.pictures.offer_link_choice(self.editor.key);
                     self.error(format!(
                         "the picture makes the link {} KB; links hold about {} KB: downscale the picture for the link, or save the JSON file",
                         fragment / 1024,
@@ -135,7 +135,7 @@ impl MarblingApp {
                 self.info(format!("link copied ({} characters)", link.len()));
             }
         });
-        self.picture_link_offer(ui);
+        with_frame!(self, |f| self.panels.pictures.link_offer_ui(ui, &mut f));
         ui.horizontal(|ui| {
             ui.label("New sheet");
             ui.add(
