@@ -58,6 +58,8 @@ pub enum Action {
     },
     /// Switches between marbling and the noise playground.
     SetMode(Mode),
+    /// Shows the gallery in place of the canvas, or the canvas again.
+    ShowGallery(bool),
     /// A noise background and grain overlays; `what` names the change.
     SetSurface {
         /// The new background and overlays.
@@ -73,9 +75,11 @@ impl MarblingApp {
         // Only a change of the document ends the start-up design's pristine state, and
         // the status line's message about the one before.
         let pristine = match action {
-            Action::SetMode(_) | Action::Play(_) | Action::Seek { .. } | Action::View(_) => {
-                self.editor.pristine
-            }
+            Action::SetMode(_)
+            | Action::ShowGallery(_)
+            | Action::Play(_)
+            | Action::Seek { .. }
+            | Action::View(_) => self.editor.pristine,
             _ => {
                 self.panels.message = None;
                 std::mem::take(&mut self.editor.pristine)
@@ -181,6 +185,10 @@ impl MarblingApp {
             }
             Action::SetMode(mode) => {
                 self.set_mode(mode);
+                return;
+            }
+            Action::ShowGallery(on) => {
+                self.editor.landing = on;
                 return;
             }
             Action::Restore(i) => self.editor.history.restore(i),

@@ -88,7 +88,7 @@ impl MarblingApp {
             .design()
             .unwrap_or_else(|_| blank(NEW_SIZE));
         let mut app = Self::with_design(fallback, backend, gpu);
-        app.panels.gallery_texture = gallery_texture;
+        app.panels.gallery = crate::shell::landing::Gallery::with_gpu_texture(gallery_texture);
         app.editor.pristine = true;
         app.rendering.lost = lost;
         app.rendering.gpu_errors = gpu_errors;
@@ -508,7 +508,8 @@ impl eframe::App for MarblingApp {
             .frame(egui::Frame::central_panel(ui.style()).fill(egui::Color32::TRANSPARENT))
             .show(ui, |ui| {
                 if self.editor.landing && self.editor.mode == Mode::Marbling {
-                    self.landing(ui);
+                    let gpu = self.rendering.gpu;
+                    with_frame!(self, |f| self.panels.gallery.ui(ui, gpu, &mut f));
                 } else {
                     self.canvas(ui, frame);
                 }

@@ -241,10 +241,8 @@ pub struct Panels {
     pub pick: PickSlot,
     /// Pictures as the background (src/media/picture.rs).
     pub pictures: crate::media::picture::Pictures,
-    /// The gallery's designs and thumbnails (src/shell/landing.rs), read on first show.
-    pub gallery: Option<crate::shell::landing::GalleryView>,
-    /// The GPU thumbnail atlas (src/gpu/gallery_gpu.rs) as egui knows it.
-    pub gallery_texture: Option<egui::TextureId>,
+    /// The gallery (src/shell/landing.rs).
+    pub gallery: crate::shell::landing::Gallery,
     /// Thumbnails of recent designs, by share fragment (made on first show; `None`: too
     /// large to draw one quickly, or unreadable).
     pub recent_thumbnails: HashMap<String, Option<egui::TextureHandle>>,
@@ -277,8 +275,7 @@ impl Default for Panels {
             history_scrolled: None,
             pick: PickSlot::default(),
             pictures: Default::default(),
-            gallery: None,
-            gallery_texture: None,
+            gallery: Default::default(),
             recent_thumbnails: HashMap::new(),
             new_size: NEW_SIZE,
             export_size: ExportSize::Screen,

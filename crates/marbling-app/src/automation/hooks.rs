@@ -198,14 +198,14 @@ impl MarblingApp {
             ),
             (
                 "data-thumbnails",
-                self.panels.gallery.as_ref().map(|g| {
+                self.panels.gallery.view().map(|g| {
                     let (drawn, total) = g.progress();
                     format!("{drawn}/{total}")
                 }),
             ),
             (
                 "data-thumbnails-from",
-                self.panels.gallery.as_ref().map(|g| g.source().to_owned()),
+                self.panels.gallery.view().map(|g| g.source().to_owned()),
             ),
             (
                 "data-recovered",

@@ -5,7 +5,7 @@
 //! opens its design for editing.
 
 use crate::action::Action;
-use crate::app::MarblingApp;
+use crate::frame::Frame;
 use crate::gpu::gallery_atlas::{AtlasLoad, Loaded};
 use crate::gpu::gallery_gpu::{ThumbnailCallback, cell_uv};
 use crate::shell::gallery::{Card, Entry, entries};
@@ -134,18 +134,37 @@ fn plain_card(
     r
 }
 
-impl MarblingApp {
-    /// Shows the gallery in place of the canvas.
-    pub(crate) fn landing(&mut self, ui: &mut egui::Ui) {
+/// The gallery shown in place of the canvas: its cards and thumbnails, made on first
+/// show, and the texture egui knows the GPU-drawn thumbnails by.
+#[derive(Default)]
+pub(crate) struct Gallery {
+    view: Option<GalleryView>,
+    gpu_texture: Option<egui::TextureId>,
+}
+
+impl Gallery {
+    /// A gallery whose thumbnails, where the GPU draws them, are in texture `id`.
+    pub fn with_gpu_texture(id: Option<egui::TextureId>) -> Self {
+        Self {
+            view: None,
+            gpu_texture: id,
+        }
+    }
+
+    /// The cards and thumbnails, once shown.
+    pub fn view(&self) -> Option<&GalleryView> {
+        self.view.as_ref()
+    }
+
+    /// Shows the gallery in place of the canvas (`gpu`: a GPU renderer exists to draw
+    /// thumbnails the prerendered atlas cannot give).
+    pub fn ui(&mut self, ui: &mut egui::Ui, gpu: bool, frame: &mut Frame<'_>) {
         let ctx = ui.ctx().clone();
-        let view = self
-            .panels
-            .gallery
-            .get_or_insert_with(|| GalleryView::load(&ctx));
+        let view = self.view.get_or_insert_with(|| GalleryView::load(&ctx));
         let atlas = view.atlas_texture(&ctx);
         let drawn_here = view.source() == "gpu";
         let (drawn, total) = view.progress();
-        if drawn_here && drawn < total && self.rendering.gpu {
+        if drawn_here && drawn < total && gpu {
             // Without the prerendered atlas: one thumbnail a frame, drawn in egui's
             // prepare step.
             ui.painter().add(egui_wgpu::Callback::new_paint_callback(
@@ -159,16 +178,12 @@ impl MarblingApp {
         }
         let shown: Vec<Card> = view.cards.iter().map(|(_, c)| c.clone()).collect();
         let ids: Vec<&'static str> = view.cards.iter().map(|(e, _)| e.id).collect();
-        let texture = if drawn_here {
-            self.panels.gallery_texture
-        } else {
-            atlas
-        };
+        let texture = if drawn_here { self.gpu_texture } else { atlas };
         let mut open = None;
         let mut blank = false;
         let mut close = false;
         let mut drawn_controls = Vec::new();
-        if self.panels.layout.touch() {
+        if frame.layout.touch() {
             crate::shell::layout::touch_spacing(ui);
         }
         // The scroll bar always shows: a cut-off last row says there is more below.
@@ -255,28 +270,29 @@ impl MarblingApp {
                 }
             });
         for (name, r) in drawn_controls {
-            self.control(name, &r);
+            frame.control(name, &r);
         }
         let opened = open.and_then(|n| {
-            let view = self.panels.gallery.as_ref()?;
+            let view = self.view.as_ref()?;
             let (entry, card) = view.cards.get(n)?;
             Some((entry.design(), card.name.clone()))
         });
         if let Some((design, name)) = opened {
-            self.editor.landing = false;
             match design {
-                Ok(design) => self.apply(Action::Load {
+                Ok(design) => frame.act(Action::Load {
                     design,
                     from: name,
                     from_link: false,
                 }),
-                Err(e) => self.error(format!("{name}: {e}")),
+                Err(e) => {
+                    frame.act(Action::ShowGallery(false));
+                    frame.error(format!("{name}: {e}"));
+                }
             }
         } else if blank {
-            self.editor.landing = false;
-            self.apply(Action::NewSheet);
+            frame.act(Action::NewSheet);
         } else if close {
-            self.editor.landing = false;
+            frame.act(Action::ShowGallery(false));
         }
     }
 }

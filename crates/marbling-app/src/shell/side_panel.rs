@@ -66,7 +66,7 @@ impl MarblingApp {
                 .on_hover_text("The traditional patterns, and a blank sheet");
             self.control("gallery", &gallery);
             if gallery.clicked() {
-                self.editor.landing = true;
+                self.apply(Action::ShowGallery(true));
                 self.apply(Action::SetMode(Mode::Marbling));
             }
             let new = ui
