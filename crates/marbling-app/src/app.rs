@@ -45,6 +45,8 @@ pub struct MarblingApp {
     pub(crate) panels: Panels,
     /// The noise playground: its settings and what is made from them.
     pub(crate) noise: crate::noise::Noise,
+    /// The step player's speed, explain view and recording.
+    pub(crate) player: crate::marbling::player::Player,
 }
 
 /// Default canvas of a new design, design pixels.
@@ -156,6 +158,7 @@ impl MarblingApp {
             hooks: Hooks::default(),
             panels: Panels::default(),
             noise: crate::noise::Noise::default(),
+            player: Default::default(),
         }
     }
 
@@ -381,7 +384,7 @@ impl MarblingApp {
         };
         let dt = f64::from(ctx.input(|i| i.stable_dt)).min(0.1);
         let steps = self.editor.history.design().gesture_sizes().len();
-        let running = p.advance(dt, self.editor.play_speed, steps);
+        let running = p.advance(dt, self.player.speed(), steps);
         self.editor.playback = Some(p);
         self.refresh();
         if running {
@@ -425,7 +428,7 @@ impl eframe::App for MarblingApp {
         self.check_fragment();
         self.handle_shortcuts(&ctx);
         self.advance_playback(&ctx);
-        self.follow_recording();
+        with_frame!(self, |f| self.player.follow_recording(&mut f));
         self.advance_export(frame, &ctx);
         with_frame!(self, |f| self.rendering.svg.tick(&ctx, &mut f));
         with_frame!(self, |f| self.noise.tick_export(&ctx, &mut f));
@@ -500,7 +503,9 @@ impl eframe::App for MarblingApp {
             egui::Panel::bottom("marbling_player")
                 .frame(egui::Frame::side_top_panel(ui.style()))
                 .show_separator_line(false)
-                .show(ui, |ui| self.player_bar(ui, room));
+                .show(ui, |ui| {
+                    with_frame!(self, |f| self.player.ui(ui, room, &mut f))
+                });
         }
         // Set again by the canvas when it is shown this frame (src/automation/hooks.rs).
         self.hooks.requested = None;

@@ -60,10 +60,6 @@ pub struct Editor {
     pub next_seed: u64,
     /// Play in progress.
     pub playback: Option<Playback>,
-    /// Player speed, steps per second.
-    pub play_speed: f64,
-    /// The player's explain view: formulas, deformation grid, arrows and area probe.
-    pub explain: crate::marbling::player::Explain,
     /// True while the design is the start-up example nobody has touched (a link then
     /// replaces it instead of stacking on it).
     pub pristine: bool,
@@ -92,8 +88,6 @@ impl Editor {
             active: None,
             next_seed: 1,
             playback: None,
-            play_speed: 0.8,
-            explain: crate::marbling::player::Explain::default(),
             pristine: false,
             landing: false,
             last_fragment: None,
@@ -250,8 +244,6 @@ pub struct Panels {
     pub new_size: [u32; 2],
     /// The size Export PNG renders at.
     pub export_size: ExportSize,
-    /// The player being filmed (src/media/recorder.rs).
-    pub recorder: Option<crate::media::recorder::Recorder>,
     /// The 3D view window (src/media/view3d.rs).
     pub view3d: crate::media::view3d::View3dWindow,
     /// The portrait layout's bottom sheet (src/shell/bottom_sheet.rs).
@@ -260,12 +252,6 @@ pub struct Panels {
     pub rail: crate::shell::tool_rail::ToolRail,
     /// The layout of the last frame (for `data-layout`).
     pub layout: crate::shell::layout::Layout,
-    /// The explain view's geometry and what it was computed for (shown design's key,
-    /// settings, half-octave of zoom).
-    pub explain_cache: Option<(
-        (u64, crate::marbling::player::Explain, i32),
-        Arc<crate::marbling::explain_geometry::ExplainGeometry>,
-    )>,
 }
 
 impl Default for Panels {
@@ -279,9 +265,7 @@ impl Default for Panels {
             recent_thumbnails: HashMap::new(),
             new_size: NEW_SIZE,
             export_size: ExportSize::Screen,
-            recorder: None,
             view3d: crate::media::view3d::View3dWindow::default(),
-            explain_cache: None,
             sheet: Default::default(),
             rail: Default::default(),
             layout: crate::shell::layout::Layout::Desktop,

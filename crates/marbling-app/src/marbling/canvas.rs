@@ -120,7 +120,7 @@ impl MarblingApp {
         ]);
         if let Some(p) = self.editor.playback {
             // The player draws the step's tool moving, and the explain view.
-            if let Some(g) = self.explain_geometry() {
+            if let Some(g) = self.player.explain_geometry(&self.editor) {
                 crate::marbling::player_drawing::draw_explain(
                     &painter.with_clip_rect(sheet),
                     rect,
@@ -218,17 +218,14 @@ impl MarblingApp {
             self.editor.active = None;
             return;
         }
-        if self.editor.playback.is_some() && self.editor.explain.on {
+        if self.editor.playback.is_some() && self.player.explain().on {
             // While explaining, a click on the sheet moves the area probe.
             if pressed
                 && response.hovered()
                 && let Some(p) = pos
             {
-                let (_, r) = self
-                    .editor
-                    .explain
-                    .probe_circle(self.editor.history.design());
-                self.editor.explain.probe = Some((to_design(p), r));
+                self.player
+                    .move_probe(to_design(p), self.editor.history.design());
             }
             return;
         }

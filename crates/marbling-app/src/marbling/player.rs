@@ -4,8 +4,9 @@
 //! arrows and the area probe, drawn by src/marbling/player_drawing.rs).
 
 use crate::action::Action;
-use crate::app::MarblingApp;
+use crate::frame::Frame;
 use crate::marbling::explain_geometry::{ExplainGeometry, Window};
+use crate::state::Editor;
 use egui::{Color32, Sense, Slider, Stroke, vec2};
 use marbling_core::{Design, Point};
 use std::sync::Arc;
@@ -31,20 +32,59 @@ impl Explain {
     }
 }
 
-impl MarblingApp {
+/// The step player's own state: its speed, the explain view's settings and geometry,
+/// and a recording of the making.
+pub(crate) struct Player {
+    /// Steps per second.
+    speed: f64,
+    explain: Explain,
+    recorder: Option<crate::media::recorder::Recorder>,
+    /// The explain view's geometry and what it was computed for (shown design's key,
+    /// settings, half-octave of zoom).
+    explain_cache: Option<((u64, Explain, i32), Arc<ExplainGeometry>)>,
+}
+
+impl Default for Player {
+    fn default() -> Self {
+        Self {
+            speed: 0.8,
+            explain: Explain::default(),
+            recorder: None,
+            explain_cache: None,
+        }
+    }
+}
+
+impl Player {
+    /// Steps per second.
+    pub fn speed(&self) -> f64 {
+        self.speed
+    }
+
+    /// The explain view's settings.
+    pub fn explain(&self) -> &Explain {
+        &self.explain
+    }
+
+    /// Moves the explain view's probe circle to `center` (design px), keeping its size.
+    pub fn move_probe(&mut self, center: Point, design: &Design) {
+        let (_, r) = self.explain.probe_circle(design);
+        self.explain.probe = Some((center, r));
+    }
+
     /// The player's bar (shown while the player is open), at most `max_height` points
     /// tall: the explain text scrolls in what is left, so the canvas keeps its share.
-    pub(crate) fn player_bar(&mut self, ui: &mut egui::Ui, max_height: f32) {
-        let Some(p) = self.editor.playback else {
+    pub fn ui(&mut self, ui: &mut egui::Ui, max_height: f32, frame: &mut Frame<'_>) {
+        let Some(p) = frame.editor.playback else {
             return;
         };
         let top = ui.cursor().top();
-        let design = self.editor.history.design_shared().clone();
+        let design = frame.editor.history.design_shared().clone();
         let steps = design.gesture_sizes().len();
         let captions = design.step_captions();
         let mut seek = None;
         ui.add_space(2.0);
-        if self.panels.layout.touch() {
+        if frame.layout.touch() {
             crate::shell::layout::touch_spacing(ui);
         }
         // One height for every control of the row; on a phone the row wraps.
@@ -53,7 +93,7 @@ impl MarblingApp {
             let back = ui
                 .add(egui::Button::new("◀ Step").min_size(row))
                 .on_hover_text("Step back");
-            self.control("player-back", &back);
+            frame.control("player-back", &back);
             if back.clicked() {
                 let to = if p.t > 0.0 {
                     p.step
@@ -69,7 +109,7 @@ impl MarblingApp {
                         .min_size(vec2(52.0, row.y)),
                 )
                 .on_hover_text("Play from here, or pause");
-            self.control("player-play", &play);
+            frame.control("player-play", &play);
             if play.clicked() {
                 let from = if p.step >= steps { 0.0 } else { p.position() };
                 seek = Some((from, !playing));
@@ -77,7 +117,7 @@ impl MarblingApp {
             let fwd = ui
                 .add(egui::Button::new("Step ▶").min_size(row))
                 .on_hover_text("Step forward");
-            self.control("player-forward", &fwd);
+            frame.control("player-forward", &fwd);
             if fwd.clicked() {
                 seek = Some(((p.step + 1).min(steps) as f64, false));
             }
@@ -89,39 +129,36 @@ impl MarblingApp {
                     (ui.available_size_before_wrap().x - 120.0).min(ui.spacing().slider_width);
             }
             let speed = ui.add(
-                Slider::new(&mut self.editor.play_speed, 0.1..=4.0)
+                Slider::new(&mut self.speed, 0.1..=4.0)
                     .logarithmic(true)
                     .text("steps/s"),
             );
-            self.control("player-speed", &speed);
+            frame.control("player-speed", &speed);
             // Toggles look like buttons, lit while on.
             let explain = ui
                 .add(
                     egui::Button::new("Explain")
-                        .selected(self.editor.explain.on)
+                        .selected(self.explain.on)
                         .min_size(row),
                 )
                 .on_hover_text("Formulas, the deformation grid, arrows and the area probe");
-            self.control("player-explain", &explain);
+            frame.control("player-explain", &explain);
             if explain.clicked() {
-                self.editor.explain.on = !self.editor.explain.on;
+                self.explain.on = !self.explain.on;
             }
-            self.record_button(ui, row, &mut seek);
+            self.record_button(ui, row, &mut seek, frame);
             let close = ui
                 .add(egui::Button::new("Close").min_size(row))
                 .on_hover_text("Close the player");
-            self.control("player-close", &close);
+            frame.control("player-close", &close);
             if close.clicked() {
                 seek = None;
-                self.apply(Action::Play(false));
+                frame.act(Action::Play(false));
             }
         });
-        if let Some(to) = self.timeline(ui, p, steps) {
+        if let Some(to) = Self::timeline(ui, p, steps, frame) {
             seek = Some((to, false));
         }
-        let Some(p) = self.editor.playback else {
-            return;
-        };
         let current = p.current_step();
         let caption = match current {
             None => "Before the first step: the bare tank.".to_owned(),
@@ -137,7 +174,7 @@ impl MarblingApp {
         ui.label(crate::marbling::colour_words::caption_job(
             &caption, font, color,
         ));
-        if self.editor.explain.on {
+        if self.explain.on {
             // What is left of the bar's share scrolls the explain text; always the same
             // height, so stepping does not move the canvas.
             let used = ui.cursor().top() - top;
@@ -146,10 +183,10 @@ impl MarblingApp {
                 .min_scrolled_height(height)
                 .max_height(height)
                 .auto_shrink([false, false])
-                .show(ui, |ui| self.explain_text(ui, &design, current));
+                .show(ui, |ui| self.explain_text(ui, &design, current, frame));
         }
         if let Some((position, playing)) = seek {
-            self.apply(Action::Seek { position, playing });
+            frame.act(Action::Seek { position, playing });
         }
     }
 
@@ -159,8 +196,9 @@ impl MarblingApp {
         ui: &mut egui::Ui,
         row: egui::Vec2,
         seek: &mut Option<(f64, bool)>,
+        frame: &mut Frame<'_>,
     ) {
-        let recording = self.panels.recorder.is_some();
+        let recording = self.recorder.is_some();
         let record = ui
             .add(
                 egui::Button::new(if recording {
@@ -172,18 +210,18 @@ impl MarblingApp {
                 .min_size(row),
             )
             .on_hover_text("Film the making from the first step to a WebM video");
-        self.control("player-record", &record);
+        frame.control("player-record", &record);
         if record.clicked() {
             if recording {
-                self.finish_recording();
+                self.finish_recording(frame);
             } else {
                 match crate::media::recorder::Recorder::start(30.0) {
                     Ok(r) => {
-                        self.panels.recorder = Some(r);
+                        self.recorder = Some(r);
                         *seek = Some((0.0, true));
-                        self.info("recording the making: the video downloads at the end");
+                        frame.info("recording the making: the video downloads at the end");
                     }
-                    Err(e) => self.error(e),
+                    Err(e) => frame.error(e),
                 }
             }
         }
@@ -192,14 +230,14 @@ impl MarblingApp {
     /// The timeline across the bar: a tick per step with its number (as many as fit),
     /// the playhead in the accent colour; a click or drag seeks (returned, in steps).
     fn timeline(
-        &mut self,
         ui: &mut egui::Ui,
         p: crate::marbling::playback::Playback,
         steps: usize,
+        frame: &mut Frame<'_>,
     ) -> Option<f64> {
         let width = (ui.available_width() - 8.0).max(60.0);
         let (rect, r) = ui.allocate_exact_size(vec2(width, 36.0), Sense::click_and_drag());
-        self.control("player-timeline", &r);
+        frame.control("player-timeline", &r);
         let line = egui::Rect::from_min_size(rect.min, vec2(rect.width(), 22.0));
         let x_of = |pos: f64| line.left() + (pos / steps.max(1) as f64) as f32 * line.width();
         let painter = ui.painter();
@@ -253,35 +291,41 @@ impl MarblingApp {
 
     /// Ends a recording (its video downloads) once the player stops at the end or is
     /// closed, or when asked.
-    pub(crate) fn finish_recording(&mut self) {
-        if let Some(r) = self.panels.recorder.take() {
-            let design = self.editor.history.design();
+    pub fn finish_recording(&mut self, frame: &mut Frame<'_>) {
+        if let Some(r) = self.recorder.take() {
+            let design = frame.editor.history.design();
             let name = crate::store::export::export_file_name(
                 design,
                 (design.width, design.height),
                 "webm",
             );
             r.finish(&name);
-            self.info(format!("recorded {name}"));
+            frame.info(format!("recorded {name}"));
         }
     }
 
     /// Called every frame: a recording ends with the player.
-    pub(crate) fn follow_recording(&mut self) {
-        if self.panels.recorder.is_some() && self.editor.playback.is_none_or(|p| !p.playing) {
-            self.finish_recording();
+    pub fn follow_recording(&mut self, frame: &mut Frame<'_>) {
+        if self.recorder.is_some() && frame.editor.playback.is_none_or(|p| !p.playing) {
+            self.finish_recording(frame);
         }
     }
 
     /// The formulas of the current step's op (the one easing in, else the step's
     /// last) with every symbol defined, what the drawing shows, and the probe's areas.
-    fn explain_text(&mut self, ui: &mut egui::Ui, design: &Design, current: Option<usize>) {
+    fn explain_text(
+        &mut self,
+        ui: &mut egui::Ui,
+        design: &Design,
+        current: Option<usize>,
+        frame: &mut Frame<'_>,
+    ) {
         let Some(k) = current else {
             ui.label("The tank is empty; every step that follows moves it by a formula.");
             return;
         };
         let bounds = design.step_bounds();
-        let p = self
+        let p = frame
             .editor
             .playback
             .unwrap_or_else(crate::marbling::playback::Playback::start);
@@ -295,16 +339,16 @@ impl MarblingApp {
         ui.label(format!("with {}", f.values));
         ui.label(f.symbols);
         let c = ui.checkbox(
-            &mut self.editor.explain.cumulative,
+            &mut self.explain.cumulative,
             "grid through every step so far",
         );
-        self.control("player-cumulative", &c);
-        if let Some(g) = self.explain_geometry() {
+        frame.control("player-cumulative", &c);
+        if let Some(g) = self.explain_geometry(frame.editor) {
             let mut shows = format!(
                 "Grid: lines {:.0} px apart pushed through {}. Red arrows: where nodes go, \
                  drawn at most one square long (the longest trip is {:.0} px).",
                 g.spacing,
-                match (self.editor.explain.cumulative, g.first_of) {
+                match (self.explain.cumulative, g.first_of) {
                     (true, _) => "every step so far".to_owned(),
                     (false, Some((n, of))) => format!("the first {n} of this step's {of} drops"),
                     (false, None) => "this step".to_owned(),
@@ -340,30 +384,26 @@ impl MarblingApp {
                     .to_owned(),
             });
         }
-        let verb = if self.panels.layout.touch() {
-            "Tap"
-        } else {
-            "Click"
-        };
+        let verb = if frame.layout.touch() { "Tap" } else { "Click" };
         ui.label(format!("{verb} the sheet to move the probe circle."));
     }
 
     /// The explain view's window: the current step's ops (its first drops when it lays
     /// many), or every step's so far, as shown now.
-    fn explain_window(&self) -> Option<Window> {
-        let p = self.editor.playback?;
+    fn explain_window(&self, editor: &Editor) -> Option<Window> {
+        let p = editor.playback?;
         let current = p.current_step()?;
-        let design = self.editor.history.design();
+        let design = editor.history.design();
         let bounds = design.step_bounds();
-        let from = if self.editor.explain.cumulative {
+        let from = if self.explain.cumulative {
             0
         } else {
             bounds[current]
         };
-        let shown = &self.editor.shown;
+        let shown = &editor.shown;
         let mut ops: Vec<_> = design.ops[from.min(shown.ops)..shown.ops].to_vec();
         ops.extend(shown.tail.iter().cloned());
-        Some(if self.editor.explain.cumulative {
+        Some(if self.explain.cumulative {
             Window::all(&ops)
         } else {
             Window::step(&ops)
@@ -373,32 +413,28 @@ impl MarblingApp {
     /// Grid, arrows and probe for the current moment of the player, computed once per
     /// shown design, explain setting and half-octave of zoom (the bar's readout and the
     /// canvas share it).
-    pub(crate) fn explain_geometry(&mut self) -> Option<Arc<ExplainGeometry>> {
-        if !self.editor.explain.on {
+    pub fn explain_geometry(&mut self, editor: &Editor) -> Option<Arc<ExplainGeometry>> {
+        if !self.explain.on {
             return None;
         }
-        let zoom = self.editor.view.map_or(1.0, |v| v.zoom);
+        let zoom = editor.view.map_or(1.0, |v| v.zoom);
         // Made for the top of the zoom's half-octave: fine enough anywhere in it.
         let half_octaves = (zoom.log2() * 2.0).ceil();
-        let key = (
-            self.editor.key,
-            self.editor.explain.clone(),
-            half_octaves as i32,
-        );
-        if let Some((k, g)) = &self.panels.explain_cache
+        let key = (editor.key, self.explain.clone(), half_octaves as i32);
+        if let Some((k, g)) = &self.explain_cache
             && *k == key
         {
             return Some(g.clone());
         }
-        let window = self.explain_window()?;
-        let design = self.editor.history.design();
+        let window = self.explain_window(editor)?;
+        let design = editor.history.design();
         let g = Arc::new(ExplainGeometry::new(
             &window,
             (design.width, design.height),
             (half_octaves / 2.0).exp2(),
-            self.editor.explain.probe_circle(design),
+            self.explain.probe_circle(design),
         ));
-        self.panels.explain_cache = Some((key, g.clone()));
+        self.explain_cache = Some((key, g.clone()));
         Some(g)
     }
 }
