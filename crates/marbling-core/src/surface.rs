@@ -27,6 +27,7 @@
 
 use crate::Rgb8;
 use crate::image_background::{ImageBackground, ImageMap};
+use marbling_noise::GaborSpec;
 use marbling_noise::wgsl::{GpuUnsupported, wgsl_form};
 use marbling_noise::{
     ColorRamp, Field, FieldError, NoiseSpec, PALETTES, Source, Transfer, noise_field,
@@ -192,7 +193,7 @@ impl NoiseLayer {
 
     /// Whether the spec is a Gabor noise (for callers that pick budgets by cost).
     pub fn is_gabor(&self) -> bool {
-        matches!(self.spec.source, Source::Gabor { .. })
+        matches!(self.spec.source, Source::Gabor(GaborSpec { .. }))
     }
 }
 

@@ -12,6 +12,7 @@
 //! 46.0 s and of 64 impulses 133.8 s.
 //! On other GPUs the frame budget steers from the measured frame times.
 
+use crate::spec::{CurlSpec, GaborSpec, WhiteSpec, WorleySpec};
 use crate::spec::{DriveSource, NoiseSpec, Source};
 
 /// Any noise: the noise shader's fixed part (the uniform read, the transfer and
@@ -49,12 +50,12 @@ impl NoiseSpec {
 impl Source {
     fn cost(&self) -> u64 {
         match self {
-            Source::Gabor {
+            Source::Gabor(GaborSpec {
                 impulses,
                 orientation_field,
                 frequency_field,
                 ..
-            } => {
+            }) => {
                 let drive = |d: &Option<crate::spec::DriveSpec>| match d.as_ref().map(|d| &d.by) {
                     Some(DriveSource::Noise(n)) => n.source_cost(),
                     _ => 0,
@@ -65,9 +66,9 @@ impl Source {
                     + drive(frequency_field)
             }
             Source::Fbm(p) => OCTAVE * u64::from(p.octaves),
-            Source::Curl { potential, .. } => CURL_OCTAVE * u64::from(potential.octaves),
+            Source::Curl(CurlSpec { potential, .. }) => CURL_OCTAVE * u64::from(potential.octaves),
             Source::Fibers(_) => FIBERS,
-            Source::Worley { .. } | Source::White { .. } => 0,
+            Source::Worley(WorleySpec { .. }) | Source::White(WhiteSpec { .. }) => 0,
             Source::Product(inputs) => inputs.iter().map(NoiseSpec::source_cost).sum(),
         }
     }

@@ -63,8 +63,8 @@ pub use render::{
     Depth, MAX_SIZE, NoiseImage, RenderError, Renderer, noise_field, noise_to_grey, sample_grid,
 };
 pub use spec::{
-    Blend, BlendBase, DecayValue, DriveSource, DriveSpec, FieldError, MAX_IMPULSES, NOISE_TYPES,
-    NoiseSpec, Source, SpecError, Tile, Transfer,
+    Blend, BlendBase, CurlSpec, DecayValue, DriveSource, DriveSpec, FieldError, GaborSpec,
+    MAX_IMPULSES, NOISE_TYPES, NoiseSpec, Source, SpecError, Tile, Transfer, WhiteSpec, WorleySpec,
 };
 pub use spec_edit::{EDIT_FLOOR, FEATURE_PX};
 pub use transfer::{

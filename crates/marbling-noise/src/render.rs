@@ -11,6 +11,7 @@ use crate::field::Field;
 use crate::gabor::{Drive, Gabor, GaborParams};
 use crate::layer::Combine;
 use crate::spec::{BlendBase, DecayValue, DriveSource, NoiseSpec, Source, Transfer};
+use crate::spec::{CurlSpec, GaborSpec, WhiteSpec, WorleySpec};
 use crate::transfer::{SplineDecayTable, hsv_value_blend};
 use crate::white::white2;
 use crate::worley::{Metric, WorleyFeature, worley_normalised};
@@ -130,7 +131,7 @@ pub fn noise_field(spec: &NoiseSpec, size: u32) -> Option<Arc<dyn Field>> {
 fn field_in(spec: &NoiseSpec, size: u32, frame: [f32; 2]) -> Option<Arc<dyn Field>> {
     let period = spec.tile.period(size);
     let field: Arc<dyn Field> = match &spec.source {
-        Source::Gabor {
+        Source::Gabor(GaborSpec {
             kind,
             frequency,
             orientation,
@@ -139,7 +140,7 @@ fn field_in(spec: &NoiseSpec, size: u32, frame: [f32; 2]) -> Option<Arc<dyn Fiel
             seed,
             orientation_field,
             frequency_field,
-        } => {
+        }) => {
             let drive = |d: &Option<crate::spec::DriveSpec>| -> Option<Drive> {
                 let d = d.as_ref()?;
                 let field: Arc<dyn Field> = match &d.by {
@@ -174,12 +175,12 @@ fn field_in(spec: &NoiseSpec, size: u32, frame: [f32; 2]) -> Option<Arc<dyn Fiel
             }))
         }
         Source::Fbm(p) => Arc::new(Fbm::new(crate::FbmParams { period, ..*p })),
-        Source::Worley {
+        Source::Worley(WorleySpec {
             frequency,
             feature,
             metric,
             seed,
-        } => {
+        }) => {
             let (frequency, cells) = lattice_for_period(*frequency, period);
             Arc::new(Worley {
                 frequency,
@@ -189,14 +190,14 @@ fn field_in(spec: &NoiseSpec, size: u32, frame: [f32; 2]) -> Option<Arc<dyn Fiel
                 period: cells,
             })
         }
-        Source::White { seed } => Arc::new(White {
+        Source::White(WhiteSpec { seed }) => Arc::new(White {
             seed: *seed,
             period: period.map_or(0, |p| p as i32),
         }),
-        Source::Curl {
+        Source::Curl(CurlSpec {
             potential,
             component,
-        } => Arc::new(CurlField {
+        }) => Arc::new(CurlField {
             curl: Curl::new(Fbm::new(crate::FbmParams {
                 period,
                 ..*potential

@@ -104,53 +104,69 @@ impl Tile {
 #[derive(Clone, Debug, PartialEq)]
 pub enum Source {
     /// Sparse Gabor noise ([`crate::Gabor`]).
-    Gabor {
-        /// Kind.
-        kind: GaborKind,
-        /// F₀, cycles per pixel.
-        frequency: f32,
-        /// ω₀, radians.
-        orientation: f32,
-        /// a, 1/pixels.
-        bandwidth: f32,
-        /// Mean kernels per point.
-        impulses: f32,
-        /// Seed.
-        seed: u32,
-        /// Field driving the orientation.
-        orientation_field: Option<DriveSpec>,
-        /// Field driving the frequency.
-        frequency_field: Option<DriveSpec>,
-    },
+    Gabor(GaborSpec),
     /// fBm of Perlin or value noise ([`crate::Fbm`]); `period` is filled in at build time.
     Fbm(FbmParams),
     /// Worley noise.
-    Worley {
-        /// Feature points per pixel along each axis (cells per pixel).
-        frequency: f32,
-        /// Returned distance.
-        feature: WorleyFeature,
-        /// Distance function.
-        metric: Metric,
-        /// Seed.
-        seed: u32,
-    },
+    Worley(WorleySpec),
     /// White noise per pixel.
-    White {
-        /// Seed.
-        seed: u32,
-    },
+    White(WhiteSpec),
     /// Curl noise of an fBm potential.
-    Curl {
-        /// The potential (Perlin basis).
-        potential: FbmParams,
-        /// The shown scalar.
-        component: CurlComponent,
-    },
+    Curl(CurlSpec),
     /// Paper or canvas fibers.
     Fibers(FiberParams),
     /// Product of the intensities of several specs (cross-hatching).
     Product(Vec<NoiseSpec>),
+}
+
+/// A sparse Gabor noise's parameters (ranges: [`crate::ranges`]).
+#[derive(Clone, Debug, PartialEq)]
+pub struct GaborSpec {
+    /// Kind.
+    pub kind: GaborKind,
+    /// F₀, cycles per pixel.
+    pub frequency: f32,
+    /// ω₀, radians.
+    pub orientation: f32,
+    /// a, 1/pixels.
+    pub bandwidth: f32,
+    /// Mean kernels per point.
+    pub impulses: f32,
+    /// Seed.
+    pub seed: u32,
+    /// Field driving the orientation.
+    pub orientation_field: Option<DriveSpec>,
+    /// Field driving the frequency.
+    pub frequency_field: Option<DriveSpec>,
+}
+
+/// A Worley noise's parameters.
+#[derive(Clone, Debug, PartialEq)]
+pub struct WorleySpec {
+    /// Feature points per pixel along each axis (cells per pixel).
+    pub frequency: f32,
+    /// Returned distance.
+    pub feature: WorleyFeature,
+    /// Distance function.
+    pub metric: Metric,
+    /// Seed.
+    pub seed: u32,
+}
+
+/// White noise's parameters.
+#[derive(Clone, Debug, PartialEq)]
+pub struct WhiteSpec {
+    /// Seed.
+    pub seed: u32,
+}
+
+/// A curl noise's parameters.
+#[derive(Clone, Debug, PartialEq)]
+pub struct CurlSpec {
+    /// The potential (Perlin basis).
+    pub potential: FbmParams,
+    /// The shown scalar.
+    pub component: CurlComponent,
 }
 
 /// Intensity transfer of a spec.
@@ -275,11 +291,11 @@ impl NoiseSpec {
 
 fn collect_refs<'a>(spec: &'a mut NoiseSpec, out: &mut Vec<&'a mut DataRef>) {
     match &mut spec.source {
-        Source::Gabor {
+        Source::Gabor(GaborSpec {
             orientation_field,
             frequency_field,
             ..
-        } => {
+        }) => {
             for d in [orientation_field, frequency_field].into_iter().flatten() {
                 match &mut d.by {
                     DriveSource::Data(r) => out.push(r),

@@ -12,6 +12,7 @@ use crate::ranges::{self, Range};
 use crate::spec::{
     Blend, BlendBase, DecayValue, DriveSource, DriveSpec, NoiseSpec, Source, Transfer,
 };
+use crate::spec::{CurlSpec, GaborSpec, WhiteSpec, WorleySpec};
 use crate::{CurlComponent, Metric, WorleyFeature};
 
 /// The smallest value an editor gives a parameter whose range is open below.
@@ -22,12 +23,12 @@ impl Source {
     #[must_use]
     pub fn type_name(&self) -> &'static str {
         match self {
-            Source::Gabor { .. } => "gabor",
+            Source::Gabor(GaborSpec { .. }) => "gabor",
             Source::Fbm(p) if p.basis == Basis::Value => "value",
             Source::Fbm(_) => "perlin",
-            Source::Worley { .. } => "worley",
-            Source::White { .. } => "white",
-            Source::Curl { .. } => "curl",
+            Source::Worley(WorleySpec { .. }) => "worley",
+            Source::White(WhiteSpec { .. }) => "white",
+            Source::Curl(CurlSpec { .. }) => "curl",
             Source::Fibers(p) if matches!(p.layout, FiberLayout::Canvas { .. }) => "canvas",
             Source::Fibers(_) => "paper",
             Source::Product(_) => "product",
@@ -57,7 +58,7 @@ impl Source {
             impurities: None,
         };
         Some(match type_name {
-            "gabor" => Source::Gabor {
+            "gabor" => Source::Gabor(GaborSpec {
                 kind: GaborKind::Anisotropic,
                 frequency: 0.02,
                 orientation: 0.6,
@@ -66,20 +67,20 @@ impl Source {
                 seed,
                 orientation_field: None,
                 frequency_field: None,
-            },
+            }),
             "perlin" => Source::Fbm(fbm(Basis::Perlin)),
             "value" => Source::Fbm(fbm(Basis::Value)),
-            "worley" => Source::Worley {
+            "worley" => Source::Worley(WorleySpec {
                 frequency: 0.02,
                 feature: WorleyFeature::F1,
                 metric: Metric::Euclidean,
                 seed,
-            },
-            "white" => Source::White { seed },
-            "curl" => Source::Curl {
+            }),
+            "white" => Source::White(WhiteSpec { seed }),
+            "curl" => Source::Curl(CurlSpec {
                 potential: fbm(Basis::Perlin),
                 component: CurlComponent::Magnitude,
-            },
+            }),
             "paper" => Source::Fibers(fibers(FiberLayout::Paper)),
             "canvas" => Source::Fibers(fibers(FiberLayout::Canvas {
                 weights: [1.0, 1.0],
@@ -92,10 +93,10 @@ impl Source {
     #[must_use]
     pub fn seed(&self) -> u32 {
         match self {
-            Source::Gabor { seed, .. } | Source::Worley { seed, .. } | Source::White { seed } => {
-                *seed
-            }
-            Source::Fbm(p) | Source::Curl { potential: p, .. } => p.seed,
+            Source::Gabor(GaborSpec { seed, .. })
+            | Source::Worley(WorleySpec { seed, .. })
+            | Source::White(WhiteSpec { seed }) => *seed,
+            Source::Fbm(p) | Source::Curl(CurlSpec { potential: p, .. }) => p.seed,
             Source::Fibers(p) => p.seed,
             Source::Product(inputs) => inputs.first().map_or(0, |s| s.source.seed()),
         }
@@ -104,10 +105,10 @@ impl Source {
     /// The seed to change (`None` for a product, whose inputs have their own).
     pub fn seed_mut(&mut self) -> Option<&mut u32> {
         match self {
-            Source::Gabor { seed, .. } | Source::Worley { seed, .. } | Source::White { seed } => {
-                Some(seed)
-            }
-            Source::Fbm(p) | Source::Curl { potential: p, .. } => Some(&mut p.seed),
+            Source::Gabor(GaborSpec { seed, .. })
+            | Source::Worley(WorleySpec { seed, .. })
+            | Source::White(WhiteSpec { seed }) => Some(seed),
+            Source::Fbm(p) | Source::Curl(CurlSpec { potential: p, .. }) => Some(&mut p.seed),
             Source::Fibers(p) => Some(&mut p.seed),
             Source::Product(_) => None,
         }
@@ -118,12 +119,13 @@ impl Source {
     #[must_use]
     pub fn feature_frequency(&self) -> Option<f64> {
         match self {
-            Source::Gabor { frequency, .. } | Source::Worley { frequency, .. } => {
-                Some(f64::from(*frequency))
+            Source::Gabor(GaborSpec { frequency, .. })
+            | Source::Worley(WorleySpec { frequency, .. }) => Some(f64::from(*frequency)),
+            Source::Fbm(p) | Source::Curl(CurlSpec { potential: p, .. }) => {
+                Some(f64::from(p.frequency))
             }
-            Source::Fbm(p) | Source::Curl { potential: p, .. } => Some(f64::from(p.frequency)),
             Source::Fibers(p) => Some(1.0 / f64::from(p.length)),
-            Source::White { .. } | Source::Product(_) => None,
+            Source::White(WhiteSpec { .. }) | Source::Product(_) => None,
         }
     }
 }
@@ -142,11 +144,11 @@ impl Source {
     #[must_use]
     pub fn without_data(&self) -> Source {
         let mut s = self.clone();
-        if let Source::Gabor {
+        if let Source::Gabor(GaborSpec {
             orientation_field,
             frequency_field,
             ..
-        } = &mut s
+        }) = &mut s
         {
             for d in [orientation_field, frequency_field] {
                 if d.as_ref()
@@ -166,13 +168,13 @@ impl NoiseSpec {
     pub fn has_data_frequency(&self) -> bool {
         matches!(
             &self.source,
-            Source::Gabor {
+            Source::Gabor(GaborSpec {
                 frequency_field: Some(DriveSpec {
                     by: DriveSource::Data(_),
                     ..
                 }),
                 ..
-            }
+            })
         )
     }
 
@@ -186,12 +188,12 @@ impl NoiseSpec {
         if !self.has_data_frequency() {
             return s;
         }
-        if let Source::Gabor {
+        if let Source::Gabor(GaborSpec {
             frequency,
             bandwidth,
             frequency_field: Some(d),
             ..
-        } = &mut s.source
+        }) = &mut s.source
         {
             let [small, large] = FEATURE_PX;
             *frequency = ranges::GABOR_FREQUENCY.clamp(f64::from(f0), EDIT_FLOOR) as f32;
@@ -224,7 +226,7 @@ impl NoiseSpec {
                     value: data(3),
                 },
             }),
-            ..NoiseSpec::plain(Source::Gabor {
+            ..NoiseSpec::plain(Source::Gabor(GaborSpec {
                 kind: GaborKind::RandomPhase,
                 frequency: 0.025,
                 orientation: 0.0,
@@ -233,7 +235,7 @@ impl NoiseSpec {
                 seed,
                 orientation_field: drive(2, std::f32::consts::PI),
                 frequency_field: drive(1, 1.0),
-            })
+            }))
         };
         gabor.zoom_independent(1.0 / FEATURE_PX[1])
     }
@@ -275,13 +277,13 @@ fn scale(x: f32, k: f64, range: Range) -> f32 {
 fn scale_source(source: &Source, k: f64) -> Source {
     let mut s = source.clone();
     match &mut s {
-        Source::Gabor {
+        Source::Gabor(GaborSpec {
             frequency,
             bandwidth,
             orientation_field,
             frequency_field,
             ..
-        } => {
+        }) => {
             let f = scale(*frequency, k, ranges::GABOR_FREQUENCY);
             // The kernel shrinks with the period: the bandwidth follows the frequency.
             let k = f64::from(f) / f64::from(*frequency);
@@ -294,11 +296,13 @@ fn scale_source(source: &Source, k: f64) -> Source {
                 }
             }
         }
-        Source::Fbm(p) | Source::Curl { potential: p, .. } => {
+        Source::Fbm(p) | Source::Curl(CurlSpec { potential: p, .. }) => {
             p.frequency = scale(p.frequency, k, ranges::FREQUENCY);
         }
-        Source::Worley { frequency, .. } => *frequency = scale(*frequency, k, ranges::FREQUENCY),
-        Source::White { .. } => {}
+        Source::Worley(WorleySpec { frequency, .. }) => {
+            *frequency = scale(*frequency, k, ranges::FREQUENCY)
+        }
+        Source::White(WhiteSpec { .. }) => {}
         Source::Fibers(p) => {
             p.length = scale(p.length, 1.0 / k, ranges::FIBER_LENGTH);
             p.width = scale(p.width, 1.0 / k, ranges::FIBER_WIDTH);
@@ -333,7 +337,7 @@ mod tests {
 
     #[test]
     fn scaling_moves_frequency_and_kernel_together_within_range() {
-        let gabor = NoiseSpec::plain(Source::Gabor {
+        let gabor = NoiseSpec::plain(Source::Gabor(GaborSpec {
             kind: GaborKind::Anisotropic,
             frequency: 0.05,
             orientation: 0.0,
@@ -342,22 +346,22 @@ mod tests {
             seed: 1,
             orientation_field: None,
             frequency_field: None,
-        });
-        let Source::Gabor {
+        }));
+        let Source::Gabor(GaborSpec {
             frequency,
             bandwidth,
             ..
-        } = gabor.scaled(4.0).source
+        }) = gabor.scaled(4.0).source
         else {
             panic!("still Gabor")
         };
         assert!((frequency - 0.2).abs() < 1e-6 && (bandwidth - 0.16).abs() < 1e-6);
         // 0.05 × 16 is past the Nyquist limit: clamped to 0.5, the kernel by the same 10×.
-        let Source::Gabor {
+        let Source::Gabor(GaborSpec {
             frequency,
             bandwidth,
             ..
-        } = gabor.scaled(16.0).source
+        }) = gabor.scaled(16.0).source
         else {
             panic!("still Gabor")
         };
@@ -381,12 +385,12 @@ mod tests {
         assert!(spec.has_data_frequency());
         for zoom in [0.5f32, 1.0, 3.0] {
             let s = spec.zoom_independent(zoom / FEATURE_PX[1]);
-            let Source::Gabor {
+            let Source::Gabor(GaborSpec {
                 frequency,
                 bandwidth,
                 frequency_field: Some(d),
                 ..
-            } = &s.source
+            }) = &s.source
             else {
                 panic!("Gabor")
             };

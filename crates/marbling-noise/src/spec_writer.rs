@@ -12,6 +12,7 @@ use crate::ranges;
 use crate::spec::{
     BlendBase, DecayValue, DriveSource, DriveSpec, NoiseSpec, Source, Tile, Transfer,
 };
+use crate::spec::{CurlSpec, GaborSpec, WhiteSpec, WorleySpec};
 use serde_json::{Map, Value, json};
 
 /// An f32 as the JSON number of its shortest decimal form (0.1f32 → 0.1).
@@ -127,7 +128,7 @@ impl NoiseSpec {
     pub fn to_value(&self) -> Value {
         let mut o = Map::new();
         match &self.source {
-            Source::Gabor {
+            Source::Gabor(GaborSpec {
                 kind,
                 frequency,
                 orientation,
@@ -136,7 +137,7 @@ impl NoiseSpec {
                 seed,
                 orientation_field,
                 frequency_field,
-            } => {
+            }) => {
                 o.insert("type".into(), json!("gabor"));
                 o.insert("kind".into(), name(&ranges::GABOR_KINDS, kind));
                 o.insert("frequency".into(), num(*frequency));
@@ -159,26 +160,26 @@ impl NoiseSpec {
                 o.insert("type".into(), json!(kind));
                 fbm_fields(&mut o, p);
             }
-            Source::Worley {
+            Source::Worley(WorleySpec {
                 frequency,
                 feature,
                 metric,
                 seed,
-            } => {
+            }) => {
                 o.insert("type".into(), json!("worley"));
                 o.insert("frequency".into(), num(*frequency));
                 o.insert("feature".into(), name(&ranges::WORLEY_FEATURES, feature));
                 o.insert("metric".into(), name(&ranges::WORLEY_METRICS, metric));
                 o.insert("seed".into(), json!(seed));
             }
-            Source::White { seed } => {
+            Source::White(WhiteSpec { seed }) => {
                 o.insert("type".into(), json!("white"));
                 o.insert("seed".into(), json!(seed));
             }
-            Source::Curl {
+            Source::Curl(CurlSpec {
                 potential,
                 component,
-            } => {
+            }) => {
                 o.insert("type".into(), json!("curl"));
                 fbm_fields(&mut o, potential);
                 o.insert(

@@ -6,6 +6,7 @@ use crate::fbm::{Basis, FbmParams};
 use crate::fibers::{FiberLayout, FiberParams, Fibers};
 use crate::gabor::{Gabor, GaborParams};
 use crate::render::lattice_for_period;
+use crate::spec::{CurlSpec, GaborSpec, WhiteSpec, WorleySpec};
 use crate::spec::{DriveSource, DriveSpec, NoiseSpec, Source};
 use bytemuck::{Pod, Zeroable};
 
@@ -417,11 +418,11 @@ pub fn wgsl_form(spec: &NoiseSpec) -> Result<(), GpuUnsupported> {
     };
     match &spec.source {
         Source::Product(_) => Err(GpuUnsupported::Product),
-        Source::Gabor {
+        Source::Gabor(GaborSpec {
             orientation_field,
             frequency_field,
             ..
-        } => {
+        }) => {
             drive(orientation_field, "orientation_field")?;
             drive(frequency_field, "frequency_field")
         }
@@ -518,7 +519,7 @@ impl NoiseGpu {
         let period = spec.tile.period(size);
         let mut u = Self::default();
         match &spec.source {
-            Source::Gabor {
+            Source::Gabor(GaborSpec {
                 kind,
                 frequency,
                 orientation,
@@ -527,7 +528,7 @@ impl NoiseGpu {
                 seed,
                 orientation_field,
                 frequency_field,
-            } => {
+            }) => {
                 let (od, oa, o_on) = drive_fbm(orientation_field, "orientation_field", period)?;
                 let (fd, fa, f_on) = drive_fbm(frequency_field, "frequency_field", period)?;
                 let g = Gabor::new(GaborParams {
@@ -550,12 +551,12 @@ impl NoiseGpu {
                 u.noise_type = NoiseKind::Fbm as u32;
                 u.fbm = FbmGpu::from(&FbmParams { period, ..*p });
             }
-            Source::Worley {
+            Source::Worley(WorleySpec {
                 frequency,
                 feature,
                 metric,
                 seed,
-            } => {
+            }) => {
                 let (f, cells) = lattice_for_period(*frequency, period);
                 u.noise_type = NoiseKind::Worley as u32;
                 u.seed = *seed;
@@ -564,16 +565,16 @@ impl NoiseGpu {
                 u.period = [cells, cells];
                 u.frequency = f;
             }
-            Source::White { seed } => {
+            Source::White(WhiteSpec { seed }) => {
                 let p = period.map_or(0, |p| p as i32);
                 u.noise_type = NoiseKind::White as u32;
                 u.seed = *seed;
                 u.period = [p, p];
             }
-            Source::Curl {
+            Source::Curl(CurlSpec {
                 potential,
                 component,
-            } => {
+            }) => {
                 u.noise_type = NoiseKind::Curl as u32;
                 u.fbm = FbmGpu::from(&FbmParams {
                     period,

@@ -10,6 +10,7 @@ use marbling_noise::{
     Blend, BlendBase, COMBINES, Combine, Curve, DecayValue, Layer, MAX_CURVE_POINTS, MAX_LAYERS,
     NOISE_TYPES, NoiseSpec, Source, Threshold, Tile, Transfer, ranges,
 };
+use marbling_noise::{GaborSpec, WhiteSpec};
 
 /// Named responses for `MarblingApp::control`.
 pub type Controls = Vec<(&'static str, Response)>;
@@ -280,7 +281,7 @@ pub fn blend_section(ui: &mut egui::Ui, spec: &mut NoiseSpec) -> Controls {
 /// copies at right angles; a product can be taken apart again.
 pub fn cross_hatch(ui: &mut egui::Ui, spec: &mut NoiseSpec) -> Controls {
     match &spec.source {
-        Source::Gabor { .. } if spec.layers.is_empty() => {
+        Source::Gabor(GaborSpec { .. }) if spec.layers.is_empty() => {
             let r = ui
                 .button("Cross-hatch")
                 .on_hover_text("The product of this Gabor's hatching and a copy turned by 90°");
@@ -293,9 +294,9 @@ pub fn cross_hatch(ui: &mut egui::Ui, spec: &mut NoiseSpec) -> Controls {
                 let mut a = NoiseSpec::plain(spec.source.clone());
                 a.transfer = Some(hatch.clone());
                 let mut b = a.clone();
-                if let Source::Gabor {
+                if let Source::Gabor(GaborSpec {
                     orientation, seed, ..
-                } = &mut b.source
+                }) = &mut b.source
                 {
                     *orientation += std::f32::consts::FRAC_PI_2;
                     *seed = seed.wrapping_add(1);
@@ -373,7 +374,8 @@ pub fn layers_section(ui: &mut egui::Ui, spec: &mut NoiseSpec) -> Controls {
                     }
                     (Combine::Mask, m @ None) => {
                         let mut mask = NoiseSpec::plain(
-                            Source::starting("perlin", 11).unwrap_or(Source::White { seed: 11 }),
+                            Source::starting("perlin", 11)
+                                .unwrap_or(Source::White(WhiteSpec { seed: 11 })),
                         );
                         mask.transfer = Some(default_threshold());
                         *m = Some(mask);
@@ -397,7 +399,8 @@ pub fn layers_section(ui: &mut egui::Ui, spec: &mut NoiseSpec) -> Controls {
                 .source
                 .seed()
                 .wrapping_add(spec.layers.len() as u32 + 1);
-            let source = Source::starting("worley", seed).unwrap_or(Source::White { seed });
+            let source =
+                Source::starting("worley", seed).unwrap_or(Source::White(WhiteSpec { seed }));
             spec.layers.push(Layer {
                 noise: NoiseSpec::plain(source),
                 combine: Combine::Add,

@@ -6,6 +6,7 @@
 use crate::frame::Frame;
 use crate::noise::Noise;
 use egui::{Color32, RichText};
+use marbling_noise::GaborSpec;
 use marbling_noise::{
     BlendBase, DataGrid, DataRef, DecayValue, DriveSource, NoiseSpec, Source, Transfer, WEATHER,
 };
@@ -86,11 +87,11 @@ enum Role {
 fn data_of(spec: &NoiseSpec, role: Role) -> Option<&DataRef> {
     match role {
         Role::Frequency | Role::Orientation => match &spec.source {
-            Source::Gabor {
+            Source::Gabor(GaborSpec {
                 frequency_field,
                 orientation_field,
                 ..
-            } => {
+            }) => {
                 let d = if role == Role::Frequency {
                     frequency_field
                 } else {
@@ -125,11 +126,11 @@ fn rename_data(spec: &mut NoiseSpec, name: &str, data: &NoiseData) {
 /// Sets the channel (1-based) of the reference of `role`, and of the spline decay that
 /// follows the frequency's channel.
 fn set_channel(spec: &mut NoiseSpec, role: Role, channel: usize) {
-    if let Source::Gabor {
+    if let Source::Gabor(GaborSpec {
         frequency_field,
         orientation_field,
         ..
-    } = &mut spec.source
+    }) = &mut spec.source
     {
         let d = match role {
             Role::Frequency => frequency_field,

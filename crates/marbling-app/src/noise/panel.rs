@@ -12,6 +12,7 @@ use egui_plot::{Bar, BarChart, Line, Plot};
 use marbling_core::{GrainKind, NoiseBackground, NoiseLayer, Overlay, Palette};
 use marbling_noise::analysis::{Stats, histogram, radial_spectrum, stats};
 use marbling_noise::ranges::{self, Range};
+use marbling_noise::{CurlSpec, GaborSpec, WhiteSpec, WorleySpec};
 use marbling_noise::{
     DriveSource, DriveSpec, EDIT_FLOOR, FbmParams, FiberLayout, NOISE_TYPES, NoiseSpec, Source,
 };
@@ -373,7 +374,8 @@ fn noise_drive(
         let by = match field.take() {
             Some(DriveSpec { by, .. }) => by,
             None => {
-                let mut p = Source::starting("perlin", seed).unwrap_or(Source::White { seed });
+                let mut p =
+                    Source::starting("perlin", seed).unwrap_or(Source::White(WhiteSpec { seed }));
                 if let Source::Fbm(f) = &mut p {
                     f.frequency = 0.008;
                     f.octaves = 2;
@@ -389,7 +391,7 @@ fn noise_drive(
 /// range the spec parser accepts (`marbling_noise::ranges`).
 pub(crate) fn noise_parameters(ui: &mut egui::Ui, spec: &mut NoiseSpec) {
     match &mut spec.source {
-        Source::Gabor {
+        Source::Gabor(GaborSpec {
             kind,
             frequency: f,
             orientation,
@@ -398,7 +400,7 @@ pub(crate) fn noise_parameters(ui: &mut egui::Ui, spec: &mut NoiseSpec) {
             seed,
             orientation_field,
             frequency_field,
-        } => {
+        }) => {
             choice(ui, "kind", &ranges::GABOR_KINDS, kind);
             frequency(ui, f, ranges::GABOR_FREQUENCY);
             if *kind != marbling_noise::GaborKind::Isotropic {
@@ -434,24 +436,24 @@ pub(crate) fn noise_parameters(ui: &mut egui::Ui, spec: &mut NoiseSpec) {
             );
         }
         Source::Fbm(p) => fbm(ui, p),
-        Source::Curl {
+        Source::Curl(CurlSpec {
             potential,
             component,
-        } => {
+        }) => {
             fbm(ui, potential);
             choice(ui, "component", &ranges::CURL_COMPONENTS, component);
         }
-        Source::Worley {
+        Source::Worley(WorleySpec {
             frequency: f,
             feature,
             metric,
             ..
-        } => {
+        }) => {
             frequency(ui, f, ranges::FREQUENCY);
             choice(ui, "feature", &ranges::WORLEY_FEATURES, feature);
             choice(ui, "metric", &ranges::WORLEY_METRICS, metric);
         }
-        Source::White { .. } => {}
+        Source::White(WhiteSpec { .. }) => {}
         Source::Fibers(p) => {
             ui.add(
                 Slider::new(&mut p.length, slider(ranges::FIBER_LENGTH))

@@ -5,6 +5,7 @@
 
 use crate::noise::data::NoiseData;
 use marbling_core::{Design, NoiseBackground, NoiseLayer, Palette, Rgb8};
+use marbling_noise::WhiteSpec;
 use marbling_noise::{BlendBase, ColorRamp, FEATURE_PX, NoiseSpec, Source, Tile, Transfer};
 
 /// Storage key of the noise setup (the JSON of [`NoiseSettings::export_spec`]).
@@ -32,7 +33,7 @@ pub struct NoiseSettings {
 impl Default for NoiseSettings {
     fn default() -> Self {
         // Perlin fBm first: cheap enough for any GPU (Gabor costs ~100× more per pixel).
-        let perlin = Source::starting("perlin", 7).unwrap_or(Source::White { seed: 7 });
+        let perlin = Source::starting("perlin", 7).unwrap_or(Source::White(WhiteSpec { seed: 7 }));
         Self {
             spec: NoiseSpec::plain(perlin),
             palette: 5,
@@ -225,7 +226,7 @@ pub fn zoom_octave_factor(frequency: f64, zoom: f64) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use marbling_noise::NOISE_TYPES;
+    use marbling_noise::{GaborSpec, NOISE_TYPES};
 
     fn settings(type_name: &str) -> NoiseSettings {
         let mut s = NoiseSettings::default();
@@ -323,7 +324,7 @@ mod tests {
         // 0.02 cycles/px at 8 screen px per design px: 400-px features → × 16.
         assert_eq!(s.zoom_factor(8.0), 16.0);
         let zoomed = s.layer(16.0).expect("valid");
-        let Source::Gabor { frequency, .. } = zoomed.spec().source else {
+        let Source::Gabor(GaborSpec { frequency, .. }) = zoomed.spec().source else {
             panic!("Gabor")
         };
         assert!((frequency - 0.32).abs() < 1e-6, "{frequency}");

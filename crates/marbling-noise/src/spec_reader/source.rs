@@ -5,6 +5,7 @@ use crate::fbm::{Basis, FbmParams};
 use crate::fibers::{FiberLayout, FiberParams, Impurities};
 use crate::gabor::GaborKind;
 use crate::ranges;
+use crate::spec::{CurlSpec, GaborSpec, WhiteSpec, WorleySpec};
 use crate::spec::{NoiseSpec, Source};
 use crate::{CurlComponent, Metric, WorleyFeature};
 use marbling_json::{join, short};
@@ -84,7 +85,7 @@ impl Reader {
                         "not allowed for kind isotropic (its orientations are random)",
                     );
                 }
-                Some(Source::Gabor {
+                Some(Source::Gabor(GaborSpec {
                     kind: gk?,
                     frequency: frequency? as f32,
                     orientation: orientation? as f32,
@@ -93,7 +94,7 @@ impl Reader {
                     seed: seed?,
                     orientation_field: orientation_field.map_or(Some(None), |d| d.map(Some))?,
                     frequency_field: frequency_field.map_or(Some(None), |d| d.map(Some))?,
-                })
+                }))
             }
             "perlin" => self.fbm(path, obj, Basis::Perlin).map(Source::Fbm),
             "value" => self.fbm(path, obj, Basis::Value).map(Source::Fbm),
@@ -115,16 +116,16 @@ impl Reader {
                     &ranges::WORLEY_METRICS,
                 );
                 let seed = self.seed(path, obj);
-                Some(Source::Worley {
+                Some(Source::Worley(WorleySpec {
                     frequency: frequency? as f32,
                     feature: feature?,
                     metric: metric?,
                     seed: seed?,
-                })
+                }))
             }
-            "white" => Some(Source::White {
+            "white" => Some(Source::White(WhiteSpec {
                 seed: self.seed(path, obj)?,
-            }),
+            })),
             "curl" => {
                 let potential = self.fbm(path, obj, Basis::Perlin);
                 let component = self.choice(
@@ -134,10 +135,10 @@ impl Reader {
                     CurlComponent::Magnitude,
                     &ranges::CURL_COMPONENTS,
                 );
-                Some(Source::Curl {
+                Some(Source::Curl(CurlSpec {
                     potential: potential?,
                     component: component?,
-                })
+                }))
             }
             "paper" | "canvas" => self.fibers(path, obj, kind == "canvas"),
             "product" => {

@@ -1,5 +1,6 @@
 //! Noise specs read from JSON: every problem reported with its path.
 
+use marbling_noise::GaborSpec;
 use marbling_noise::{GaborKind, NoiseSpec, Source, SpecError};
 
 fn errors(text: &str) -> Vec<String> {
@@ -17,11 +18,11 @@ fn parses_the_issue_gabor_spec() {
     .expect("valid");
     assert!(matches!(
         s.source,
-        Source::Gabor {
+        Source::Gabor(GaborSpec {
             kind: GaborKind::Anisotropic,
             seed: 7,
             ..
-        }
+        })
     ));
     assert!(!s.is_colored());
 }
