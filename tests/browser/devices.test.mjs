@@ -37,10 +37,21 @@ async function slide(page, cdp, from, to, steps = 8) {
   }
 }
 
-/** Waits for `k` more frames: a tap's effect is drawn in the frame after it. */
+/** Waits for `k` more frames: a tap's effect is drawn in the frame after it. egui draws
+ * only while something changes, so a page that went idle first is nudged with a Shift
+ * press (no control reacts to it) each second until the frames come. */
 async function frames(page, k = 3) {
-  const now = Number(await attr(page, 'data-frames'));
-  await page.waitForFunction((n) => Number(document.body.dataset.frames) >= n, now + k, { timeout: READY_MS });
+  const want = Number(await attr(page, 'data-frames')) + k;
+  const start = Date.now();
+  for (;;) {
+    try {
+      await page.waitForFunction((n) => Number(document.body.dataset.frames) >= n, want, { timeout: 1000 });
+      return;
+    } catch (e) {
+      if (e.name !== 'TimeoutError' || Date.now() - start > READY_MS) throw e;
+      await page.keyboard.press('Shift');
+    }
+  }
 }
 
 /** The design point under page point `p` (CSS px), from `data-view`. */
