@@ -20,7 +20,7 @@ use crate::store::export::{ExportSize, PngExport};
 use crate::store::{prefs::Prefs, recent::Recent};
 use marbling_core::Design;
 use std::borrow::Cow;
-use std::collections::{HashMap, VecDeque};
+use std::collections::VecDeque;
 use std::sync::{Arc, Mutex};
 
 /// How many shown states [`Editor::recent`] remembers (the GPU holds the preview caches
@@ -227,19 +227,16 @@ pub struct Hooks {
 pub struct Panels {
     /// A line shown in the status bar; errors also go to `data-error`.
     pub message: Option<Message>,
-    /// The History list's current row and row count it last scrolled to (it scrolls to
-    /// the current row when either changes, and leaves the user's scrolling alone
-    /// otherwise).
-    pub history_scrolled: Option<(usize, usize)>,
+    /// The History section (src/marbling/history/panel.rs).
+    pub history: crate::marbling::history::panel::HistoryPanel,
     /// Where an asynchronous file pick delivers.
     pub pick: PickSlot,
     /// Pictures as the background (src/media/picture.rs).
     pub pictures: crate::media::picture::Pictures,
     /// The gallery (src/shell/landing.rs).
     pub gallery: crate::shell::landing::Gallery,
-    /// Thumbnails of recent designs, by share fragment (made on first show; `None`: too
-    /// large to draw one quickly, or unreadable).
-    pub recent_thumbnails: HashMap<String, Option<egui::TextureHandle>>,
+    /// The *Recent designs* section (src/store/recent_panel.rs).
+    pub recent: crate::store::recent_panel::RecentPanel,
     /// The size of a new sheet, design pixels.
     pub new_size: [u32; 2],
     /// The size Export PNG renders at.
@@ -258,11 +255,11 @@ impl Default for Panels {
     fn default() -> Self {
         Self {
             message: None,
-            history_scrolled: None,
+            history: Default::default(),
             pick: PickSlot::default(),
             pictures: Default::default(),
             gallery: Default::default(),
-            recent_thumbnails: HashMap::new(),
+            recent: Default::default(),
             new_size: NEW_SIZE,
             export_size: ExportSize::Screen,
             view3d: crate::media::view3d::View3dWindow::default(),

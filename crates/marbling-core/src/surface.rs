@@ -28,7 +28,7 @@
 use crate::Rgb8;
 use crate::image_background::{ImageBackground, ImageMap};
 use marbling_noise::GaborSpec;
-use marbling_noise::wgsl::{GpuUnsupported, wgsl_form};
+use marbling_noise::noise_gpu::{GpuUnsupported, wgsl_form};
 use marbling_noise::{
     ColorRamp, Field, FieldError, NoiseSpec, PALETTES, Source, Transfer, noise_field,
 };

@@ -5,7 +5,8 @@
 use marbling_core::image_background::{ImagePixels, fit_map};
 use marbling_core::surface::MAX_PALETTE_STOPS;
 use marbling_core::{Design, GrainKind, ImageFit, NoiseLayer};
-use marbling_noise::wgsl::{NoiseGpu, NoiseKind, NoiseKinds};
+use marbling_noise::noise_gpu::NoiseGpu;
+use marbling_noise::wgsl::{NoiseKind, NoiseKinds};
 
 /// `SurfaceParams::flags` bit: the background is noise.
 pub const SURFACE_BACKGROUND: u32 = 1;

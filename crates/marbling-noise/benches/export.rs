@@ -8,7 +8,7 @@
 #[path = "../tests/it/common/gpu.rs"]
 mod gpu;
 
-use marbling_noise::wgsl::NoiseGpu;
+use marbling_noise::noise_gpu::NoiseGpu;
 use marbling_noise::{Depth, NoiseSpec, Renderer};
 use std::time::Instant;
 

@@ -7,7 +7,7 @@
 mod gpu;
 
 use fastnoise_lite::{FastNoiseLite, FractalType, NoiseType};
-use marbling_noise::wgsl::NoiseGpu;
+use marbling_noise::noise_gpu::NoiseGpu;
 use marbling_noise::{Fbm, FbmParams, Gabor, GaborKind, GaborParams, NoiseSpec, perlin2};
 use std::hint::black_box;
 use std::time::Instant;

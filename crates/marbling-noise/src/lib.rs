@@ -25,6 +25,7 @@ mod field;
 mod gabor;
 pub mod hash;
 mod layer;
+pub mod noise_gpu;
 mod perlin;
 mod ramp;
 pub mod ranges;

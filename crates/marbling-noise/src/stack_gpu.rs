@@ -3,8 +3,8 @@
 //! sync with the WGSL.
 
 use crate::layer::MAX_LAYERS;
+use crate::noise_gpu::{GpuUnsupported, NoiseGpu};
 use crate::spec::{NoiseSpec, Transfer};
-use crate::wgsl::{GpuUnsupported, NoiseGpu};
 use bytemuck::{Pod, Zeroable};
 
 /// Noise slots: the base, then a layer and its mask per layer.

@@ -8,6 +8,7 @@ pub(crate) mod explain_geometry;
 pub(crate) mod fingers;
 pub(crate) mod footprint;
 pub(crate) mod history;
+pub(crate) mod ink_panel;
 pub(crate) mod ink_sets;
 pub(crate) mod labels;
 pub(crate) mod playback;

@@ -121,7 +121,11 @@ impl MarblingApp {
         let tab = self.panels.sheet.shown_tab(self.editor.mode);
         if tab == SheetTab::Tools {
             // Undo beside the tools, where a phone's user draws.
-            ui.horizontal(|ui| self.undo_redo(ui));
+            ui.horizontal(|ui| {
+                with_frame!(self, |f| crate::marbling::history::panel::undo_redo_ui(
+                    ui, &mut f
+                ));
+            });
         }
         for (section, rule) in sections::shown(self.editor.mode, Some(tab)) {
             if rule {

@@ -1,8 +1,6 @@
-//! The side panel: the sections of `sections.rs` in order (files, export, inks,
-//! history and recent designs are drawn here; the Tool section is
-//! src/marbling/tool_panel.rs) and the status bar.
+//! The side panel: the sections of `sections.rs` in order (files and export are drawn
+//! here; each other section is its feature's `ui`) and the status bar.
 
-use crate::INK_SETS;
 use crate::action::Action;
 use crate::app::MarblingApp;
 use crate::frame::with_frame;
@@ -11,11 +9,6 @@ use crate::shell::mode::Mode;
 use crate::shell::sections::{self, Section};
 use crate::store::export::ExportSize;
 use egui::{Color32, RichText};
-use marbling_core::Rgb8;
-
-fn color32(c: Rgb8) -> Color32 {
-    Color32::from_rgb(c.r, c.g, c.b)
-}
 
 impl MarblingApp {
     pub(crate) fn side_panel(&mut self, ui: &mut egui::Ui, frame: &mut eframe::Frame) {
@@ -51,11 +44,14 @@ impl MarblingApp {
             Section::Tool => {
                 with_frame!(self, |f| crate::marbling::tool_panel::ui(ui, &mut f));
             }
-            Section::Ink => self.ink_section(ui),
+            Section::Ink => with_frame!(self, |f| crate::marbling::ink_panel::ui(ui, &mut f)),
             Section::Picture => with_frame!(self, |f| self.panels.pictures.ui(ui, &mut f)),
             Section::Video => with_frame!(self, |f| self.rendering.video.ui(ui, &mut f)),
-            Section::History => self.history_section(ui),
-            Section::Recent => self.recent_section(ui),
+            Section::History => with_frame!(self, |f| self.panels.history.ui(ui, &mut f)),
+            Section::Recent => {
+                let recent = &self.session.recent;
+                with_frame!(self, |f| self.panels.recent.ui(ui, recent, &mut f));
+            }
         }
     }
 
@@ -211,301 +207,6 @@ impl MarblingApp {
             }
         });
         ui.label(RichText::new(size_text).weak());
-    }
-
-    pub(crate) fn ink_section(&mut self, ui: &mut egui::Ui) {
-        ui.label(RichText::new("Ink").strong());
-        let before = self.prefs.palette;
-        egui::ComboBox::from_label("palette")
-            .selected_text(INK_SETS[self.prefs.palette].name)
-            .show_ui(ui, |ui| {
-                for (i, p) in INK_SETS.iter().enumerate() {
-                    ui.selectable_value(&mut self.prefs.palette, i, p.name);
-                }
-            });
-        if self.prefs.palette != before {
-            self.prefs.ink = INK_SETS[self.prefs.palette].inks[0];
-        }
-        ui.horizontal_wrapped(|ui| {
-            for &c in INK_SETS[self.prefs.palette].inks {
-                let selected = c == self.prefs.ink;
-                let (rect, resp) =
-                    ui.allocate_exact_size(egui::vec2(24.0, 24.0), egui::Sense::click());
-                ui.painter().rect_filled(rect, 4.0, color32(c));
-                if selected {
-                    ui.painter().rect_stroke(
-                        rect,
-                        4.0,
-                        egui::Stroke::new(2.0, Color32::WHITE),
-                        egui::StrokeKind::Outside,
-                    );
-                }
-                if resp.on_hover_text(c.to_string()).clicked() {
-                    self.prefs.ink = c;
-                }
-            }
-        });
-        ui.horizontal(|ui| {
-            let mut rgb = [self.prefs.ink.r, self.prefs.ink.g, self.prefs.ink.b];
-            if egui::color_picker::color_edit_button_srgb(ui, &mut rgb).changed() {
-                self.prefs.ink = Rgb8::new(rgb[0], rgb[1], rgb[2]);
-            }
-            ui.label("ink");
-            let bg = self.editor.history.design().background;
-            let mut rgb = [bg.r, bg.g, bg.b];
-            let paper = egui::color_picker::color_edit_button_srgb(ui, &mut rgb);
-            self.control("paper-color", &paper);
-            if paper.changed() {
-                self.apply(Action::SetPaperColor(Rgb8::new(rgb[0], rgb[1], rgb[2])));
-            }
-            ui.label("paper");
-        });
-    }
-
-    /// Undo and Redo (in the History section, and beside the tools on a phone).
-    pub(crate) fn undo_redo(&mut self, ui: &mut egui::Ui) {
-        let undo = ui
-            .add_enabled(self.editor.history.can_undo(), egui::Button::new("Undo"))
-            .on_hover_text("Ctrl/Cmd+Z: takes the last gesture back");
-        self.control("undo", &undo);
-        if undo.clicked() {
-            self.apply(Action::Undo);
-        }
-        let redo = ui
-            .add_enabled(self.editor.history.can_redo(), egui::Button::new("Redo"))
-            .on_hover_text("Ctrl/Cmd+Shift+Z");
-        self.control("redo", &redo);
-        if redo.clicked() {
-            self.apply(Action::Redo);
-        }
-    }
-
-    pub(crate) fn history_section(&mut self, ui: &mut egui::Ui) {
-        ui.label(RichText::new("History").strong());
-        ui.horizontal(|ui| {
-            self.undo_redo(ui);
-            let playing = self.editor.playback.is_some();
-            let play = ui
-                .add_enabled(
-                    !self.editor.history.design().ops.is_empty(),
-                    egui::Button::new(if playing { "Close player" } else { "Play" }),
-                )
-                .on_hover_text("Play the making step by step, with captions and the maths");
-            self.control("play", &play);
-            if play.clicked() {
-                self.apply(Action::Play(!playing));
-            }
-        });
-        if self.editor.landing && self.editor.pristine {
-            // The start-up design behind the gallery is nobody's history yet.
-            ui.label("Pick a pattern in the gallery, or start a new sheet: its steps show here.");
-            return;
-        }
-        let n = self.editor.history.steps().len();
-        // The player's step while it is open, else the step viewed.
-        let shown = match self.editor.playback {
-            Some(p) => p.current_step().map_or(0, |k| k + 1),
-            None => self.editor.history.shown_steps(),
-        };
-        let mut clicked = None;
-        let mut redo_to = None;
-        let mut rows_drawn = Vec::new();
-        // Undone steps stay listed, greyed, until a new edit drops them: a click on one
-        // redoes up to it.
-        let undone: Vec<String> = self
-            .editor
-            .history
-            .undone()
-            .map(|s| s.label.clone())
-            .collect();
-        let weak = ui.visuals().weak_text_color();
-        const LIST_HEIGHT: f32 = 124.0;
-        // A row is a selectable label: one interactive height.
-        let row_height = ui.spacing().interact_size.y;
-        let rows = n + 1 + undone.len();
-        let mut list = egui::ScrollArea::vertical()
-            .max_height(LIST_HEIGHT)
-            .id_salt("history");
-        if self.panels.history_scrolled != Some((shown, rows)) {
-            // A new step, an undo or a step played: the current row comes into view at
-            // the list's bottom (greyed undone steps below it stay reachable).
-            self.panels.history_scrolled = Some((shown, rows));
-            let row = row_height + ui.spacing().item_spacing.y;
-            list = list.vertical_scroll_offset(((shown + 1) as f32 * row - LIST_HEIGHT).max(0.0));
-        }
-        list.show_rows(ui, row_height, rows, |ui, rows| {
-            for i in rows {
-                if i > n {
-                    let j = i - n - 1;
-                    let r = ui
-                        .selectable_label(
-                            false,
-                            RichText::new(format!("{i}. {}", undone[j])).color(weak),
-                        )
-                        .on_hover_text("Undone: click to redo up to here");
-                    if r.clicked() {
-                        redo_to = Some(j + 1);
-                    }
-                    rows_drawn.push((format!("redo-step-{}", j + 1), r));
-                    continue;
-                }
-                let label = if i == 0 {
-                    "start".to_owned()
-                } else {
-                    format!("{i}. {}", self.editor.history.steps()[i - 1].label)
-                };
-                let r = ui.selectable_label(i == shown, label);
-                if r.clicked() {
-                    clicked = Some(i);
-                }
-                rows_drawn.push((format!("history-{i}"), r));
-            }
-        });
-        for (name, r) in rows_drawn {
-            self.control(name, &r);
-        }
-        if let Some(k) = clicked {
-            self.apply(Action::View(Some(k)));
-        }
-        for _ in 0..redo_to.unwrap_or(0) {
-            self.apply(Action::Redo);
-        }
-        if self.editor.history.is_viewing_earlier() {
-            ui.label(
-                RichText::new(format!(
-                    "Showing step {shown} of {n}. Editing now starts a new branch; the later steps stay restorable below."
-                ))
-                .weak(),
-            );
-        }
-        let branches: Vec<String> = self
-            .editor
-            .history
-            .branches()
-            .iter()
-            .map(|b| b.label.clone())
-            .collect();
-        if !branches.is_empty() {
-            ui.label(RichText::new("Abandoned branches (click to restore)").weak());
-            for (i, label) in branches.iter().enumerate().rev() {
-                let r = ui
-                    .button(format!("↺ {label}"))
-                    .on_hover_text("Brings this design back as a new step (undoable)");
-                self.control(format!("restore-{i}"), &r);
-                if r.clicked() {
-                    self.apply(Action::Restore(i));
-                }
-            }
-        }
-    }
-
-    pub(crate) fn recent_section(&mut self, ui: &mut egui::Ui) {
-        let count = self.session.recent.entries.len();
-        let header = egui::CollapsingHeader::new(format!("Recent designs ({count})"))
-            .id_salt("recent")
-            .show(ui, |ui| {
-                if count == 0 {
-                    ui.label(
-                        RichText::new(
-                            "Designs replaced by New, Open, a link or the gallery are kept here.",
-                        )
-                        .weak(),
-                    );
-                }
-                let mut open = None;
-                let mut made_one = false;
-                for i in 0..count {
-                    let e = self.session.recent.entries[i].clone();
-                    let thumb = match self.panels.recent_thumbnails.get(&e.fragment) {
-                        Some(t) => t.clone(),
-                        None if !made_one => {
-                            made_one = true;
-                            let t =
-                                crate::store::thumbnails::recent_thumbnail(&self.session.recent, i)
-                                    .map(|img| {
-                                        ui.ctx().load_texture(
-                                            format!("recent {i}"),
-                                            img,
-                                            egui::TextureOptions::LINEAR,
-                                        )
-                                    });
-                            self.panels
-                                .recent_thumbnails
-                                .insert(e.fragment.clone(), t.clone());
-                            t
-                        }
-                        None => {
-                            ui.ctx().request_repaint();
-                            None
-                        }
-                    };
-                    let r = ui
-                        .horizontal(|ui| {
-                            let size = egui::vec2(64.0, 48.0);
-                            match &thumb {
-                                Some(t) => {
-                                    ui.add(
-                                        egui::Image::new((t.id(), size)).fit_to_exact_size(size),
-                                    );
-                                }
-                                None => {
-                                    let (rect, _) =
-                                        ui.allocate_exact_size(size, egui::Sense::hover());
-                                    ui.painter().rect_stroke(
-                                        rect,
-                                        2.0,
-                                        ui.visuals().widgets.noninteractive.bg_stroke,
-                                        egui::StrokeKind::Inside,
-                                    );
-                                    ui.painter().text(
-                                        rect.center(),
-                                        egui::Align2::CENTER_CENTER,
-                                        "no preview",
-                                        egui::FontId::proportional(10.0),
-                                        ui.visuals().weak_text_color(),
-                                    );
-                                }
-                            }
-                            // Labels that cannot be selected, so a click anywhere on
-                            // the entry opens it.
-                            ui.vertical(|ui| {
-                                ui.add(
-                                    egui::Label::new(format!(
-                                        "{} · {} ops · {}×{}",
-                                        crate::store::recent::date_label(e.saved_ms),
-                                        e.ops,
-                                        e.size[0],
-                                        e.size[1]
-                                    ))
-                                    .selectable(false),
-                                );
-                                ui.add(
-                                    egui::Label::new(RichText::new(&e.label).weak())
-                                        .selectable(false),
-                                );
-                            });
-                        })
-                        .response
-                        .interact(egui::Sense::click())
-                        .on_hover_text("Restore this design (undoable)");
-                    if r.hovered() {
-                        ui.painter().rect_stroke(
-                            r.rect.expand(1.0),
-                            2,
-                            ui.visuals().widgets.hovered.fg_stroke,
-                            egui::StrokeKind::Outside,
-                        );
-                    }
-                    self.control(format!("recent-{i}"), &r);
-                    if r.clicked() {
-                        open = Some(i);
-                    }
-                }
-                if let Some(i) = open {
-                    self.apply(Action::OpenRecent(i));
-                }
-            });
-        self.control("recent", &header.header_response);
     }
 
     pub(crate) fn status_bar(&mut self, ui: &mut egui::Ui) {

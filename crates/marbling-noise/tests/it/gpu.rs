@@ -4,7 +4,7 @@
 //! MARBLING_SKIP_GPU=1.
 
 use crate::common::gpu::GpuNoise;
-use marbling_noise::wgsl::NoiseGpu;
+use marbling_noise::noise_gpu::NoiseGpu;
 use marbling_noise::{NoiseSpec, noise_to_grey, sample_grid};
 
 const SIZE: u32 = 256;

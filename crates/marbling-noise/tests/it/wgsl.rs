@@ -1,8 +1,9 @@
 //! Every WGSL module parses and validates with naga (no GPU needed), and the host
 //! uniform structs match the WGSL struct layouts.
 
+use marbling_noise::noise_gpu::{FbmGpu, FiberGridGpu, FibersGpu, GaborGpu, NoiseGpu};
 use marbling_noise::stack_gpu::{NoiseStackGpu, StackLayerGpu, StackTransferGpu};
-use marbling_noise::wgsl::{self, FbmGpu, FiberGridGpu, FibersGpu, GaborGpu, NoiseGpu};
+use marbling_noise::wgsl;
 use std::mem::{offset_of, size_of};
 
 /// The noise module `name`, parsed and validated (`marbling_testkit::wgsl`).

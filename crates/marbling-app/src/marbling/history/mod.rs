@@ -8,6 +8,8 @@
 //! ops, [`Change::Paper`] changes the background and overlays. The current design is
 //! kept folded; earlier states are folded on demand.
 
+pub(crate) mod panel;
+
 use crate::marbling::labels::gesture_label;
 use crate::marbling::shown::Shown;
 use marbling_core::{Design, ImageBackground, MAX_OPS, NoiseBackground, Op, Overlay, Rgb8};

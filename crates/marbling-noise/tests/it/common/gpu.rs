@@ -4,8 +4,9 @@
 
 #![allow(dead_code)]
 
+use marbling_noise::noise_gpu::NoiseGpu;
 use marbling_noise::stack_gpu::NoiseStackGpu;
-use marbling_noise::wgsl::{self, NoiseGpu};
+use marbling_noise::wgsl;
 use std::time::{Duration, Instant};
 
 /// A compute entry point writing `eval` (an expression of `p`, the pixel centre, and
