@@ -117,8 +117,26 @@ describe('history on webgl2', () => {
 
   test('a linked design keeps its edits across a reload; New, paper and an earlier-step edit are all recoverable', async () => {
     // Tall enough that the whole side panel (history, recent designs) is on screen.
-    const { page, context, errors } = await openPage(browser, site, linkFragment(SMALL, 'link'), { width: 1300, height: 1300 });
+    const fragment = linkFragment(SMALL, 'link');
+    const { page, context, errors } = await openPage(browser, site, fragment, { width: 1300, height: 1300 });
     await waitOps(page, N);
+    // *Show QR*: the link's QR code in a window (`data-qr` = version and characters; the
+    // Rust and CLI tests read codes back), the link being this page's with the fragment.
+    await clickControl(page, 'show-qr');
+    await page.waitForFunction(() => document.body.dataset.qr !== undefined, null, { timeout: READY_MS });
+    const base = await page.evaluate(() => location.origin + location.pathname);
+    const [version, chars] = (await attr(page, 'data-qr')).slice(1).split(' ').map(Number);
+    assert.equal(chars, base.length + fragment.length, 'the QR code holds another link');
+    assert.ok(version >= 1 && version <= 40, `version ${version}`);
+    const code = (await controls(page))['qr-code'];
+    assert.ok(code && Math.abs(code.w - code.h) <= 1 && code.w >= 96, `the code is drawn ${JSON.stringify(code)}`);
+    // A new window is sized in an unseen first pass: two more frames show it.
+    const shown = Number(await attr(page, 'data-frames')) + 2;
+    await page.mouse.move(code.x + code.w / 2, code.y + code.h / 2);
+    await page.waitForFunction((n) => Number(document.body.dataset.frames) >= n, shown, { timeout: READY_MS });
+    await page.screenshot({ path: path.join(SHOTS, 'link-qr.png'), timeout: READY_MS });
+    await clickControl(page, 'show-qr');
+    await page.waitForFunction(() => document.body.dataset.qr === undefined, null, { timeout: READY_MS });
     const s = await sheet(page);
     await page.mouse.click(s.x + 60 * s.scale, s.y + 40 * s.scale);
     await waitOps(page, N + 1);

@@ -539,6 +539,7 @@ impl eframe::App for MarblingApp {
             self.editor.key,
             &mut self.hooks.controls,
         );
+        with_frame!(self, |f| self.panels.qr.window_ui(&ctx, &mut f));
         self.autosave(frame, &ctx);
         let now_s = ctx.input(|i| i.time);
         if self

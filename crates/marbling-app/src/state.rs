@@ -233,6 +233,8 @@ pub struct Panels {
     pub pick: PickSlot,
     /// Pictures as the background (src/media/picture.rs).
     pub pictures: crate::media::picture::Pictures,
+    /// *Show QR* and its window (src/store/link_qr.rs).
+    pub qr: crate::store::link_qr::LinkQrWindow,
     /// The gallery (src/shell/landing.rs).
     pub gallery: crate::shell::landing::Gallery,
     /// The *Recent designs* section (src/store/recent_panel.rs).
@@ -258,6 +260,7 @@ impl Default for Panels {
             history: Default::default(),
             pick: PickSlot::default(),
             pictures: Default::default(),
+            qr: Default::default(),
             gallery: Default::default(),
             recent: Default::default(),
             new_size: NEW_SIZE,

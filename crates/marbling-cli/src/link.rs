@@ -3,6 +3,7 @@
 use crate::input::read_design;
 use anyhow::{Context, Result, bail};
 use clap::Args;
+use marbling_core::share_qr::{MAX_QR_LINK_BYTES, QrError, link_qr, shortest_for_link};
 use marbling_core::{
     MAX_PICTURE_LINK_CHARS, decode_share, share_fragment, with_link_sized_picture,
 };
@@ -25,6 +26,17 @@ pub struct LinkArgs {
     /// With --decode: write the JSON here instead of standard output.
     #[arg(short, long, requires = "decode")]
     output: Option<String>,
+    /// Also write the link's QR code to this PNG file (a link longer than a QR code
+    /// holds, 2953 characters, is refused unless --shortest makes it fit).
+    #[arg(long, value_name = "PNG", conflicts_with = "decode")]
+    qr: Option<String>,
+    /// Pixels per QR module in --qr's picture.
+    #[arg(long, default_value_t = 8, value_parser = clap::value_parser!(u32).range(1..=64), requires = "qr")]
+    qr_module: u32,
+    /// Make the link as short as it can be: every op rounded and a picture downscaled
+    /// until the link fits a QR code (with --qr) or a link.
+    #[arg(long, conflicts_with = "decode")]
+    shortest: bool,
 }
 
 /// Prints the link, or the decoded design.
@@ -52,7 +64,37 @@ pub fn run(args: &LinkArgs) -> Result<()> {
                 );
             }
         }
-        println!("{}#{}", args.base, share_fragment(&design));
+        if args.shortest {
+            // What fits a QR code, counting the base and the `#`.
+            let budget = match args.qr {
+                Some(_) => MAX_QR_LINK_BYTES.saturating_sub(args.base.len() + 1),
+                None => MAX_PICTURE_LINK_CHARS,
+            };
+            design = shortest_for_link(&design, budget).with_context(|| {
+                format!(
+                    "even the shortest form of the design makes a link longer than {} characters: share the JSON file",
+                    budget + args.base.len() + 1
+                )
+            })?;
+        }
+        let link = format!("{}#{}", args.base, share_fragment(&design));
+        if let Some(path) = &args.qr {
+            let qr = link_qr(&link).map_err(|e| match e {
+                QrError::TooLong { .. } if !args.shortest => {
+                    anyhow::anyhow!(
+                        "{e}; --shortest rounds the ops and shrinks a picture to fit, or share the link or the JSON file"
+                    )
+                }
+                e => anyhow::anyhow!("{e}: share the link or the JSON file"),
+            })?;
+            let png = qr.to_image(args.qr_module).to_png()?;
+            std::fs::write(path, png).with_context(|| format!("cannot write '{path}'"))?;
+            eprintln!(
+                "QR code version {}, {} modules a side, written to {path}",
+                qr.version, qr.side
+            );
+        }
+        println!("{link}");
         return Ok(());
     }
     let design = decode_share(&args.input)?;

@@ -26,6 +26,7 @@ mod recipe;
 mod render;
 pub mod sampling;
 mod share;
+pub mod share_qr;
 pub mod surface;
 pub mod synth;
 mod validate;

@@ -150,6 +150,7 @@ impl MarblingApp {
                     .then(|| self.panels.view3d.frames.to_string()),
             ),
             ("data-preview-ready", preview_ready.then(|| "1".to_owned())),
+            ("data-qr", self.panels.qr.hook()),
             (
                 "data-gpu-work",
                 Some(format!(

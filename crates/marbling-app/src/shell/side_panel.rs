@@ -94,6 +94,7 @@ impl MarblingApp {
                 .button("Copy link")
                 .on_hover_text("A link that opens this design");
             self.control("copy-link", &copy);
+            with_frame!(self, |f| self.panels.qr.button_ui(ui, &mut f));
             if copy.clicked() {
                 let link = self.share_link();
                 let fragment = link.split_once('#').map_or(0, |(_, f)| f.len());
@@ -132,6 +133,7 @@ impl MarblingApp {
             }
         });
         with_frame!(self, |f| self.panels.pictures.link_offer_ui(ui, &mut f));
+        with_frame!(self, |f| self.panels.qr.offer_ui(ui, &mut f));
         ui.horizontal(|ui| {
             ui.label("New sheet");
             ui.add(

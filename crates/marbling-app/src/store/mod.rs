@@ -3,6 +3,7 @@
 
 pub(crate) mod autosave;
 pub mod export;
+pub(crate) mod link_qr;
 pub(crate) mod links;
 pub(crate) mod prefs;
 pub(crate) mod recent;

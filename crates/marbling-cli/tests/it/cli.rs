@@ -257,6 +257,75 @@ fn link_round_trips_and_broken_links_fail() {
     );
 }
 
+/// Reads the one QR code in a PNG back to its text (the `rqrr` decoder).
+fn read_qr(path: &str) -> String {
+    let file = std::fs::File::open(path).expect("the QR PNG");
+    let mut reader = png::Decoder::new(std::io::BufReader::new(file))
+        .read_info()
+        .expect("png");
+    let mut buf = vec![0; reader.output_buffer_size().expect("size")];
+    let info = reader.next_frame(&mut buf).expect("frame");
+    let (w, h) = (info.width as usize, info.height as usize);
+    let step = info.line_size / w;
+    let mut img = rqrr::PreparedImage::prepare_from_greyscale(w, h, |x, y| {
+        buf[y * info.line_size + x * step]
+    });
+    let grids = img.detect_grids();
+    assert_eq!(grids.len(), 1, "one QR code in {path}");
+    grids[0].decode().expect("decodes").1
+}
+
+#[test]
+fn a_link_qr_code_reads_back_and_a_long_link_needs_the_shortest_form() {
+    let dir = scratch("qr");
+    let qr = dir.join("qr.png").to_string_lossy().into_owned();
+    let o = marbling(&["link", "-", "--qr", &qr, "--qr-module", "4"], Some(GOOD));
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(stderr(&o).contains("QR code version"), "{}", stderr(&o));
+    assert_eq!(read_qr(&qr), stdout(&o).trim());
+    // Drops at 15-digit positions: too long for a QR code as they are, short enough once
+    // rounded to 0.01 px (the first such count is looked for, not assumed).
+    let base = "http://127.0.0.1:8080/#";
+    let design = |n: usize| {
+        let mut d = marbling_core::Design::new(640, 480, marbling_core::Rgb8::new(240, 235, 220));
+        for i in 0..n {
+            let t = i as f64 * 0.618_033_988_749_894_8;
+            d.ops.push(marbling_core::Op::Drop(marbling_core::Drop {
+                center: marbling_core::Point::new(
+                    20.0 + (t * 97.0) % 600.0,
+                    20.0 + (t * 61.0) % 440.0,
+                ),
+                radius: 5.0 + (t * 13.0) % 30.0,
+                color: marbling_core::Rgb8::new(29, 53, 87),
+            }));
+        }
+        d
+    };
+    let length = |d: &marbling_core::Design| base.len() + marbling_core::share_fragment(d).len();
+    let limit = marbling_core::share_qr::MAX_QR_LINK_BYTES;
+    let long = (10..600)
+        .step_by(10)
+        .map(design)
+        .find(|d| {
+            let mut r = d.clone();
+            r.ops = r.ops.iter().map(marbling_core::Op::rounded).collect();
+            length(d) > limit && length(&r) <= limit
+        })
+        .expect("a design whose rounding makes its link fit");
+    let file = write(&dir, "long.json", &long.to_json_pretty());
+    assert_fails_with(
+        &marbling(&["link", &file, "--qr", &qr], None),
+        "a QR code holds at most 2953; --shortest rounds the ops",
+    );
+    let o = marbling(&["link", &file, "--qr", &qr, "--shortest"], None);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let link = stdout(&o).trim().to_owned();
+    assert!(link.len() <= limit, "{} characters", link.len());
+    assert_eq!(read_qr(&qr), link);
+    let back = marbling_core::decode_share(&link).expect("the shortest link reads back");
+    assert_eq!(back.ops.len(), long.ops.len());
+}
+
 #[test]
 fn random_writes_a_valid_reproducible_design() {
     let dir = scratch("random");
