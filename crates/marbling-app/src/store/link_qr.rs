@@ -47,8 +47,9 @@ impl LinkQrWindow {
 
     /// *Show QR* (beside *Copy link*).
     pub fn button_ui(&mut self, ui: &mut egui::Ui, frame: &mut Frame<'_>) {
+        // A toggle that looks like a button, lit while the window is open.
         let show = ui
-            .selectable_label(self.open.is_some(), "Show QR")
+            .add(egui::Button::new("Show QR").selected(self.open.is_some()))
             .on_hover_text("The link as a QR code, for a projector or a phone");
         frame.control("show-qr", &show);
         if show.clicked() {
