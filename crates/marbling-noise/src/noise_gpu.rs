@@ -4,7 +4,7 @@
 
 use crate::fbm::{Basis, FbmParams};
 use crate::fibers::{FiberLayout, FiberParams, Fibers};
-use crate::gabor::{Gabor, GaborParams};
+use crate::gabor::Gabor;
 use crate::render::lattice_for_period;
 use crate::spec::{CurlSpec, GaborSpec, WhiteSpec, WorleySpec};
 use crate::spec::{DriveSource, DriveSpec, NoiseSpec, Source};
@@ -300,29 +300,11 @@ impl NoiseGpu {
         let period = spec.tile.period(size);
         let mut u = Self::default();
         match &spec.source {
-            Source::Gabor(GaborSpec {
-                kind,
-                frequency,
-                orientation,
-                bandwidth,
-                impulses,
-                seed,
-                orientation_field,
-                frequency_field,
-            }) => {
-                let (od, oa, o_on) = drive_fbm(orientation_field, "orientation_field", period)?;
-                let (fd, fa, f_on) = drive_fbm(frequency_field, "frequency_field", period)?;
-                let g = Gabor::new(GaborParams {
-                    kind: *kind,
-                    frequency: *frequency,
-                    orientation: *orientation,
-                    bandwidth: *bandwidth,
-                    impulses: *impulses,
-                    seed: *seed,
-                    period,
-                    orientation_drive: None,
-                    frequency_drive: None,
-                });
+            Source::Gabor(spec) => {
+                let (od, oa, o_on) =
+                    drive_fbm(&spec.orientation_field, "orientation_field", period)?;
+                let (fd, fa, f_on) = drive_fbm(&spec.frequency_field, "frequency_field", period)?;
+                let g = Gabor::new(spec.params(period, None, None));
                 u.noise_type = NoiseKind::Gabor as u32;
                 u.gabor = GaborGpu::new(&g, o_on.then_some(oa), f_on.then_some(fa));
                 u.gabor_orientation_drive = od;

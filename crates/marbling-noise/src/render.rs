@@ -8,10 +8,10 @@ use crate::data::DataRef;
 use crate::fbm::Fbm;
 use crate::fibers::Fibers;
 use crate::field::Field;
-use crate::gabor::{Drive, Gabor, GaborParams};
+use crate::gabor::{Drive, Gabor};
 use crate::layer::Combine;
 use crate::spec::{BlendBase, DecayValue, DriveSource, NoiseSpec, Source, Transfer};
-use crate::spec::{CurlSpec, GaborSpec, WhiteSpec, WorleySpec};
+use crate::spec::{CurlSpec, WhiteSpec, WorleySpec};
 use crate::transfer::{SplineDecayTable, hsv_value_blend};
 use crate::white::white2;
 use crate::worley::{Metric, WorleyFeature, worley_normalised};
@@ -131,16 +131,7 @@ pub fn noise_field(spec: &NoiseSpec, size: u32) -> Option<Arc<dyn Field>> {
 fn field_in(spec: &NoiseSpec, size: u32, frame: [f32; 2]) -> Option<Arc<dyn Field>> {
     let period = spec.tile.period(size);
     let field: Arc<dyn Field> = match &spec.source {
-        Source::Gabor(GaborSpec {
-            kind,
-            frequency,
-            orientation,
-            bandwidth,
-            impulses,
-            seed,
-            orientation_field,
-            frequency_field,
-        }) => {
+        Source::Gabor(g) => {
             let drive = |d: &Option<crate::spec::DriveSpec>| -> Option<Drive> {
                 let d = d.as_ref()?;
                 let field: Arc<dyn Field> = match &d.by {
@@ -162,17 +153,11 @@ fn field_in(spec: &NoiseSpec, size: u32, frame: [f32; 2]) -> Option<Arc<dyn Fiel
                     amount: d.amount,
                 })
             };
-            Arc::new(Gabor::new(GaborParams {
-                kind: *kind,
-                frequency: *frequency,
-                orientation: *orientation,
-                bandwidth: *bandwidth,
-                impulses: *impulses,
-                seed: *seed,
+            Arc::new(Gabor::new(g.params(
                 period,
-                orientation_drive: drive(orientation_field),
-                frequency_drive: drive(frequency_field),
-            }))
+                drive(&g.orientation_field),
+                drive(&g.frequency_field),
+            )))
         }
         Source::Fbm(p) => Arc::new(Fbm::new(crate::FbmParams { period, ..*p })),
         Source::Worley(WorleySpec {

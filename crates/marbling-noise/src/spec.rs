@@ -10,7 +10,7 @@ use crate::curve::Curve;
 use crate::data::DataRef;
 use crate::fbm::FbmParams;
 use crate::fibers::FiberParams;
-use crate::gabor::GaborKind;
+use crate::gabor::{Drive, GaborKind, GaborParams};
 use crate::layer::Layer;
 use crate::ramp::{ColorRamp, Rgb};
 use crate::ranges;
@@ -138,6 +138,29 @@ pub struct GaborSpec {
     pub orientation_field: Option<DriveSpec>,
     /// Field driving the frequency.
     pub frequency_field: Option<DriveSpec>,
+}
+
+impl GaborSpec {
+    /// The noise's parameters for a `period`-pixel tiling (`None`: none), with the
+    /// fields driving its orientation and frequency as built by the caller.
+    pub fn params(
+        &self,
+        period: Option<u32>,
+        orientation_drive: Option<Drive>,
+        frequency_drive: Option<Drive>,
+    ) -> GaborParams {
+        GaborParams {
+            kind: self.kind,
+            frequency: self.frequency,
+            orientation: self.orientation,
+            bandwidth: self.bandwidth,
+            impulses: self.impulses,
+            seed: self.seed,
+            period,
+            orientation_drive,
+            frequency_drive,
+        }
+    }
 }
 
 /// A Worley noise's parameters.
