@@ -14,7 +14,7 @@ use crate::state::{Editor, Hooks, Panels, Rendering, Session};
 use crate::store::links::{self, Link};
 use crate::store::prefs::Prefs;
 use crate::store::{autosave, restore};
-use marbling_core::{Design, DesignError, Rgb8, share_fragment};
+use marbling_core::{Design, DesignError, Rgb8};
 use std::sync::Arc;
 
 /// A tool being dragged on the canvas.
@@ -319,15 +319,6 @@ impl MarblingApp {
             }),
             Link::Design(Err(e)) => self.error(first_line_of(&e)),
         }
-    }
-
-    /// The share link of the current design.
-    pub(crate) fn share_link(&self) -> String {
-        format!(
-            "{}#{}",
-            platform::base_url(),
-            share_fragment(self.editor.history.design())
-        )
     }
 
     /// Remembers where a named control was drawn (for the `data-controls` hook): the

@@ -8,9 +8,7 @@ use crate::frame::Frame;
 use crate::platform::{self, PickSlot};
 use egui::RichText;
 use marbling_core::image_background::IMAGE_FITS;
-use marbling_core::{
-    ImageBackground, ImageFit, MAX_PICTURE_LINK_CHARS, share_fragment, with_link_sized_picture,
-};
+use marbling_core::{ImageBackground, ImageFit, MAX_PICTURE_LINK_CHARS, with_link_sized_picture};
 
 /// Whether the file `name` is opened as a picture (else as a design document).
 pub fn is_picture(name: &str) -> bool {
@@ -110,8 +108,7 @@ impl Pictures {
                 let design = frame.editor.history.design();
                 match with_link_sized_picture(design, MAX_PICTURE_LINK_CHARS) {
                     Some(small) => {
-                        let fragment = share_fragment(&small);
-                        let link = format!("{}#{fragment}", platform::base_url());
+                        let link = crate::store::links::design_link(&small);
                         let p = small.background_image.as_ref().map(|b| b.pixels());
                         let (w, h) = p.map_or((0, 0), |p| (p.width, p.height));
                         ui.ctx().copy_text(link.clone());

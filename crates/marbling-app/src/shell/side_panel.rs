@@ -96,7 +96,7 @@ impl MarblingApp {
             self.control("copy-link", &copy);
             with_frame!(self, |f| self.panels.qr.button_ui(ui, &mut f));
             if copy.clicked() {
-                let link = self.share_link();
+                let link = crate::store::links::design_link(self.editor.history.design());
                 let fragment = link.split_once('#').map_or(0, |(_, f)| f.len());
                 if self.editor.history.design().background_image.is_some()
                     && fragment > marbling_core::MAX_PICTURE_LINK_CHARS

@@ -6,8 +6,8 @@
 
 use crate::frame::Frame;
 use crate::platform;
+use crate::store::links::design_link;
 use egui::RichText;
-use marbling_core::share_fragment;
 use marbling_core::share_qr::{MAX_QR_LINK_BYTES, link_qr, shortest_for_link};
 
 /// Largest side of the code on screen, points.
@@ -143,18 +143,18 @@ fn make(
     shortest: Shortest,
     key: u64,
 ) -> Result<ShownQr, String> {
-    let base = platform::base_url();
     let design = frame.editor.history.design();
     let link = if shortest.0 {
-        let budget = MAX_QR_LINK_BYTES.saturating_sub(base.len() + 1);
+        // What the fragment may take once the page's address and `#` are in front.
+        let budget = MAX_QR_LINK_BYTES.saturating_sub(platform::base_url().len() + 1);
         let short = shortest_for_link(design, budget).ok_or_else(|| {
             format!(
                 "even the shortest form makes a link longer than a QR code holds ({MAX_QR_LINK_BYTES} characters): share the link or the JSON file"
             )
         })?;
-        format!("{base}#{}", share_fragment(&short))
+        design_link(&short)
     } else {
-        format!("{base}#{}", share_fragment(design))
+        design_link(design)
     };
     let qr = link_qr(&link).map_err(|e| {
         if shortest.0 {

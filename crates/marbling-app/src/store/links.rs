@@ -1,8 +1,13 @@
 //! What the address bar's fragment holds: a design (`#d=…`), a noise (`#n=…`), or
 //! nothing to open. Reading a link never touches the app: the frame loop applies it.
 
-use marbling_core::{Design, decode_noise_share, decode_share};
+use marbling_core::{Design, decode_noise_share, decode_share, share_fragment};
 use marbling_noise::NoiseSpec;
+
+/// The share link that opens `design` in this playground (its address and `#d=…`).
+pub(crate) fn design_link(design: &Design) -> String {
+    format!("{}#{}", crate::platform::base_url(), share_fragment(design))
+}
 
 /// What a fragment asks for, or why it cannot be had.
 #[derive(Debug)]
