@@ -25,6 +25,14 @@ function cliRender(file, scale, name) {
   return decode(fs.readFileSync(out));
 }
 
+/** The pixels per metre of a PNG's `pHYs` chunk (unit metre), or null. */
+function pixelsPerMetre(bytes) {
+  const at = bytes.indexOf('pHYs', 8, 'latin1');
+  if (at < 0) return null;
+  assert.equal(bytes[at + 12], 1, 'pHYs unit is the metre');
+  return bytes.readUInt32BE(at + 4);
+}
+
 /** The `x, y` window of `w × h` pixels of a decoded PNG. */
 function window(img, x, y, w, h) {
   const out = new PNG({ width: w, height: h });
@@ -138,6 +146,27 @@ for (const backend of Object.keys(BACKENDS)) {
       console.log(`${backend}: Export PNG 2× vs CLI: ${(100 * frac).toFixed(3)} % of ${w}×${h} px differ by > 24/255`);
       assert.ok(frac <= 0.01, `${(100 * frac).toFixed(2)} % of pixels differ`);
       assert.equal(await attr(page, 'data-exporting'), null);
+      if (backend === 'webgl2') {
+        // Export for print: A4 (turned to the landscape design) at 150 DPI with the
+        // 3 mm bleed: 297 mm / 25.4 × 150 = 1754 + 2 × 18 px; the DPI in pHYs; the pixels
+        // those of `marbling render --print A4 --dpi 150 --bleed 3mm`.
+        await clickControl(page, 'print');
+        await clickControl(page, 'print-a4');
+        await clickControl(page, 'print-dpi-150');
+        fs.mkdirSync(SHOTS, { recursive: true });
+        await page.screenshot({ path: path.join(SHOTS, 'print-panel.png'), timeout: READY_MS });
+        const print = await download(page, 'print-export');
+        assert.equal(print.name, `marbling-${STONE.design.ops.length}ops-297x210mm-150dpi.png`);
+        const img = decode(print.bytes);
+        assert.deepEqual([img.width, img.height], [1790, 1276]);
+        assert.equal(pixelsPerMetre(print.bytes), 5906, '150 DPI = 5906 px/m in pHYs');
+        const cli = tmp('print-a4.png');
+        execFileSync(MARBLING, ['render', STONE.file, '-o', cli, '--print', 'A4', '--dpi', '150', '--bleed', '3mm']);
+        const cpu = decode(fs.readFileSync(cli));
+        const off = differing(cpu, img, 24);
+        console.log(`${backend}: Export for print A4 150 DPI vs CLI --print: ${(100 * off).toFixed(3)} % of 1790×1276 px differ by > 24/255`);
+        assert.ok(off <= 0.01, `${(100 * off).toFixed(2)} % of the print differs from the CLI's`);
+      }
       assert.deepEqual(errors, []);
       await context.close();
     });

@@ -243,6 +243,8 @@ pub struct Panels {
     pub new_size: [u32; 2],
     /// The size Export PNG renders at.
     pub export_size: ExportSize,
+    /// *Print…*: the sheet, DPI and bleed of Export for print (src/store/print_panel.rs).
+    pub print: crate::store::print_panel::PrintPanel,
     /// The 3D view window (src/media/view3d.rs).
     pub view3d: crate::media::view3d::View3dWindow,
     /// The portrait layout's bottom sheet (src/shell/bottom_sheet.rs).
@@ -265,6 +267,7 @@ impl Default for Panels {
             recent: Default::default(),
             new_size: NEW_SIZE,
             export_size: ExportSize::Screen,
+            print: Default::default(),
             view3d: crate::media::view3d::View3dWindow::default(),
             sheet: Default::default(),
             rail: Default::default(),

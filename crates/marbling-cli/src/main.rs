@@ -9,6 +9,7 @@ mod input;
 mod link;
 mod noise;
 mod pattern;
+mod print;
 mod random;
 mod render;
 mod render_3d;

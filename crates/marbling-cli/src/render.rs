@@ -14,23 +14,36 @@ use std::time::{Duration, Instant};
 #[derive(Args)]
 pub struct RenderArgs {
     /// Design document (JSON); `-` reads standard input.
-    design: String,
+    pub design: String,
     /// Output PNG; `-` writes to standard output.
     #[arg(short, long)]
-    output: String,
+    pub output: String,
     /// Output pixels per design pixel (default 1).
-    #[arg(long, conflicts_with = "width", allow_negative_numbers = true)]
+    #[arg(long, conflicts_with_all = ["width", "print"], allow_negative_numbers = true)]
     scale: Option<f64>,
     /// Output width in pixels (the height follows the design's aspect ratio).
-    #[arg(long)]
+    #[arg(long, conflicts_with = "print")]
     width: Option<u32>,
+    /// Render for print on a sheet of this size: `297x210mm`, `21x29.7cm`, `8.5x11in`,
+    /// or a preset (A4, A3, Letter, Endpaper = 50×70 cm) turned to the design. The
+    /// design covers the sheet, centred; rows are streamed, so any size fits in memory;
+    /// the PNG carries the DPI.
+    #[arg(long, value_name = "SIZE")]
+    pub print: Option<String>,
+    /// Dots per inch of --print.
+    #[arg(long, default_value_t = 300.0, requires = "print")]
+    pub dpi: f64,
+    /// Bleed of --print on every side: more of the design, cut off after printing
+    /// (`3mm`, `0.125in`; a bare number is mm).
+    #[arg(long, default_value = "0mm", requires = "print")]
+    pub bleed: String,
     /// Antialiasing: none, rgss, grid4, quincunx, rooks8, adaptive.
     #[arg(long, default_value = "rgss")]
-    aa: Antialias,
+    pub aa: Antialias,
     /// Renderer: cpu (the exact f64 reference), gpu (the WGSL renderer, f32) or vector
     /// (outlines traced forward, rasterised with tiny-skia at the same sample positions).
     #[arg(long, value_enum, default_value_t = Backend::Cpu)]
-    backend: Backend,
+    pub backend: Backend,
     /// Render the design only `K` steps into its making (a step is a gesture; a
     /// fraction eases the next step in, as the app's step player shows it).
     #[arg(long, value_name = "K")]
@@ -90,6 +103,12 @@ pub fn run(args: &RenderArgs) -> Result<()> {
             bail!("--steps must be 0 to {steps} (the design's steps), got {k}");
         }
         design = marbling_core::making::design_at(&design, k);
+    }
+    if let Some(sheet) = &args.print {
+        if args.backend != Backend::Cpu {
+            bail!("--print renders with the exact CPU walk: leave out --backend");
+        }
+        return crate::print::run(args, &design, sheet);
     }
     let scale = match (args.scale, args.width) {
         (Some(s), _) => s,

@@ -57,9 +57,20 @@ impl RgbaImage {
 
     /// Encodes the image as an RGBA PNG.
     pub fn to_png(&self) -> Result<Vec<u8>, PngError> {
+        self.to_png_at(None)
+    }
+
+    /// Encodes as an 8-bit RGBA PNG carrying its resolution in a `pHYs` chunk
+    /// (`pixels_per_metre`, e.g. [`crate::print::Print::pixels_per_metre`]) when given.
+    pub fn to_png_at(&self, pixels_per_metre: Option<u32>) -> Result<Vec<u8>, PngError> {
         let mut out = Vec::new();
         {
             let mut enc = png::Encoder::new(&mut out, self.width, self.height);
+            enc.set_pixel_dims(pixels_per_metre.map(|ppm| png::PixelDimensions {
+                xppu: ppm,
+                yppu: ppm,
+                unit: png::Unit::Meter,
+            }));
             enc.set_color(png::ColorType::Rgba);
             enc.set_depth(png::BitDepth::Eight);
             enc.set_compression(png::Compression::Fast);

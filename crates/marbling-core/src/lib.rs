@@ -22,6 +22,7 @@ mod op_kind;
 mod ops;
 pub mod patterns;
 pub mod point_color;
+pub mod print;
 mod recipe;
 mod render;
 pub mod sampling;
@@ -46,8 +47,8 @@ pub use op_kind::OpKind;
 pub use ops::*;
 pub use recipe::{MAX_CAPTION, MAX_RECIPE_HISTORY, MAX_RECIPE_NAME, Recipe};
 pub use render::{
-    MAX_OUTPUT_PIXELS, MAX_OUTPUT_SIDE, RenderError, RenderOptions, output_size, render,
-    render_with_progress,
+    MAX_OUTPUT_PIXELS, MAX_OUTPUT_SIDE, RenderError, RenderOptions, Window, output_size, render,
+    render_window_rows, render_with_progress,
 };
 pub use sampling::Antialias;
 pub use share::{

@@ -42,6 +42,9 @@ pub enum RenderError {
     /// The scale is not a positive finite number.
     #[error("scale must be a finite number > 0, got {0}")]
     BadScale(f64),
+    /// The window's origin is not finite or a side is 0.
+    #[error("the window {0:?} needs a finite origin and sides of at least 1 pixel")]
+    BadWindow(Window),
     /// The output would be too big.
     #[error(
         "output of {width}×{height} pixels is too large (at most {MAX_OUTPUT_SIDE} per side and {MAX_OUTPUT_PIXELS} pixels)"
@@ -84,29 +87,98 @@ pub fn render_with_progress(
     progress: &(dyn Fn(usize, usize) + Sync),
 ) -> Result<RgbaImage, RenderError> {
     let (width, height) = output_size(design, opts.scale)?;
+    let window = Window {
+        x0: 0.0,
+        y0: 0.0,
+        scale: opts.scale,
+        width,
+        height,
+    };
     let shader = Shader::new(design);
     let mut image = RgbaImage::filled(width, height, [0, 0, 0, 255]);
-    let band_bytes = width as usize * 4 * TILE as usize;
     let bands = height.div_ceil(TILE) as usize;
     let done = AtomicUsize::new(0);
     image
         .pixels
-        .par_chunks_mut(band_bytes)
+        .par_chunks_mut(window.band_bytes())
         .enumerate()
         .for_each_init(TileScratch::default, |scratch, (band, rows)| {
-            let y0 = band as u32 * TILE;
-            let h = (rows.len() / (width as usize * 4)) as u32;
-            for x0 in (0..width).step_by(TILE as usize) {
-                let w = TILE.min(width - x0);
-                let tile = Tile { x0, y0, w, h };
-                shader.tile(&tile, opts, scratch, |x, y, rgb| {
-                    let i = (y as usize * width as usize + (x0 + x) as usize) * 4;
-                    rows[i..i + 3].copy_from_slice(&[rgb.r, rgb.g, rgb.b]);
-                });
-            }
+            shader.band(&window, opts.antialias, band as u32 * TILE, rows, scratch);
             progress(done.fetch_add(1, Ordering::Relaxed) + 1, bands);
         });
     Ok(image)
+}
+
+/// A window of the design plane as output pixels: pixel (i, j) covers the design
+/// square from (x0 + i/scale, y0 + j/scale) to (x0 + (i + 1)/scale, y0 + (j + 1)/scale).
+/// The window may reach past the sheet: the design goes on there (its inks walked back
+/// like any other point), which is what a print's bleed shows.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Window {
+    /// Design x of the window's left edge, design pixels.
+    pub x0: f64,
+    /// Design y of the window's top edge, design pixels.
+    pub y0: f64,
+    /// Output pixels per design pixel (> 0).
+    pub scale: f64,
+    /// Width, output pixels (≥ 1).
+    pub width: u32,
+    /// Height, output pixels (≥ 1).
+    pub height: u32,
+}
+
+impl Window {
+    /// Bytes of one band of [`TILE`] RGBA rows.
+    fn band_bytes(&self) -> usize {
+        self.width as usize * 4 * TILE as usize
+    }
+
+    /// Checks the numbers: a finite origin, a positive finite scale, sides ≥ 1.
+    pub fn check(&self) -> Result<(), RenderError> {
+        if !(self.scale.is_finite() && self.scale > 0.0) {
+            return Err(RenderError::BadScale(self.scale));
+        }
+        if !(self.x0.is_finite() && self.y0.is_finite()) || self.width == 0 || self.height == 0 {
+            return Err(RenderError::BadWindow(*self));
+        }
+        Ok(())
+    }
+}
+
+/// Renders `window` of `design` exactly, band by band of rows, top first, handing each
+/// band to `sink(first row, RGBA bytes of whole rows)` in order: two bands of 32 rows
+/// per rayon thread are held at once, so an output of any height streams in bounded
+/// memory. `progress(done, total)` counts rows.
+pub fn render_window_rows<E>(
+    design: &Design,
+    window: &Window,
+    antialias: Antialias,
+    progress: &(dyn Fn(usize, usize) + Sync),
+    mut sink: impl FnMut(u32, &[u8]) -> Result<(), E>,
+) -> Result<(), E>
+where
+    E: From<RenderError>,
+{
+    window.check()?;
+    let shader = Shader::new(design);
+    let parallel = (rayon::current_num_threads() * 2).max(1) as u32;
+    let mut buffer = Vec::new();
+    let mut y0 = 0;
+    while y0 < window.height {
+        let rows = (parallel * TILE).min(window.height - y0);
+        buffer.clear();
+        buffer.resize(window.width as usize * 4 * rows as usize, 255);
+        buffer
+            .par_chunks_mut(window.band_bytes())
+            .enumerate()
+            .for_each_init(TileScratch::default, |scratch, (band, rows)| {
+                shader.band(window, antialias, y0 + band as u32 * TILE, rows, scratch);
+            });
+        sink(y0, &buffer)?;
+        y0 += rows;
+        progress(y0 as usize, window.height as usize);
+    }
+    Ok(())
 }
 
 /// A rectangle of output pixels.
@@ -196,10 +268,10 @@ impl Shader {
         tile: &Tile,
         pixels: impl Iterator<Item = u32>,
         samples: &[Sample],
-        scale: f64,
+        window: &Window,
         scratch: &mut TileScratch,
     ) {
-        let inv = 1.0 / scale;
+        let inv = 1.0 / window.scale;
         scratch.batch.clear();
         let mut n = 0u32;
         for p in pixels {
@@ -208,7 +280,11 @@ impl Shader {
                 f64::from(tile.y0 + p / tile.w),
             );
             for s in samples {
-                scratch.batch.push((px + s.dx) * inv, (py + s.dy) * inv, n);
+                scratch.batch.push(
+                    window.x0 + (px + s.dx) * inv,
+                    window.y0 + (py + s.dy) * inv,
+                    n,
+                );
                 n += 1;
             }
         }
@@ -252,25 +328,48 @@ impl Shader {
             .extend(scratch.traced.iter().map(|&t| self.index(t)));
     }
 
+    /// Renders the band of rows from `y0` of `window` into `rows` (RGBA, whole rows of
+    /// the window, at most [`TILE`] of them), tile by tile.
+    fn band(
+        &self,
+        window: &Window,
+        antialias: Antialias,
+        y0: u32,
+        rows: &mut [u8],
+        scratch: &mut TileScratch,
+    ) {
+        let width = window.width;
+        let h = (rows.len() / (width as usize * 4)) as u32;
+        for x0 in (0..width).step_by(TILE as usize) {
+            let w = TILE.min(width - x0);
+            let tile = Tile { x0, y0, w, h };
+            self.tile(&tile, window, antialias, scratch, |x, y, rgb| {
+                let i = (y as usize * width as usize + (x0 + x) as usize) * 4;
+                rows[i..i + 3].copy_from_slice(&[rgb.r, rgb.g, rgb.b]);
+            });
+        }
+    }
+
     /// Renders one tile, handing each pixel's colour to `put(local x, local y, colour)`.
     fn tile(
         &self,
         tile: &Tile,
-        opts: &RenderOptions,
+        window: &Window,
+        antialias: Antialias,
         scratch: &mut TileScratch,
         mut put: impl FnMut(u32, u32, Rgb8),
     ) {
         if self.surface.is_some() {
-            return self.tile_textured(tile, opts, scratch, put);
+            return self.tile_textured(tile, window, antialias, scratch, put);
         }
-        let samples = opts.antialias.samples();
+        let samples = antialias.samples();
         let count = tile.w * tile.h;
-        self.trace(tile, 0..count, samples, opts.scale, scratch);
+        self.trace(tile, 0..count, samples, window, scratch);
         let k = samples.len();
         scratch.refine.clear();
         for p in 0..count {
             let cs = &scratch.colors[p as usize * k..(p as usize + 1) * k];
-            if opts.antialias.refinement().is_some()
+            if antialias.refinement().is_some()
                 && cs
                     .iter()
                     .any(|&c| self.srgb[c as usize] != self.srgb[cs[0] as usize])
@@ -280,9 +379,9 @@ impl Shader {
             }
             put(p % tile.w, p / tile.w, self.average(cs, samples));
         }
-        if let Some(fine) = opts.antialias.refinement() {
+        if let Some(fine) = antialias.refinement() {
             let refine = std::mem::take(&mut scratch.refine);
-            self.trace(tile, refine.iter().copied(), fine, opts.scale, scratch);
+            self.trace(tile, refine.iter().copied(), fine, window, scratch);
             for (i, &p) in refine.iter().enumerate() {
                 let cs = &scratch.colors[i * fine.len()..(i + 1) * fine.len()];
                 put(p % tile.w, p / tile.w, self.average(cs, fine));
@@ -310,19 +409,20 @@ impl Shader {
     fn tile_textured(
         &self,
         tile: &Tile,
-        opts: &RenderOptions,
+        window: &Window,
+        antialias: Antialias,
         scratch: &mut TileScratch,
         mut put: impl FnMut(u32, u32, Rgb8),
     ) {
-        let samples = opts.antialias.samples();
+        let samples = antialias.samples();
         let count = tile.w * tile.h;
-        self.trace(tile, 0..count, samples, opts.scale, scratch);
+        self.trace(tile, 0..count, samples, window, scratch);
         let k = samples.len();
         scratch.refine.clear();
         for p in 0..count {
             let range = p as usize * k..(p as usize + 1) * k;
             let cs = &scratch.colors[range.clone()];
-            if opts.antialias.refinement().is_some()
+            if antialias.refinement().is_some()
                 && cs
                     .iter()
                     .any(|&c| self.srgb[c as usize] != self.srgb[cs[0] as usize])
@@ -336,9 +436,9 @@ impl Shader {
                 Self::average_linear(&scratch.linear[range], samples),
             );
         }
-        if let Some(fine) = opts.antialias.refinement() {
+        if let Some(fine) = antialias.refinement() {
             let refine = std::mem::take(&mut scratch.refine);
-            self.trace(tile, refine.iter().copied(), fine, opts.scale, scratch);
+            self.trace(tile, refine.iter().copied(), fine, window, scratch);
             for (i, &p) in refine.iter().enumerate() {
                 let lin = &scratch.linear[i * fine.len()..(i + 1) * fine.len()];
                 put(p % tile.w, p / tile.w, Self::average_linear(lin, fine));

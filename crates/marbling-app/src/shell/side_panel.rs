@@ -198,6 +198,7 @@ impl MarblingApp {
                 }
                 with_frame!(self, |f| self.rendering.svg.ui(ui, &mut f));
             }
+            with_frame!(self, |f| self.panels.print.toggle_ui(ui, &mut f));
             let view3d = ui
                 .selectable_label(self.panels.view3d.open, "3D view")
                 .on_hover_text(
@@ -209,6 +210,12 @@ impl MarblingApp {
             }
         });
         ui.label(RichText::new(size_text).weak());
+        let busy = self.rendering.export.is_some() || self.rendering.svg.progress().is_some();
+        let design = self.editor.history.design();
+        let asked = with_frame!(self, |f| self.panels.print.ui(ui, design, busy, &mut f));
+        if let Some(print) = asked {
+            self.start_print_export(frame, print);
+        }
     }
 
     pub(crate) fn status_bar(&mut self, ui: &mut egui::Ui) {

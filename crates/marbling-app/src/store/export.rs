@@ -12,7 +12,8 @@
 use crate::gpu::refine::{FrameBudget, IDLE_FRAME_MS, Refinement, per_pixel};
 use crate::platform;
 use crate::shell::mode::Mode;
-use marbling_core::{Antialias, Design, RgbaImage, output_size};
+use marbling_core::print::Print;
+use marbling_core::{Antialias, Design, RgbaImage, Window, output_size};
 use marbling_gpu::{ExactRenderer, PreparedDesign, RenderTarget, View, copy_to_buffer, tile_grid};
 use std::sync::{Arc, Mutex};
 
@@ -100,11 +101,21 @@ struct InFlight {
     mapped: MapSlot,
 }
 
+/// Longest side of an export in the app, pixels (the CLI streams any size).
+pub const MAX_APP_EXPORT_SIDE: u32 = 16_384;
+/// Most pixels of an export in the app: 512 MiB of RGBA held while it is encoded.
+pub const MAX_APP_EXPORT_PIXELS: u64 = 128 * 1024 * 1024;
+
 /// An export in progress.
 pub struct PngExport {
     renderer: ExactRenderer,
     prepared: PreparedDesign,
     scale: f64,
+    /// The window's top-left corner in output pixels from the design's origin (the
+    /// view's offset of tile (0, 0); negative into a print's bleed).
+    origin: [f64; 2],
+    /// Pixels per metre written in the PNG's `pHYs` chunk (a print), if any.
+    pixels_per_metre: Option<u32>,
     antialias: Antialias,
     tiles: Vec<Tile>,
     next: usize,
@@ -130,6 +141,35 @@ impl PngExport {
         antialias: Antialias,
     ) -> Result<Self, String> {
         let (width, height) = output_size(design, scale).map_err(|e| e.to_string())?;
+        let window = Window {
+            x0: 0.0,
+            y0: 0.0,
+            scale,
+            width,
+            height,
+        };
+        Self::start_window(device, queue, design, &window, antialias)
+    }
+
+    /// Starts exporting `window` of `design` (a print, whose window reaches past the
+    /// sheet into the bleed); fails past [`MAX_APP_EXPORT_SIDE`] or
+    /// [`MAX_APP_EXPORT_PIXELS`], or when the design does not fit the device.
+    pub fn start_window(
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        design: &Design,
+        window: &Window,
+        antialias: Antialias,
+    ) -> Result<Self, String> {
+        window.check().map_err(|e| e.to_string())?;
+        let (width, height, scale) = (window.width, window.height, window.scale);
+        let pixels = u64::from(width) * u64::from(height);
+        if width.max(height) > MAX_APP_EXPORT_SIDE || pixels > MAX_APP_EXPORT_PIXELS {
+            return Err(format!(
+                "{width}×{height} px is more than the app can hold ({MAX_APP_EXPORT_SIDE} px on the long side, {} megapixels); the CLI streams any size: marbling render --print",
+                MAX_APP_EXPORT_PIXELS / 1_000_000
+            ));
+        }
         let renderer = ExactRenderer::new(device, EXPORT_FORMAT);
         let prepared = renderer
             .prepare(device, queue, design)
@@ -139,6 +179,8 @@ impl PngExport {
             renderer,
             prepared,
             scale,
+            origin: [window.x0 * scale, window.y0 * scale],
+            pixels_per_metre: None,
             antialias,
             tiles: tile_grid(width, height, side),
             next: 0,
@@ -156,6 +198,19 @@ impl PngExport {
         let (w, h) = self.size();
         self.tiles = tile_grid(w, h, side);
         self
+    }
+
+    /// Writes `ppm` pixels per metre into the PNG's `pHYs` chunk (a print's DPI).
+    pub fn with_pixels_per_metre(mut self, ppm: u32) -> Self {
+        self.pixels_per_metre = Some(ppm);
+        self
+    }
+
+    /// The PNG of a finished export's `image`, carrying the DPI of a print.
+    pub fn encode(&self, image: &RgbaImage) -> Result<Vec<u8>, String> {
+        image
+            .to_png_at(self.pixels_per_metre)
+            .map_err(|e| e.to_string())
     }
 
     /// Output size, pixels.
@@ -219,7 +274,10 @@ impl PngExport {
             queue,
             &View {
                 scale: self.scale,
-                offset: [f64::from(x0), f64::from(y0)],
+                offset: [
+                    self.origin[0] + f64::from(x0),
+                    self.origin[1] + f64::from(y0),
+                ],
                 antialias: self.antialias,
             },
         );
@@ -325,6 +383,38 @@ impl crate::app::MarblingApp {
         }
     }
 
+    /// Starts Export for print of the design: `print`'s window of it, the PNG carrying
+    /// the DPI.
+    pub(crate) fn start_print_export(&mut self, frame: &eframe::Frame, print: Print) {
+        let Some(rs) = frame.wgpu_render_state() else {
+            self.error("Export for print needs the GPU renderer, which is not available");
+            return;
+        };
+        if let Err(e) = print.check() {
+            self.error(format!("Export for print: {e}"));
+            return;
+        }
+        let design = self.editor.history.design();
+        let window = print.window(design);
+        match PngExport::start_window(&rs.device, &rs.queue, design, &window, self.prefs.antialias)
+        {
+            Ok(export) => {
+                let export = export.with_pixels_per_metre(print.pixels_per_metre());
+                let name = format!(
+                    "marbling-{}ops-{:.0}x{:.0}mm-{}dpi.png",
+                    design.ops.len(),
+                    print.sheet.width_mm,
+                    print.sheet.height_mm,
+                    print.dpi
+                );
+                let (w, h) = export.size();
+                self.info(format!("exporting {w}×{h} PNG for print ({print})…"));
+                self.rendering.export = Some((export, name));
+            }
+            Err(e) => self.error(format!("Export for print: {e}")),
+        }
+    }
+
     /// Moves a running PNG export on by one tile; hands the file over when complete.
     pub(crate) fn advance_export(&mut self, frame: &eframe::Frame, ctx: &egui::Context) {
         let Some((mut export, name)) = self.rendering.export.take() else {
@@ -339,7 +429,7 @@ impl crate::app::MarblingApp {
                 self.rendering.export = Some((export, name));
                 ctx.request_repaint();
             }
-            Ok(ExportStep::Finished(image)) => match image.to_png() {
+            Ok(ExportStep::Finished(image)) => match export.encode(&image) {
                 Ok(bytes) => match platform::save_file(&name, "image/png", &bytes) {
                     Ok(()) => self.info(format!("exported {name}")),
                     Err(e) => self.error(e),

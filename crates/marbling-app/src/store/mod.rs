@@ -6,6 +6,7 @@ pub mod export;
 pub(crate) mod link_qr;
 pub(crate) mod links;
 pub(crate) mod prefs;
+pub(crate) mod print_panel;
 pub(crate) mod recent;
 pub(crate) mod recent_panel;
 pub(crate) mod restore;

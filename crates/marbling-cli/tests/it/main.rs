@@ -7,5 +7,6 @@ mod common;
 mod making_cli;
 mod noise_cli;
 mod pictures_3d_cli;
+mod print_cli;
 mod svg_cli;
 mod v2_cli;
