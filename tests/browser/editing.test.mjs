@@ -88,6 +88,43 @@ for (const backend of Object.keys(BACKENDS)) {
       await page.waitForFunction(() => document.body.dataset.error !== undefined, null, { timeout: READY_MS });
       assert.match(await attr(page, 'data-error'), /ops\[3\]\.radii\[0\]: must be > 0/);
       assert.equal(await attr(page, 'data-ops'), String(GEL.design.ops.length), 'the current design was lost');
+
+      // Palettes: a .gpl imported becomes the palette, its first colour the ink.
+      const inks = async () => Object.keys(await controls(page)).filter((n) => /^ink-\d+$/.test(n)).length;
+      // The swatches of the palette, once a frame has drawn them.
+      const swatches = (n) => page.waitForFunction((k) => (document.body.dataset.controls ?? '').split(';').filter((c) => /^ink-\d+=/.test(c)).length === k, n, { timeout: READY_MS });
+      const status = (re) => page.waitForFunction((s) => new RegExp(s).test(document.body.dataset.status ?? ''), re.source, { timeout: READY_MS });
+      const gpl = tmp('Ebru.gpl');
+      fs.writeFileSync(gpl, 'GIMP Palette\nName: Ebru\nColumns: 3\n#\n 29  53  87\tIndigo\n230  57  70 Red\n244 236 216 Paper\n');
+      const [pick] = await Promise.all([page.waitForEvent('filechooser', { timeout: READY_MS }), clickControl(page, 'palette-import')]);
+      await pick.setFiles(gpl);
+      await status(/palette Ebru of 3 colours/);
+      await swatches(3);
+      // Save .gpl writes what `marbling palette` makes of the same file.
+      const savedGpl = await download(page, 'palette-save');
+      assert.equal(savedGpl.name, 'Ebru.gpl');
+      assert.equal(savedGpl.bytes.toString('utf8'), execFileSync(MARBLING, ['palette', gpl]).toString());
+      // A drop takes the palette's first colour.
+      const s = await sheet(page);
+      await page.mouse.click(s.x + 100 * s.scale, s.y + 100 * s.scale);
+      await waitOps(page, GEL.design.ops.length + 1);
+      const dropped = JSON.parse((await download(page, 'save-json')).bytes.toString('utf8'));
+      assert.equal(dropped.ops.at(-1).color, '#1d3557');
+      // A bad palette file is named with its line and keeps the palette.
+      const badGpl = tmp('bad.gpl');
+      fs.writeFileSync(badGpl, 'GIMP Palette\nName: x\n10 20 30\n300 0 0 Too red\n');
+      const [pick2] = await Promise.all([page.waitForEvent('filechooser', { timeout: READY_MS }), clickControl(page, 'palette-import')]);
+      await pick2.setFiles(badGpl);
+      await page.waitForFunction(() => /bad\.gpl: line 4: expected three numbers 0–255/.test(document.body.dataset.error ?? ''), null, { timeout: READY_MS });
+      const frames = Number(await attr(page, 'data-frames'));
+      await page.waitForFunction((n) => Number(document.body.dataset.frames) >= n, frames + 2, { timeout: READY_MS });
+      assert.equal(await inks(), 3, 'a bad file changed the palette');
+      // Hex colours typed into the field and Enter.
+      await clickControl(page, 'palette-hex');
+      await page.keyboard.type('#112233, #445566');
+      await page.keyboard.press('Enter');
+      await status(/palette of 2 pasted colours/);
+      await swatches(2);
       assert.deepEqual(errors, []);
       await context.close();
     });

@@ -136,7 +136,10 @@ impl MarblingApp {
             }
             Action::NewSheet => {
                 let mut d = crate::app::blank(self.panels.new_size);
-                d.background = crate::INK_SETS[self.prefs.palette].background;
+                d.background = self
+                    .prefs
+                    .paper()
+                    .unwrap_or(self.editor.history.design().background);
                 self.replace_document(
                     d,
                     format!(

@@ -108,7 +108,7 @@ impl MarblingApp {
             app.info("the GPU device was lost: the renderer was restarted, your work is kept");
             return app;
         }
-        let stored = restore::read(|key| platform::load_string(cc.storage, key), app.prefs);
+        let stored = restore::read(|key| platform::load_string(cc.storage, key), &app.prefs);
         if let Some(r) = stored.autosave {
             app.editor.pristine = false;
             app.editor.history = History::new(r.design);
@@ -130,7 +130,7 @@ impl MarblingApp {
             Some(Err(e)) => log::warn!("{e}"),
             None => {}
         }
-        app.session.stored_prefs.0 = Some(app.prefs);
+        app.session.stored_prefs.0 = Some(app.prefs.clone());
         if let Some(Err(e)) = stored.noise.map(|s| s.and_then(|s| app.noise.open(s))) {
             log::warn!("the stored noise setup was not restored: {e}");
         }
@@ -166,7 +166,7 @@ impl MarblingApp {
     fn park_state(&self) -> ParkedState {
         ParkedState {
             history: self.editor.history.clone(),
-            prefs: self.prefs,
+            prefs: self.prefs.clone(),
             last_fragment: self.editor.last_fragment.clone(),
         }
     }

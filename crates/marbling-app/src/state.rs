@@ -243,6 +243,8 @@ pub struct Panels {
     pub new_size: [u32; 2],
     /// The size Export PNG renders at.
     pub export_size: ExportSize,
+    /// The Ink section and the palettes it imports (src/marbling/ink_panel.rs).
+    pub ink: crate::marbling::ink_panel::InkPanel,
     /// *Print…*: the sheet, DPI and bleed of Export for print (src/store/print_panel.rs).
     pub print: crate::store::print_panel::PrintPanel,
     /// The 3D view window (src/media/view3d.rs).
@@ -268,6 +270,7 @@ impl Default for Panels {
             new_size: NEW_SIZE,
             export_size: ExportSize::Screen,
             print: Default::default(),
+            ink: Default::default(),
             view3d: crate::media::view3d::View3dWindow::default(),
             sheet: Default::default(),
             rail: Default::default(),

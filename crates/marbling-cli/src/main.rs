@@ -8,6 +8,7 @@ mod bench_svg;
 mod input;
 mod link;
 mod noise;
+mod palette;
 mod pattern;
 mod print;
 mod random;
@@ -49,6 +50,8 @@ enum Command {
     Random(random::RandomArgs),
     /// Animate the making of a design step by step as an animated PNG or GIF.
     Animate(animate::AnimateArgs),
+    /// Make an ink palette (.gpl) from a GIMP palette, a picture or hex colours.
+    Palette(palette::PaletteArgs),
     /// Write a traditional pattern's recipe (stone, chevron, nonpareil, …) as JSON.
     Pattern(pattern::PatternArgs),
     /// Measure vector export time, vertex count and SVG size on synthetic designs.
@@ -68,6 +71,7 @@ fn main() -> ExitCode {
         Command::BenchSvg(args) => bench_svg::run(&args),
         Command::Random(args) => random::run(&args),
         Command::Pattern(args) => pattern::run(&args),
+        Command::Palette(args) => palette::run(&args),
         Command::Animate(args) => animate::run(&args),
     };
     match result {

@@ -16,6 +16,7 @@ pub mod explain;
 mod gestures;
 mod image;
 pub mod image_background;
+pub mod ink_palette;
 mod json;
 pub mod making;
 mod op_kind;

@@ -131,6 +131,7 @@ mod tests {
                 tool: ToolKind::Comb,
                 settings: ToolSettings::default(),
                 palette: 2,
+                imported: None,
                 ink: Rgb8::new(9, 9, 9),
                 antialias: Antialias::Grid4,
             },

@@ -290,7 +290,7 @@ impl MarblingApp {
         if !self.prefs.settings.cycle_colors {
             return vec![ink];
         }
-        let palette = crate::INK_SETS[self.prefs.palette.min(crate::INK_SETS.len() - 1)].inks;
+        let palette = self.prefs.inks();
         match palette.iter().position(|&c| c == ink) {
             Some(i) => palette[i..].iter().chain(&palette[..i]).copied().collect(),
             None => std::iter::once(ink)

@@ -44,7 +44,7 @@ impl MarblingApp {
             Section::Tool => {
                 with_frame!(self, |f| crate::marbling::tool_panel::ui(ui, &mut f));
             }
-            Section::Ink => with_frame!(self, |f| crate::marbling::ink_panel::ui(ui, &mut f)),
+            Section::Ink => with_frame!(self, |f| self.panels.ink.ui(ui, &mut f)),
             Section::Picture => with_frame!(self, |f| self.panels.pictures.ui(ui, &mut f)),
             Section::Video => with_frame!(self, |f| self.rendering.video.ui(ui, &mut f)),
             Section::History => with_frame!(self, |f| self.panels.history.ui(ui, &mut f)),

@@ -228,16 +228,14 @@ impl crate::app::MarblingApp {
     /// a waiting one when the page goes away). A full storage drops the oldest recent
     /// designs first, then says the design was not autosaved.
     pub(crate) fn autosave(&mut self, frame: &mut eframe::Frame, ctx: &egui::Context) {
-        let prefs = self.prefs;
         let now = platform::now_ms();
-        if self.session.stored_prefs.0 != Some(prefs)
-            && now - self.session.stored_prefs.1 >= MIN_INTERVAL_MS
-        {
+        let changed = self.session.stored_prefs.0.as_ref() != Some(&self.prefs);
+        if changed && now - self.session.stored_prefs.1 >= MIN_INTERVAL_MS {
             self.session
                 .pending_writes
-                .push((crate::store::prefs::KEY, prefs.encode()));
-            self.session.stored_prefs = (Some(prefs), now);
-        } else if self.session.stored_prefs.0 != Some(prefs) {
+                .push((crate::store::prefs::KEY, self.prefs.encode()));
+            self.session.stored_prefs = (Some(self.prefs.clone()), now);
+        } else if changed {
             ctx.request_repaint_after(std::time::Duration::from_secs(1));
         }
         let noise = &self.noise;

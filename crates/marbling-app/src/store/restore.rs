@@ -25,7 +25,7 @@ pub(crate) struct Stored {
 
 /// Reads storage through `load` (a key's text, if any); `defaults` fill the
 /// preferences' missing fields.
-pub(crate) fn read(load: impl Fn(&str) -> Option<String>, defaults: Prefs) -> Stored {
+pub(crate) fn read(load: impl Fn(&str) -> Option<String>, defaults: &Prefs) -> Stored {
     let found = autosave::newest(
         [load(autosave::SLOTS[0]), load(autosave::SLOTS[1])],
         load(autosave::LEGACY_KEY),
@@ -62,7 +62,7 @@ mod tests {
                 "{\"type\":\"nope\"}".to_owned(),
             ),
         ]);
-        let s = read(|k| stored.get(k).cloned(), Prefs::default());
+        let s = read(|k| stored.get(k).cloned(), &Prefs::default());
         assert!(s.autosave.is_none());
         assert_eq!(s.unreadable.len(), 1);
         assert_eq!(
@@ -80,7 +80,7 @@ mod tests {
         let mut stored = stored;
         stored.insert(autosave::SLOTS[1], autosave::encode(3, 0.0, &design));
         stored.insert(prefs::KEY, "{".to_owned());
-        let s = read(|k| stored.get(k).cloned(), Prefs::default());
+        let s = read(|k| stored.get(k).cloned(), &Prefs::default());
         assert_eq!(s.autosave.expect("the readable slot").design, design);
         assert!(s.unreadable.is_empty());
         assert!(matches!(s.prefs, Some(Err(_))));

@@ -6,6 +6,7 @@ mod cli_gpu;
 mod common;
 mod making_cli;
 mod noise_cli;
+mod palette_cli;
 mod pictures_3d_cli;
 mod print_cli;
 mod svg_cli;
