@@ -100,6 +100,8 @@ for (const backend of Object.keys(BACKENDS)) {
       await pick.setFiles(gpl);
       await status(/palette Ebru of 3 colours/);
       await swatches(3);
+      fs.mkdirSync(SHOTS, { recursive: true });
+      await page.screenshot({ path: path.join(SHOTS, 'palette-import.png'), timeout: READY_MS });
       // Save .gpl writes what `marbling palette` makes of the same file.
       const savedGpl = await download(page, 'palette-save');
       assert.equal(savedGpl.name, 'Ebru.gpl');
