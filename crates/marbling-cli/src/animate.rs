@@ -33,6 +33,26 @@ pub struct AnimateArgs {
     /// Antialiasing of each frame.
     #[arg(long, default_value = "rgss")]
     aa: Antialias,
+    /// Seconds the finished design stays on screen before the animation goes on (or
+    /// loops).
+    #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
+    hold: f64,
+    /// After the making (and the hold), the making backwards to the start, so the loop
+    /// has no jump: frames 0 … N−1, then N−2 … 1.
+    #[arg(long)]
+    reverse: bool,
+}
+
+/// The frame order of a loop of `made` frames of the making (0 the start, `made − 1`
+/// the finished design): forward, then with `reverse` back down to frame 1, so that
+/// looping to frame 0 moves on by one frame like every other.
+pub fn loop_order(made: usize, reverse: bool) -> Vec<usize> {
+    let forward = 0..made;
+    if reverse && made > 2 {
+        forward.chain((1..made - 1).rev()).collect()
+    } else {
+        forward.collect()
+    }
 }
 
 /// The output format, from the file name.
@@ -64,7 +84,12 @@ pub fn run(args: &AnimateArgs) -> Result<()> {
     if !(seconds.is_finite() && seconds > 0.0) {
         bail!("--seconds must be a positive number, got {seconds}");
     }
-    let frames = ((seconds * f64::from(args.fps)).round() as usize).max(2);
+    if !(args.hold.is_finite() && (0.0..=60.0).contains(&args.hold)) {
+        bail!("--hold must be 0 to 60 seconds, got {}", args.hold);
+    }
+    let made = ((seconds * f64::from(args.fps)).round() as usize).max(2);
+    let order = loop_order(made, args.reverse);
+    let frames = order.len();
     if frames > MAX_FRAMES {
         bail!("{frames} frames is more than {MAX_FRAMES}: lower --fps or --seconds");
     }
@@ -86,12 +111,31 @@ pub fn run(args: &AnimateArgs) -> Result<()> {
     {
         bar.set_style(style.progress_chars("=> "));
     }
-    // Frame i shows the making at i/(frames − 1) of its steps: the last, all of it.
-    let frame = |i: usize| -> Result<RgbaImage> {
-        let position = steps as f64 * i as f64 / (frames - 1) as f64;
+    // Frame i of the making shows it at i/(made − 1) of its steps: the last, all of it.
+    // A reversed loop shows each again on the way back: rendered once, kept.
+    let mut rendered: Vec<Option<RgbaImage>> = vec![None; made];
+    let mut frame = |i: usize| -> Result<RgbaImage> {
+        if let Some(image) = &rendered[i] {
+            bar.inc(1);
+            return Ok(image.clone());
+        }
+        let position = steps as f64 * i as f64 / (made - 1) as f64;
         let image = render(&design_at(&design, position), &opts)?;
         bar.inc(1);
+        if args.reverse {
+            rendered[i] = Some(image.clone());
+        }
         Ok(image)
+    };
+    // Each frame shows for 1/fps s (num/den seconds); the finished design for the hold
+    // more, in ms.
+    let delay = |i: usize| -> (u16, u16) {
+        if i == made - 1 && args.hold > 0.0 {
+            let ms = (1.0 / f64::from(args.fps) + args.hold) * 1000.0;
+            (ms.round() as u16, 1000)
+        } else {
+            (1, args.fps as u16)
+        }
     };
     let mut out = std::io::BufWriter::new(file);
     match format {
@@ -103,7 +147,9 @@ pub fn run(args: &AnimateArgs) -> Result<()> {
             enc.set_animated(frames as u32, 0)?;
             enc.set_frame_delay(1, args.fps as u16)?;
             let mut writer = enc.write_header()?;
-            for i in 0..frames {
+            for &i in &order {
+                let (num, den) = delay(i);
+                writer.set_frame_delay(num, den)?;
                 writer.write_image_data(&frame(i)?.pixels)?;
             }
             writer.finish()?;
@@ -111,10 +157,12 @@ pub fn run(args: &AnimateArgs) -> Result<()> {
         Format::Gif => {
             let mut enc = gif::Encoder::new(&mut out, w as u16, h as u16, &[])?;
             enc.set_repeat(gif::Repeat::Infinite)?;
-            for i in 0..frames {
+            for &i in &order {
                 let mut pixels = frame(i)?.pixels;
                 let mut f = gif::Frame::from_rgba_speed(w as u16, h as u16, &mut pixels, 10);
-                f.delay = (100 / args.fps).max(1) as u16;
+                // Centiseconds.
+                let (num, den) = delay(i);
+                f.delay = (u32::from(num) * 100 / u32::from(den)).max(1) as u16;
                 enc.write_frame(&f)?;
             }
         }
@@ -123,8 +171,19 @@ pub fn run(args: &AnimateArgs) -> Result<()> {
         .with_context(|| format!("cannot write '{}'", args.output))?;
     bar.finish_and_clear();
     println!(
-        "{}: {frames} frames of {w}×{h} px, {steps} steps in {seconds} s at {} fps",
-        args.output, args.fps
+        "{}: {frames} frames of {w}×{h} px, {steps} steps in {seconds} s at {} fps{}{}",
+        args.output,
+        args.fps,
+        if args.hold > 0.0 {
+            format!(", the design held {} s", args.hold)
+        } else {
+            String::new()
+        },
+        if args.reverse {
+            ", then reversed to loop"
+        } else {
+            ""
+        }
     );
     Ok(())
 }

@@ -162,10 +162,7 @@ mod tests {
         p.settings.comb_tines = 9;
         p.palette = 2;
         p.antialias = Antialias::Grid4;
-        assert_eq!(
-            Prefs::decode(&p.encode(), &defaults).expect("a value"),
-            p
-        );
+        assert_eq!(Prefs::decode(&p.encode(), &defaults).expect("a value"), p);
         // An imported palette is kept, chosen, and its .gpl is what it holds.
         p.import_palette(InkPalette {
             name: "Ebru".to_owned(),

@@ -202,3 +202,80 @@ fn animate_writes_the_frames_and_ends_on_the_render() {
         "--steps must be 0 to 7",
     );
 }
+
+#[test]
+fn a_looping_animation_holds_the_design_then_plays_back_to_the_start() {
+    let dir = scratch("loop");
+    let design = "../../examples/patterns/hearts.json";
+    let apng = dir.join("loop.png");
+    let path = apng.to_str().expect("utf-8 path");
+    let out = ok(&[
+        "animate",
+        design,
+        "-o",
+        path,
+        "--fps",
+        "3",
+        "--seconds",
+        "2",
+        "--width",
+        "96",
+        "--hold",
+        "1.5",
+        "--reverse",
+    ]);
+    assert!(
+        out.contains("10 frames of 96×60 px") && out.contains("held 1.5 s, then reversed"),
+        "{out}"
+    );
+    let bytes = std::fs::read(&apng).expect("written");
+    let (declared, frames) = apng_frames(&bytes);
+    // 6 frames of the making, then 4 back: 0 1 2 3 4 5 4 3 2 1 (then the loop to 0).
+    assert_eq!((declared, frames.len()), (10, 10));
+    for (a, b) in [(6, 4), (7, 3), (8, 2), (9, 1)] {
+        assert!(frames[a] == frames[b], "frame {a} is not frame {b} again");
+    }
+    assert!(
+        frames[9] != frames[0],
+        "the loop's last frame repeats the first"
+    );
+    // The turning point is the finished design, shown 1/3 s + the hold.
+    let still = dir.join("loop-still.png");
+    ok(&[
+        "render",
+        design,
+        "-o",
+        still.to_str().expect("utf-8 path"),
+        "--width",
+        "96",
+    ]);
+    let still = RgbaImage::from_png(&std::fs::read(&still).expect("png")).expect("decode");
+    assert!(
+        compare(&still, &frames[5], 2)
+            .expect("same size")
+            .fraction()
+            <= 0.01
+    );
+    let mut reader = png::Decoder::new(std::io::Cursor::new(&bytes))
+        .read_info()
+        .expect("png");
+    let mut buf = vec![0; reader.output_buffer_size().expect("size")];
+    let mut delays = Vec::new();
+    while reader.next_frame(&mut buf).is_ok() {
+        let fc = reader.info().frame_control().expect("fcTL");
+        delays.push(f64::from(fc.delay_num) / f64::from(fc.delay_den));
+    }
+    assert_eq!(delays.len(), 10);
+    assert!((delays[5] - (1.0 / 3.0 + 1.5)).abs() < 1e-3, "{delays:?}");
+    assert!(
+        delays
+            .iter()
+            .enumerate()
+            .all(|(i, d)| i == 5 || (d - 1.0 / 3.0).abs() < 1e-9),
+        "{delays:?}"
+    );
+    fails_with(
+        &["animate", design, "-o", path, "--hold", "90"],
+        "--hold must be 0 to 60 seconds, got 90",
+    );
+}
