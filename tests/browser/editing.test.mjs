@@ -282,6 +282,30 @@ for (const backend of Object.keys(BACKENDS)) {
       const video = await download(page, 'player-record');
       assert.match(video.name, /^marbling-\d+ops-320x200\.webm$/);
       assert.ok(video.bytes.length > 1000 && video.bytes.readUInt32BE(0) === 0x1a45dfa3, `not a WebM (${video.bytes.length} bytes)`);
+      // A looping recording (reverse on, the 1 s hold, the speed at its top): the making,
+      // the finished design held, then the making backwards; the video downloads by
+      // itself back on the bare tank.
+      await page.waitForFunction(() => /(^|;)player-reverse=/.test(document.body.dataset.controls ?? ''), null, { timeout: READY_MS });
+      await clickControl(page, 'player-reverse');
+      const speed = (await controls(page))['player-speed'];
+      await page.mouse.click(speed.x + speed.w - 2, speed.y + speed.h / 2);
+      let looped = null;
+      const loopDownload = page.waitForEvent('download', { timeout: READY_MS }).then((d) => { looped = d; });
+      await clickControl(page, 'player-record');
+      const seen = [];
+      while (!looped) {
+        seen.push([Date.now(), await attr(page, 'data-player')]);
+        await Promise.race([loopDownload, page.waitForTimeout(100)]);
+      }
+      const at = (v) => Number((v ?? '-1/').split('/')[0]);
+      const first = seen.findIndex(([, v]) => at(v) === steps);
+      const last = seen.findLastIndex(([, v]) => at(v) === steps);
+      assert.ok(first >= 0, `the loop never reached the end: ${seen.map(([, v]) => v).join(' ')}`);
+      assert.ok(seen[last][0] - seen[first][0] >= 800, `the finished design was held ${seen[last][0] - seen[first][0]} ms, not 1 s`);
+      assert.ok(seen.slice(last).some(([, v]) => at(v) > 0 && at(v) < steps), 'the making was not played backwards');
+      assert.equal(at(await attr(page, 'data-player')), 0, 'the loop ended away from the bare tank');
+      const loopFile = fs.readFileSync(await looped.path());
+      assert.ok(loopFile.length > 1000 && loopFile.readUInt32BE(0) === 0x1a45dfa3, `the loop is not a WebM (${loopFile.length} bytes)`);
       await clickControl(page, 'player-close');
       await page.waitForFunction(() => document.body.dataset.player === undefined, null, { timeout: READY_MS });
       await waitOps(page, d.ops.length);

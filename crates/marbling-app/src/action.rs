@@ -56,6 +56,9 @@ pub enum Action {
         /// Whether it goes on playing.
         playing: bool,
     },
+    /// Plays the open player's making backwards from the end (a looping recording's
+    /// way back; the player's negative velocity moves it).
+    PlayBackward,
     /// Switches between marbling and the noise playground.
     SetMode(Mode),
     /// Shows the gallery in place of the canvas, or the canvas again.
@@ -79,6 +82,7 @@ impl MarblingApp {
             | Action::ShowGallery(_)
             | Action::Play(_)
             | Action::Seek { .. }
+            | Action::PlayBackward
             | Action::View(_) => self.editor.pristine,
             _ => {
                 self.panels.message = None;
@@ -182,6 +186,14 @@ impl MarblingApp {
                 let steps = self.editor.history.design().gesture_sizes().len();
                 let mut p = crate::marbling::playback::Playback::at(position, steps);
                 p.playing = playing && p.step < steps;
+                self.editor.playback = Some(p);
+                self.refresh();
+                return;
+            }
+            Action::PlayBackward => {
+                let steps = self.editor.history.design().gesture_sizes().len();
+                let mut p = crate::marbling::playback::Playback::at(steps as f64, steps);
+                p.playing = steps > 0;
                 self.editor.playback = Some(p);
                 self.refresh();
                 return;

@@ -375,7 +375,7 @@ impl MarblingApp {
         };
         let dt = f64::from(ctx.input(|i| i.stable_dt)).min(0.1);
         let steps = self.editor.history.design().gesture_sizes().len();
-        let running = p.advance(dt, self.player.speed(), steps);
+        let running = p.advance(dt, self.player.velocity(), steps);
         self.editor.playback = Some(p);
         self.refresh();
         if running {
@@ -419,7 +419,7 @@ impl eframe::App for MarblingApp {
         self.check_fragment();
         self.handle_shortcuts(&ctx);
         self.advance_playback(&ctx);
-        with_frame!(self, |f| self.player.follow_recording(&mut f));
+        with_frame!(self, |f| self.player.follow_recording(&ctx, &mut f));
         self.advance_export(frame, &ctx);
         with_frame!(self, |f| self.rendering.svg.tick(&ctx, &mut f));
         with_frame!(self, |f| self.noise.tick_export(&ctx, &mut f));

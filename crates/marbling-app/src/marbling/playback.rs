@@ -47,16 +47,21 @@ impl Playback {
     }
 
     /// Advances by `dt` seconds at `steps_per_second`; at the end it stops on the
-    /// whole design. Returns whether it is still playing.
+    /// whole design, and with a negative speed (backward) at the start on the bare
+    /// tank. Returns whether it is still playing.
     pub fn advance(&mut self, dt: f64, steps_per_second: f64, steps: usize) -> bool {
         if !self.playing {
             return false;
         }
+        let next = self.position() + dt * steps_per_second;
         *self = Self {
             playing: true,
-            ..Self::at(self.position() + dt * steps_per_second, steps)
+            ..Self::at(next, steps)
         };
-        if self.step >= steps {
+        // Forward it stops at the end; backward (a negative speed) at the start.
+        if (steps_per_second >= 0.0 && self.step >= steps)
+            || (steps_per_second < 0.0 && next <= 0.0)
+        {
             self.playing = false;
         }
         self.playing
@@ -106,6 +111,19 @@ impl Playback {
 mod tests {
     use super::*;
     use marbling_core::synth::{Mix, random_design};
+
+    #[test]
+    fn played_backward_it_stops_on_the_bare_tank() {
+        let mut p = Playback::at(3.0, 3);
+        p.playing = true;
+        let mut frames = 0;
+        while p.advance(0.1, -2.0, 3) {
+            frames += 1;
+            assert!(p.position() < 3.0 && p.position() > 0.0);
+        }
+        assert_eq!(frames, 14, "3 steps at 2 steps/s backward, 0.1 s a frame");
+        assert_eq!((p.position(), p.playing), (0.0, false));
+    }
 
     #[test]
     fn the_player_eases_each_step_in_and_ends_on_the_design() {

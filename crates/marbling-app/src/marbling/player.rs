@@ -6,6 +6,7 @@
 use crate::action::Action;
 use crate::frame::Frame;
 use crate::marbling::explain_geometry::{ExplainGeometry, Window};
+use crate::media::recorder::{LoopEnding, MAX_HOLD_S, Next, Phase, Recorder};
 use crate::state::Editor;
 use egui::{Color32, Sense, Slider, Stroke, vec2};
 use marbling_core::{Design, Point};
@@ -38,7 +39,10 @@ pub(crate) struct Player {
     /// Steps per second.
     speed: f64,
     explain: Explain,
-    recorder: Option<crate::media::recorder::Recorder>,
+    /// A recording of the making and where it is.
+    recording: Option<(Recorder, Phase)>,
+    /// How a recording ends: the hold on the finished design, the way back.
+    ending: LoopEnding,
     /// The explain view's geometry and what it was computed for (shown design's key,
     /// settings, half-octave of zoom).
     explain_cache: Option<((u64, Explain, i32), Arc<ExplainGeometry>)>,
@@ -49,16 +53,20 @@ impl Default for Player {
         Self {
             speed: 0.8,
             explain: Explain::default(),
-            recorder: None,
+            recording: None,
+            ending: LoopEnding::default(),
             explain_cache: None,
         }
     }
 }
 
 impl Player {
-    /// Steps per second.
-    pub fn speed(&self) -> f64 {
-        self.speed
+    /// Steps per second with a sign: negative while a recording plays the making back.
+    pub fn velocity(&self) -> f64 {
+        match self.recording {
+            Some((_, Phase::Backward)) => -self.speed,
+            _ => self.speed,
+        }
     }
 
     /// The explain view's settings.
@@ -190,7 +198,8 @@ impl Player {
         }
     }
 
-    /// Record (a toggle): films the making from the first step.
+    /// Record (a toggle): films the making from the first step; beside it, how the video
+    /// ends (a hold on the finished design, the making backwards) so that it loops.
     fn record_button(
         &mut self,
         ui: &mut egui::Ui,
@@ -198,7 +207,7 @@ impl Player {
         seek: &mut Option<(f64, bool)>,
         frame: &mut Frame<'_>,
     ) {
-        let recording = self.recorder.is_some();
+        let recording = self.recording.is_some();
         let record = ui
             .add(
                 egui::Button::new(if recording {
@@ -212,18 +221,35 @@ impl Player {
             .on_hover_text("Film the making from the first step to a WebM video");
         frame.control("player-record", &record);
         if record.clicked() {
+            // The row and the status line change with it: drawn again at once.
+            ui.ctx().request_repaint();
             if recording {
                 self.finish_recording(frame);
             } else {
-                match crate::media::recorder::Recorder::start(30.0) {
+                match Recorder::start(30.0) {
                     Ok(r) => {
-                        self.recorder = Some(r);
+                        self.recording = Some((r, Phase::Forward));
                         *seek = Some((0.0, true));
                         frame.info("recording the making: the video downloads at the end");
                     }
                     Err(e) => frame.error(e),
                 }
             }
+        }
+        if !recording {
+            let hold = ui
+                .add(
+                    egui::DragValue::new(&mut self.ending.hold)
+                        .range(0.0..=MAX_HOLD_S)
+                        .speed(0.1)
+                        .suffix(" s hold"),
+                )
+                .on_hover_text("Seconds the video stays on the finished design");
+            frame.control("player-hold", &hold);
+            let reverse = ui
+                .checkbox(&mut self.ending.reverse, "reverse")
+                .on_hover_text("Then the making backwards, so the video loops without a jump");
+            frame.control("player-reverse", &reverse);
         }
     }
 
@@ -292,7 +318,7 @@ impl Player {
     /// Ends a recording (its video downloads) once the player stops at the end or is
     /// closed, or when asked.
     pub fn finish_recording(&mut self, frame: &mut Frame<'_>) {
-        if let Some(r) = self.recorder.take() {
+        if let Some((r, _)) = self.recording.take() {
             let design = frame.editor.history.design();
             let name = crate::store::export::export_file_name(
                 design,
@@ -304,10 +330,36 @@ impl Player {
         }
     }
 
-    /// Called every frame: a recording ends with the player.
-    pub fn follow_recording(&mut self, frame: &mut Frame<'_>) {
-        if self.recorder.is_some() && frame.editor.playback.is_none_or(|p| !p.playing) {
-            self.finish_recording(frame);
+    /// Called every frame: a recording follows the player — at the end the hold, then
+    /// the way back if chosen, and it ends with the player.
+    pub fn follow_recording(&mut self, ctx: &egui::Context, frame: &mut Frame<'_>) {
+        let Some((_, phase)) = &self.recording else {
+            return;
+        };
+        let steps = frame.editor.history.design().gesture_sizes().len();
+        let player = frame
+            .editor
+            .playback
+            .map(|p| (p.playing, p.position() >= steps as f64));
+        let now = ctx.input(|i| i.time);
+        match phase.next(self.ending, player, now) {
+            Next::Go(next) => {
+                if let Some((_, phase)) = &mut self.recording {
+                    *phase = next;
+                }
+                if let Phase::Holding { until } = next {
+                    ctx.request_repaint_after(std::time::Duration::from_secs_f64(
+                        (until - now).max(0.0),
+                    ));
+                }
+            }
+            Next::PlayBackward => {
+                if let Some((_, phase)) = &mut self.recording {
+                    *phase = Phase::Backward;
+                }
+                frame.act(Action::PlayBackward);
+            }
+            Next::Finish => self.finish_recording(frame),
         }
     }
 

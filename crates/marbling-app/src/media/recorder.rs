@@ -113,3 +113,138 @@ mod web {
         }
     }
 }
+
+/// How a recording of the making ends so that the video loops: the finished design held
+/// for `hold` seconds, then with `reverse` the making played backwards to the bare tank.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LoopEnding {
+    /// Seconds on the finished design (0 to [`MAX_HOLD_S`]).
+    pub hold: f64,
+    /// Whether the making plays backwards after the hold.
+    pub reverse: bool,
+}
+
+/// The longest hold offered, seconds.
+pub const MAX_HOLD_S: f64 = 10.0;
+
+impl Default for LoopEnding {
+    fn default() -> Self {
+        Self {
+            hold: 1.0,
+            reverse: false,
+        }
+    }
+}
+
+/// Where a recording is in the making.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Phase {
+    /// The making plays forward.
+    Forward,
+    /// The finished design is held until `until` (seconds of the UI clock).
+    Holding {
+        /// When the hold ends.
+        until: f64,
+    },
+    /// The making plays backwards.
+    Backward,
+}
+
+/// What a recording does after [`Phase::next`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Next {
+    /// Goes on in this phase (the same or a new one).
+    Go(Phase),
+    /// Starts playing the making backwards from the end.
+    PlayBackward,
+    /// Stops; the video downloads.
+    Finish,
+}
+
+impl Phase {
+    /// The next step of a recording in this phase, `ending` as chosen: `playing` and
+    /// `at_end` describe the player (`None`: closed), `now` the UI clock (s). A player
+    /// paused or closed before the end finishes the recording where it is.
+    pub fn next(self, ending: LoopEnding, player: Option<(bool, bool)>, now: f64) -> Next {
+        let after_hold = if ending.reverse {
+            Next::PlayBackward
+        } else {
+            Next::Finish
+        };
+        match (self, player) {
+            (_, None) => Next::Finish,
+            (Phase::Forward | Phase::Backward, Some((true, _))) => Next::Go(self),
+            (Phase::Forward, Some((false, true))) if ending.hold > 0.0 => {
+                Next::Go(Phase::Holding {
+                    until: now + ending.hold,
+                })
+            }
+            (Phase::Forward, Some((false, true))) => after_hold,
+            (Phase::Holding { until }, Some(_)) if now < until => Next::Go(self),
+            (Phase::Holding { .. }, Some(_)) => after_hold,
+            (Phase::Forward | Phase::Backward, Some((false, _))) => Next::Finish,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_looping_recording_plays_holds_reverses_and_stops() {
+        let looping = LoopEnding {
+            hold: 1.5,
+            reverse: true,
+        };
+        let playing = Some((true, false));
+        let at_end = Some((false, true));
+        assert_eq!(
+            Phase::Forward.next(looping, playing, 0.0),
+            Next::Go(Phase::Forward)
+        );
+        let hold = Phase::Holding { until: 11.5 };
+        assert_eq!(Phase::Forward.next(looping, at_end, 10.0), Next::Go(hold));
+        assert_eq!(hold.next(looping, at_end, 11.0), Next::Go(hold));
+        assert_eq!(hold.next(looping, at_end, 11.5), Next::PlayBackward);
+        assert_eq!(
+            Phase::Backward.next(looping, playing, 12.0),
+            Next::Go(Phase::Backward)
+        );
+        assert_eq!(
+            Phase::Backward.next(looping, Some((false, false)), 13.0),
+            Next::Finish
+        );
+        // Without reverse the hold ends it; without a hold the end does.
+        let held = LoopEnding {
+            hold: 1.0,
+            reverse: false,
+        };
+        assert_eq!(
+            Phase::Holding { until: 1.0 }.next(held, at_end, 2.0),
+            Next::Finish
+        );
+        let plain = LoopEnding {
+            hold: 0.0,
+            reverse: false,
+        };
+        assert_eq!(Phase::Forward.next(plain, at_end, 0.0), Next::Finish);
+        assert_eq!(
+            Phase::Forward.next(
+                LoopEnding {
+                    hold: 0.0,
+                    reverse: true
+                },
+                at_end,
+                0.0
+            ),
+            Next::PlayBackward
+        );
+        // Paused early or closed: it stops where it is.
+        assert_eq!(
+            Phase::Forward.next(looping, Some((false, false)), 0.0),
+            Next::Finish
+        );
+        assert_eq!(hold.next(looping, None, 0.0), Next::Finish);
+    }
+}
