@@ -135,11 +135,54 @@ describe('v3 tools on webgl2', () => {
     console.log(`tools: app vs CLI: ${(100 * frac).toFixed(3)} % of ${w}×${h} px differ by > 24/255`);
     assert.ok(frac <= 0.01, `${(100 * frac).toFixed(2)} % of pixels differ from the CLI render`);
 
+    assert.equal(drops.radius, 9, 'a mouse (no pressure) changed the drop size');
+
     // Each tool was one undo step.
     for (let k = 1; k <= 6; k++) {
       await page.keyboard.press('Control+z');
       await waitOps(page, n - k);
     }
+    n -= 6;
+
+    // A pen: its pressure sets the drop size and the stylus wake, kept in the ops.
+    // Synthetic pointer events with pressure, as a pen sends them (0.5, a device
+    // without pressure, is the set size; 1.0 twice it; 0.2 is 0.4 of it).
+    const pen = (type, q, pressure) => page.evaluate(({ type, x, y, pressure }) => {
+      const canvas = document.getElementById('marbling_canvas');
+      const buttons = type === 'pointerup' || pressure === 0 ? 0 : 1;
+      canvas.dispatchEvent(new PointerEvent(type, {
+        clientX: x, clientY: y, pressure, pointerType: 'pen', pointerId: 9, isPrimary: true,
+        button: type === 'pointermove' ? -1 : 0, buttons, bubbles: true, cancelable: true, composed: true,
+      }));
+      // A browser follows a pen's pointermove with a compatibility mousemove (egui's).
+      if (type === 'pointermove') canvas.dispatchEvent(new MouseEvent('mousemove', { clientX: x, clientY: y, buttons, bubbles: true, cancelable: true, composed: true }));
+    }, { type, x: q.x, y: q.y, pressure });
+    await clickControl(page, 'tool-drop');
+    const at = p(150, 100);
+    await pen('pointermove', at, 0);
+    await page.waitForTimeout(100);
+    await pen('pointerdown', at, 1.0);
+    await page.waitForTimeout(100);
+    await pen('pointerup', at, 0);
+    await waitOps(page, n + 1);
+    await clickControl(page, 'tool-stylus');
+    const line = [];
+    for (let i = 0; i <= 8; i++) line.push(p(40 + 25 * i, 60 + 10 * i));
+    await pen('pointermove', line[0], 0);
+    await page.waitForTimeout(100);
+    await pen('pointerdown', line[0], 0.2);
+    for (const q of line.slice(1)) {
+      await page.waitForTimeout(60);
+      await pen('pointermove', q, 0.2);
+    }
+    await page.waitForTimeout(60);
+    await pen('pointerup', line.at(-1), 0);
+    await waitOps(page, n + 2);
+    const pressed = JSON.parse((await download(page, 'save-json')).bytes.toString('utf8'));
+    const [penDrops, ...strokes] = pressed.ops.slice(n);
+    assert.equal(penDrops.type, 'drops');
+    assert.equal(penDrops.radius, 18, 'a full press did not double the drop (9 px set)');
+    assert.ok(strokes.length >= 1 && strokes.every((o) => o.type === 'stylus' && o.wake === 1.6), `a light pen's wake is not 0.4 × 4 px: ${JSON.stringify(strokes.map((o) => o.wake))}`);
     assert.deepEqual(errors, []);
     await context.close();
   });

@@ -101,6 +101,8 @@ impl MarblingApp {
         let switch = crate::fast_paint::Switch::from_flag(platform::query("fast_paint").as_deref());
         app.rendering.fast_paint = crate::fast_paint::FastPaint::new(switch, adapter.as_ref());
         autosave::flush_on_page_hide();
+        // Starts listening for a pen's pressure before the first press.
+        let _ = platform::pointer_pressure();
         platform::on_paste_image(app.panels.pictures.slot().clone(), cc.egui_ctx.clone());
         if let Some(parked) = recovery::take_parked() {
             app.unpark(parked);

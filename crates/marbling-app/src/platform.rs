@@ -59,6 +59,40 @@ mod imp {
         CHANGED.swap(false, std::sync::atomic::Ordering::SeqCst)
     }
 
+    /// The pressure of the pen or finger on the screen, 0..=1, from the latest
+    /// `pointerdown` or `pointermove` (read before egui's own handlers, in the capture
+    /// phase); `None` for a mouse, which has none.
+    pub fn pointer_pressure() -> Option<f64> {
+        use std::sync::atomic::{AtomicU64, Ordering};
+        use wasm_bindgen::closure::Closure;
+        /// The latest pressure's f64 bits; NaN: a mouse, or nothing yet.
+        static PRESSURE: AtomicU64 = AtomicU64::new(0x7ff8_0000_0000_0000);
+        static WATCHING: std::sync::Once = std::sync::Once::new();
+        WATCHING.call_once(|| {
+            let Some(w) = window() else { return };
+            let felt = Closure::<dyn Fn(web_sys::PointerEvent)>::new(|e: web_sys::PointerEvent| {
+                let p = if e.pointer_type() == "mouse" {
+                    f64::NAN
+                } else {
+                    f64::from(e.pressure())
+                };
+                PRESSURE.store(p.to_bits(), Ordering::SeqCst);
+            });
+            let options = web_sys::AddEventListenerOptions::new();
+            options.set_capture(true);
+            for kind in ["pointerdown", "pointermove"] {
+                let _ = w.add_event_listener_with_callback_and_add_event_listener_options(
+                    kind,
+                    felt.as_ref().unchecked_ref(),
+                    &options,
+                );
+            }
+            felt.forget();
+        });
+        let p = f64::from_bits(PRESSURE.load(std::sync::atomic::Ordering::SeqCst));
+        p.is_finite().then_some(p)
+    }
+
     /// The address that share links start with (the page without its fragment).
     pub fn base_url() -> String {
         window()
@@ -392,6 +426,11 @@ mod imp {
         storage.set_string(key, value.to_owned());
         storage.flush();
         Ok(())
+    }
+
+    /// A pen's pressure: the desktop app reads none (egui gives no pen pressure).
+    pub fn pointer_pressure() -> Option<f64> {
+        None
     }
 
     /// Milliseconds since 1970.

@@ -420,8 +420,8 @@ mod tests {
                 };
                 let jitter = ((x * 7 + y * 13) % 5) as u8;
                 let i = ((y * w + x) * 4) as usize;
-                for ch in 0..3 {
-                    img.pixels[i + ch] = base[ch].saturating_add(jitter).saturating_sub(2);
+                for (px, b) in img.pixels[i..i + 3].iter_mut().zip(base) {
+                    *px = b.saturating_add(jitter).saturating_sub(2);
                 }
             }
         }

@@ -245,11 +245,18 @@ impl MarblingApp {
         }
         if let Some(active) = &mut self.editor.active {
             if down {
+                let scale = if self.prefs.settings.pressure {
+                    crate::marbling::tools::pressure_scale(crate::platform::pointer_pressure())
+                } else {
+                    1.0
+                };
                 if let Some(p) = pos.map(to_design)
                     && active.gesture.end() != p
                 {
                     active.gesture.path.push(p);
+                    active.gesture.scales.push(scale);
                 }
+                active.gesture.feel(scale);
                 active.gesture.held_seconds += dt;
                 ui.ctx().request_repaint();
             }

@@ -5,11 +5,11 @@
 use marbling_core::{MAX_STYLUS_POINTS, MAX_STYLUS_WORK, Point, Stylus, sub_steps_of};
 use std::sync::Arc;
 
-/// `path` with points dropped while every dropped point stays within `tolerance` of
-/// the polyline kept (first and last points always kept).
-pub fn simplify(path: &[Point], tolerance: f64) -> Vec<Point> {
+/// The indices of the points of `path` kept while every dropped point stays within
+/// `tolerance` of the polyline kept (first and last points always kept), in order.
+pub fn simplify_indices(path: &[Point], tolerance: f64) -> Vec<usize> {
     if path.len() <= 2 {
-        return path.to_vec();
+        return (0..path.len()).collect();
     }
     let mut keep = vec![false; path.len()];
     keep[0] = true;
@@ -36,10 +36,45 @@ pub fn simplify(path: &[Point], tolerance: f64) -> Vec<Point> {
             stack.push((worst.1, b));
         }
     }
-    path.iter()
-        .zip(keep)
-        .filter_map(|(p, k)| k.then_some(*p))
+    keep.iter()
+        .enumerate()
+        .filter_map(|(i, &k)| k.then_some(i))
         .collect()
+}
+
+/// Relative change of the pressure scale that starts a new stylus piece.
+const PRESSURE_STEP: f64 = 0.15;
+
+/// Stylus ops along `path` (simplified) whose wake follows the pen: `scales[i]` is the
+/// pressure scale at point `i` (see `tools::pressure_scale`); the path is cut where the
+/// scale has moved by more than 15 % from the piece's first new point, and each piece's ops get
+/// `wake` × the mean scale of its points (pieces share their end points).
+pub fn pressed_stylus_ops(
+    path: &[Point],
+    scales: &[f64],
+    wake: f64,
+    tips: Option<Arc<[f64]>>,
+) -> Vec<Stylus> {
+    let mut out = Vec::new();
+    let mut begin = 0;
+    while begin + 1 < path.len() {
+        // The piece's first new point sets the scale its others stay near.
+        let scale = |i: usize| scales.get(i).copied().unwrap_or(1.0);
+        let first = scale(begin + 1);
+        let mut end = begin + 1;
+        while end + 1 < path.len() && (scale(end + 1) - first).abs() <= PRESSURE_STEP * first {
+            end += 1;
+        }
+        let piece = &scales[begin.min(scales.len())..(end + 1).min(scales.len())];
+        let mean = if piece.is_empty() {
+            1.0
+        } else {
+            piece.iter().sum::<f64>() / piece.len() as f64
+        };
+        out.extend(stylus_ops(&path[begin..=end], wake * mean, tips.clone()));
+        begin = end;
+    }
+    out
 }
 
 /// Stylus ops along `path` (already simplified): one op while it fits the limits
@@ -109,7 +144,10 @@ mod tests {
                 Point::new(300.0 * t, 40.0 * (6.0 * t).sin())
             })
             .collect();
-        let kept = simplify(&path, 0.5);
+        let kept: Vec<Point> = simplify_indices(&path, 0.5)
+            .into_iter()
+            .map(|i| path[i])
+            .collect();
         assert!(kept.len() < 60, "{}", kept.len());
         assert_eq!((kept.first(), kept.last()), (path.first(), path.last()));
         for p in &path {
@@ -123,6 +161,31 @@ mod tests {
                 .fold(f64::INFINITY, f64::min);
             assert!(d <= 0.5 + 1e-9, "{p:?} is {d} from the simplified path");
         }
+    }
+
+    #[test]
+    fn pen_pressure_sets_each_pieces_wake() {
+        // Light for the first half, hard for the second: two pieces meeting at x = 100,
+        // their wakes the set wake times the mean scale of their points.
+        let path: Vec<Point> = (0..=20)
+            .map(|i| Point::new(10.0 * f64::from(i), 0.0))
+            .collect();
+        let scales: Vec<f64> = (0..=20).map(|i| if i <= 10 { 0.5 } else { 2.0 }).collect();
+        let ops = pressed_stylus_ops(&path, &scales, 6.0, None);
+        assert_eq!(ops.len(), 2, "{ops:?}");
+        assert_eq!(
+            (ops[0].wake, ops[0].path.last()),
+            (3.0, Some(&Point::new(100.0, 0.0)))
+        );
+        assert_eq!(
+            (ops[1].path[0], ops[1].path.last()),
+            (Point::new(100.0, 0.0), Some(&Point::new(200.0, 0.0)))
+        );
+        // 10 points at 2.0 and the shared one at 0.5.
+        assert!((ops[1].wake - 6.0 * (10.0 * 2.0 + 0.5) / 11.0).abs() < 1e-12);
+        // No pen: one piece at the set wake, as before.
+        let plain = pressed_stylus_ops(&path, &[1.0; 21], 6.0, None);
+        assert_eq!(plain, stylus_ops(&path, 6.0, None));
     }
 
     #[test]

@@ -19,6 +19,8 @@ pub(crate) fn ui(ui: &mut egui::Ui, frame: &mut Frame<'_>) {
             frame.control(format!("tool-{}", t.name()), &button);
         }
     });
+    // The pen-pressure box's response, named after `s` is done with the prefs.
+    let mut pressure_control = None;
     let s = &mut frame.prefs.settings;
     match frame.prefs.tool {
         ToolKind::Drop => {
@@ -51,6 +53,10 @@ pub(crate) fn ui(ui: &mut egui::Ui, frame: &mut Frame<'_>) {
                 ui.checkbox(&mut s.cycle_colors, "cycle colours")
                     .on_hover_text("each drop takes the next colour of the palette");
             });
+            let pressure = ui
+                .checkbox(&mut s.pressure, "pen pressure")
+                .on_hover_text("a pen pressed harder (or a finger's force) makes the drop up to twice as large, a light touch down to a quarter");
+            pressure_control = Some(pressure);
             match s.drop_pattern {
                 DropPattern::Single => {}
                 DropPattern::Line | DropPattern::Coil => {
@@ -98,6 +104,10 @@ pub(crate) fn ui(ui: &mut egui::Ui, frame: &mut Frame<'_>) {
                     .logarithmic(true),
             );
             ui.add(Slider::new(&mut s.stylus_tips, 1..=32).text("tips"));
+            let pressure = ui
+                .checkbox(&mut s.pressure, "pen pressure")
+                .on_hover_text("a pen pressed harder widens the wake up to twice, a light touch narrows it to a quarter");
+            pressure_control = Some(pressure);
             if s.stylus_tips > 1 {
                 ui.add(
                     Slider::new(&mut s.stylus_spacing, 1.0..=400.0)
@@ -195,6 +205,9 @@ pub(crate) fn ui(ui: &mut egui::Ui, frame: &mut Frame<'_>) {
                     .logarithmic(true),
             );
         }
+    }
+    if let Some(r) = pressure_control {
+        frame.control("tool-pressure", &r);
     }
     egui::ComboBox::from_label("antialiasing")
         .selected_text(frame.prefs.antialias.name())

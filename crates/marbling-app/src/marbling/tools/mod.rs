@@ -176,6 +176,8 @@ pub struct ToolSettings {
     pub jiggle_along: f64,
     /// Jiggle amplitude across the drag.
     pub jiggle_across: f64,
+    /// A pen's pressure (or a finger's force) scales the drop size and the stylus wake.
+    pub pressure: bool,
 }
 
 impl Default for ToolSettings {
@@ -213,6 +215,7 @@ impl Default for ToolSettings {
             jiggle_wavelength: 120.0,
             jiggle_along: 5.0,
             jiggle_across: 12.0,
+            pressure: true,
         }
     }
 }
@@ -229,6 +232,20 @@ pub struct Gesture {
     /// Design pixels per screen pixel when it began (a free-hand path is kept within
     /// half a screen pixel).
     pub pixel: f64,
+    /// The pressure scale at each point of `path` ([`pressure_scale`]; 1 without a pen).
+    pub scales: Vec<f64>,
+    /// The largest pressure scale felt while the button was down; 0 before any.
+    pub peak_scale: f64,
+}
+
+/// The size factor of a pointer's pressure `p` (0..=1; a mouse has none): 0.5, what a
+/// device without pressure reports, is the set size; full pressure doubles it; the
+/// lightest touch gives a quarter.
+pub fn pressure_scale(p: Option<f64>) -> f64 {
+    match p {
+        Some(p) if p.is_finite() && p > 0.0 => (2.0 * p).clamp(0.25, 2.0),
+        _ => 1.0,
+    }
 }
 
 impl Gesture {
@@ -239,6 +256,25 @@ impl Gesture {
             path: vec![p],
             held_seconds: 0.0,
             pixel: 1.0,
+            scales: vec![1.0],
+            peak_scale: 0.0,
+        }
+    }
+
+    /// The gesture as the pen presses with scale `scale` now (the latest point's).
+    pub fn feel(&mut self, scale: f64) {
+        self.peak_scale = self.peak_scale.max(scale);
+        if let Some(last) = self.scales.last_mut() {
+            *last = scale;
+        }
+    }
+
+    /// What a drop's size is multiplied by: the hardest press felt (1 with none).
+    pub fn size_scale(&self) -> f64 {
+        if self.peak_scale > 0.0 {
+            self.peak_scale
+        } else {
+            1.0
         }
     }
 
@@ -341,7 +377,7 @@ fn unrounded_ops(
         ToolKind::Drop if s.drop_pattern == DropPattern::Single => {
             vec![Op::Drop(Drop {
                 center: a,
-                radius: drop_radius(s, g.held_seconds),
+                radius: drop_radius(s, g.held_seconds) * g.size_scale(),
                 color,
             })]
         }
@@ -349,7 +385,7 @@ fn unrounded_ops(
             let centers = drop_centers(s, a, b, seed);
             vec![Op::Drops(DropSet {
                 centers: centers.into(),
-                radii: Radii::One(drop_radius(s, g.held_seconds)),
+                radii: Radii::One(drop_radius(s, g.held_seconds) * g.size_scale()),
                 colors: if s.cycle_colors && !inks.is_empty() {
                     inks.into()
                 } else {
@@ -359,11 +395,16 @@ fn unrounded_ops(
         }
         ToolKind::Spray => spray(s, g, color, seed),
         ToolKind::Stylus => {
-            let path = stroke::simplify(&g.path, 0.5 * g.pixel);
-            if path.len() < 2 {
+            let kept = stroke::simplify_indices(&g.path, 0.5 * g.pixel);
+            if kept.len() < 2 {
                 return Vec::new();
             }
-            stroke::stylus_ops(&path, s.stylus_wake.max(0.5), stylus_tips(s))
+            let path: Vec<Point> = kept.iter().map(|&i| g.path[i]).collect();
+            let scales: Vec<f64> = kept
+                .iter()
+                .map(|&i| g.scales.get(i).copied().unwrap_or(1.0))
+                .collect();
+            stroke::pressed_stylus_ops(&path, &scales, s.stylus_wake.max(0.5), stylus_tips(s))
                 .into_iter()
                 .map(Op::Stylus)
                 .collect()

@@ -247,3 +247,23 @@ fn tool_names_are_their_stored_names() {
         );
     }
 }
+
+#[test]
+fn pressure_scales_the_drop_it_pressed() {
+    assert_eq!(pressure_scale(None), 1.0);
+    assert_eq!(pressure_scale(Some(0.5)), 1.0);
+    assert_eq!(pressure_scale(Some(1.0)), 2.0);
+    assert_eq!(pressure_scale(Some(0.05)), 0.25);
+    assert_eq!(pressure_scale(Some(f64::NAN)), 1.0);
+    let s = ToolSettings::default();
+    let mut g = Gesture::new(Point::new(5.0, 6.0));
+    g.feel(pressure_scale(Some(0.75)));
+    g.feel(pressure_scale(Some(1.0)));
+    g.feel(pressure_scale(Some(0.6)));
+    // The hardest press of the hold sets the size.
+    let ops = ops_for(ToolKind::Drop, &s, &g, &[Rgb8::new(1, 2, 3)], 0);
+    match ops.first() {
+        Some(Op::Drop(d)) => assert_eq!(d.radius, s.drop_radius * 2.0),
+        other => panic!("not a drop: {other:?}"),
+    }
+}
