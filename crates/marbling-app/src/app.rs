@@ -458,8 +458,13 @@ impl eframe::App for MarblingApp {
             }
         };
         if side_panel {
+            // No margin under the scroll area: a control at the screen's bottom edge is
+            // cut by the screen, never hidden in a band the scroll area does not show
+            // (where `data-controls` would list it as if on screen).
+            let mut panel_frame = egui::Frame::side_top_panel(ui.style());
+            panel_frame.inner_margin.bottom = 0;
             egui::Panel::left("marbling_tools")
-                .frame(egui::Frame::side_top_panel(ui.style()))
+                .frame(panel_frame)
                 .resizable(false)
                 // The dark canvas marks the edge; a line would be one more draw call a
                 // frame.

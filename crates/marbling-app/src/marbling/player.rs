@@ -236,7 +236,9 @@ impl Player {
                 }
             }
         }
-        if !recording {
+        // A landscape phone keeps its player to two rows (the canvas needs the height):
+        // it records with the hold and direction set elsewhere.
+        if !recording && frame.layout != crate::shell::layout::Layout::Landscape {
             let hold = ui
                 .add(
                     egui::DragValue::new(&mut self.ending.hold)

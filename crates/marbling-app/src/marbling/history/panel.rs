@@ -87,7 +87,7 @@ impl HistoryPanel {
             let row = row_height + ui.spacing().item_spacing.y;
             list = list.vertical_scroll_offset(((shown + 1) as f32 * row - LIST_HEIGHT).max(0.0));
         }
-        list.show_rows(ui, row_height, rows, |ui, rows| {
+        let shown_list = list.show_rows(ui, row_height, rows, |ui, rows| {
             for i in rows {
                 if i > n {
                     let j = i - n - 1;
@@ -115,8 +115,13 @@ impl HistoryPanel {
                 rows_drawn.push((format!("history-{i}"), r));
             }
         });
+        // Rows the list's own scrolling hides are not listed (they are not where they
+        // would be clicked); one in the list's window but past the screen is.
+        let window = shown_list.inner_rect.y_range();
         for (name, r) in rows_drawn {
-            frame.control(name, &r);
+            if window.contains(r.rect.center().y) {
+                frame.control(name, &r);
+            }
         }
         if let Some(k) = clicked {
             frame.act(Action::View(Some(k)));
