@@ -69,6 +69,20 @@ fn pattern_lists_writes_and_varies_the_recipes() {
     fails_with(&["pattern", "chevron"], "give the output file with -o");
 }
 
+/// `marbling render design --width 96` into `dir/name`, decoded.
+fn render_at_96(dir: &std::path::Path, design: &str, name: &str) -> RgbaImage {
+    let out = dir.join(name);
+    ok(&[
+        "render",
+        design,
+        "-o",
+        out.to_str().expect("utf-8 path"),
+        "--width",
+        "96",
+    ]);
+    RgbaImage::from_png(&std::fs::read(&out).expect("png")).expect("decode")
+}
+
 /// Decodes every frame of an APNG.
 fn apng_frames(bytes: &[u8]) -> (u32, Vec<RgbaImage>) {
     let mut reader = png::Decoder::new(std::io::Cursor::new(bytes))
@@ -111,16 +125,7 @@ fn animate_writes_the_frames_and_ends_on_the_render() {
     assert!(out.contains("6 frames of 96×60 px"), "{out}");
     let (declared, frames) = apng_frames(&std::fs::read(&apng).expect("written"));
     assert_eq!((declared, frames.len()), (6, 6));
-    let still = dir.join("hearts-still.png");
-    ok(&[
-        "render",
-        design,
-        "-o",
-        still.to_str().expect("utf-8 path"),
-        "--width",
-        "96",
-    ]);
-    let still = RgbaImage::from_png(&std::fs::read(&still).expect("png")).expect("decode");
+    let still = render_at_96(&dir, design, "hearts-still.png");
     let last = frames.last().expect("a frame");
     let diff = compare(&still, last, 2).expect("same size").fraction();
     assert!(
@@ -240,16 +245,7 @@ fn a_looping_animation_holds_the_design_then_plays_back_to_the_start() {
         "the loop's last frame repeats the first"
     );
     // The turning point is the finished design, shown 1/3 s + the hold.
-    let still = dir.join("loop-still.png");
-    ok(&[
-        "render",
-        design,
-        "-o",
-        still.to_str().expect("utf-8 path"),
-        "--width",
-        "96",
-    ]);
-    let still = RgbaImage::from_png(&std::fs::read(&still).expect("png")).expect("decode");
+    let still = render_at_96(&dir, design, "loop-still.png");
     assert!(
         compare(&still, &frames[5], 2)
             .expect("same size")
