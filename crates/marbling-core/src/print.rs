@@ -168,6 +168,9 @@ pub enum PrintError {
     /// The DPI is outside [`DPI_RANGE`].
     #[error("the DPI must be 10 to 4800, got {0}")]
     BadDpi(f64),
+    /// The bleed is not a length.
+    #[error("expected a bleed like 3mm, 0.3cm or 0.125in, got {0:?}")]
+    BadBleedText(String),
     /// The bleed is outside [`BLEED_RANGE_MM`].
     #[error("the bleed must be 0 to 50 mm, got {0} mm")]
     BadBleed(f64),
@@ -271,7 +274,7 @@ pub fn parse_bleed(s: &str) -> Result<f64, PrintError> {
     let mm = number
         .trim()
         .parse::<f64>()
-        .map_err(|_| PrintError::BadBleed(f64::NAN))?
+        .map_err(|_| PrintError::BadBleedText(s.trim().to_owned()))?
         * unit.mm();
     if !(mm.is_finite() && BLEED_RANGE_MM.contains(&mm)) {
         return Err(PrintError::BadBleed(mm));
@@ -308,7 +311,11 @@ mod tests {
         assert_eq!(parse_bleed("3mm"), Ok(3.0));
         assert_eq!(parse_bleed("3"), Ok(3.0));
         assert!((parse_bleed("0.125in")? - 3.175).abs() < 1e-12);
-        assert!(parse_bleed("-1mm").is_err() && parse_bleed("wide").is_err());
+        assert_eq!(parse_bleed("-1mm"), Err(PrintError::BadBleed(-1.0)));
+        assert_eq!(
+            parse_bleed(" wide "),
+            Err(PrintError::BadBleedText("wide".to_owned()))
+        );
         Ok(())
     }
 

@@ -106,6 +106,13 @@ pub const MAX_APP_EXPORT_SIDE: u32 = 16_384;
 /// Most pixels of an export in the app: 512 MiB of RGBA held while it is encoded.
 pub const MAX_APP_EXPORT_PIXELS: u64 = 128 * 1024 * 1024;
 
+/// Whether an export of `width` × `height` px is within what the app holds
+/// ([`MAX_APP_EXPORT_SIDE`], [`MAX_APP_EXPORT_PIXELS`]).
+pub fn fits_in_app(width: u32, height: u32) -> bool {
+    width.max(height) <= MAX_APP_EXPORT_SIDE
+        && u64::from(width) * u64::from(height) <= MAX_APP_EXPORT_PIXELS
+}
+
 /// An export in progress.
 pub struct PngExport {
     renderer: ExactRenderer,
@@ -163,8 +170,7 @@ impl PngExport {
     ) -> Result<Self, String> {
         window.check().map_err(|e| e.to_string())?;
         let (width, height, scale) = (window.width, window.height, window.scale);
-        let pixels = u64::from(width) * u64::from(height);
-        if width.max(height) > MAX_APP_EXPORT_SIDE || pixels > MAX_APP_EXPORT_PIXELS {
+        if !fits_in_app(width, height) {
             return Err(format!(
                 "{width}×{height} px is more than the app can hold ({MAX_APP_EXPORT_SIDE} px on the long side, {} megapixels); the CLI streams any size: marbling render --print",
                 MAX_APP_EXPORT_PIXELS / 1_000_000

@@ -5,7 +5,7 @@
 //! `marbling render --print SIZE --dpi D --bleed B` at the GPU's precision.
 
 use crate::frame::Frame;
-use crate::store::export::{MAX_APP_EXPORT_PIXELS, MAX_APP_EXPORT_SIDE};
+use crate::store::export::{MAX_APP_EXPORT_PIXELS, MAX_APP_EXPORT_SIDE, fits_in_app};
 use egui::RichText;
 use marbling_core::Design;
 use marbling_core::print::{
@@ -162,7 +162,7 @@ impl PrintPanel {
         let print = self.print(design);
         let (w, h) = print.pixels();
         let pixels = u64::from(w) * u64::from(h);
-        let fits = w.max(h) <= MAX_APP_EXPORT_SIDE && pixels <= MAX_APP_EXPORT_PIXELS;
+        let fits = fits_in_app(w, h);
         ui.label(
             RichText::new(format!(
                 "{} × {} mm · {w} × {h} px · {} MB",
