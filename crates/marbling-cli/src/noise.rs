@@ -1,13 +1,18 @@
 //! `marbling noise`: evaluates a noise spec (JSON) to a PNG of up to 16384² pixels, 8 or
 //! 16 bits per sample, greyscale 0.5 + n/6 (n at zero mean and unit variance, clamped; or
-//! the spec's transfer) or coloured when the spec has a palette or blend. Data sets a
+//! the spec's transfer) or coloured when the spec has a palette or blend; or, with
+//! `--map height|normal`, a 16-bit height or tangent-space normal map of that intensity
+//! (`marbling_noise::SurfaceMap`, relief `--relief` pixels). Data sets a
 //! spec names (`"data": "wind.png"`, a PNG or a CSV grid) are read from paths relative
 //! to the spec file; `weather` is built in.
 
 use crate::input::{display_name, read_text};
 use anyhow::{Context, Result, bail};
 use clap::Args;
-use marbling_noise::{DataGrid, Depth, MAX_SIZE, NoiseSpec, Renderer, SpecError};
+use marbling_noise::{
+    DataGrid, Depth, MAX_SIZE, NoiseSpec, PngContent, Renderer, SURFACE_MAPS, SpecError, SurfaceMap,
+    ranges,
+};
 use std::path::Path;
 use std::sync::Arc;
 
@@ -22,9 +27,17 @@ pub struct NoiseArgs {
     /// Side of the square output, pixels (a tiling spec repeats with this period).
     #[arg(long, default_value_t = 256)]
     size: u32,
-    /// Bits per sample: 8, or 16 for height maps (greyscale or RGB as the spec says).
-    #[arg(long, default_value_t = 8)]
-    depth: u8,
+    /// Bits per sample: 8 (the default), or 16 for height maps (greyscale or RGB as the
+    /// spec says); a `--map` is always 16-bit.
+    #[arg(long)]
+    depth: Option<u8>,
+    /// Write a 16-bit surface map of the intensity instead of the image: `height`
+    /// (greyscale) or `normal` (tangent space, OpenGL: green is up).
+    #[arg(long, value_parser = clap::builder::PossibleValuesParser::new(SURFACE_MAPS))]
+    map: Option<String>,
+    /// Height of intensity 1 above 0 in a normal map, output pixels.
+    #[arg(long, default_value_t = ranges::DEFAULT_RELIEF)]
+    relief: f64,
 }
 
 /// Largest data file read, bytes.
@@ -89,10 +102,14 @@ const ROWS_PER_THREAD: u32 = 16;
 
 /// Renders the image band by band (rows split across all cores) and streams each band
 /// into the PNG encoder, so a 16384² export never holds the whole image.
-fn encode(renderer: &Renderer, depth: Depth, out: impl std::io::Write + 'static) -> Result<()> {
+fn encode(
+    renderer: &Renderer,
+    content: PngContent,
+    out: impl std::io::Write + 'static,
+) -> Result<()> {
     let size = renderer.size();
     let mut stream = renderer
-        .png_encoder(out, depth)
+        .content_encoder(out, content)
         .write_header()
         .context("cannot encode PNG")?
         .into_stream_writer()
@@ -108,7 +125,7 @@ fn encode(renderer: &Renderer, depth: Depth, out: impl std::io::Write + 'static)
                     let hi = (lo + ROWS_PER_THREAD).min(rows.end);
                     s.spawn(move || {
                         (lo..hi)
-                            .flat_map(|j| renderer.png_row(j, depth))
+                            .flat_map(|j| renderer.content_row(j, content))
                             .collect::<Vec<u8>>()
                     })
                 })
@@ -131,15 +148,34 @@ pub fn run(args: &NoiseArgs) -> Result<()> {
     if args.size == 0 || args.size > MAX_SIZE {
         bail!("--size must be in 1..={MAX_SIZE}, got {}", args.size);
     }
-    let depth = match args.depth {
+    let depth = match args.depth.unwrap_or(8) {
         8 => Depth::Eight,
         16 => Depth::Sixteen,
         d => bail!("--depth must be 8 or 16, got {d}"),
+    };
+    let content = match args.map.as_deref() {
+        None => PngContent::Image(depth),
+        Some(_) if args.depth == Some(8) => {
+            bail!("--map writes 16-bit samples; leave out --depth 8")
+        }
+        Some("height") => PngContent::Map(SurfaceMap::Height),
+        Some(_) => {
+            if !ranges::RELIEF.contains(args.relief) {
+                bail!(
+                    "--relief must be above 0 and at most {} pixels, got {}",
+                    ranges::RELIEF.hi,
+                    args.relief
+                );
+            }
+            PngContent::Map(SurfaceMap::Normal {
+                relief: args.relief as f32,
+            })
+        }
     };
     let spec = read_spec(&args.spec)?;
     let renderer = Renderer::new(&spec, args.size)?;
     let file = std::fs::File::create(&args.output)
         .with_context(|| format!("cannot write '{}'", args.output))?;
-    encode(&renderer, depth, std::io::BufWriter::new(file))
+    encode(&renderer, content, std::io::BufWriter::new(file))
         .with_context(|| format!("cannot write '{}'", args.output))
 }

@@ -91,6 +91,7 @@ fn main() {
         period: None,
         orientation_drive: None,
         frequency_drive: None,
+        profile: None,
     });
     // 512² points are enough for a stable per-megapixel time.
     let side = 512;

@@ -1,9 +1,14 @@
 // gabor.wgsl — sparse Gabor noise (Lagae et al. 2009): anisotropic (0), isotropic (1) and
 // random-phase (2) kernels, impulses per cell from the cell stream, orientation and
-// frequency optionally driven by an fBm (keep in sync with
-// crates/marbling-noise/src/gabor.rs). Needs hash.wgsl, perlin.wgsl, value.wgsl, fbm.wgsl.
+// frequency optionally driven by an fBm; phasor noise (Tricard et al. 2019) from the same
+// kernels summed as complex numbers, the phase through a profile (keep in sync with
+// crates/marbling-noise/src/gabor.rs and phasor.rs). Needs hash.wgsl, perlin.wgsl,
+// value.wgsl, fbm.wgsl.
 
 const GABOR_TAU: f32 = 6.2831855;
+const GABOR_INV_PI: f32 = 0.31830987;
+const GABOR_SQRT_2: f32 = 1.4142135;
+const GABOR_SQRT_3: f32 = 1.7320508;
 
 // Keep in sync with `GaborGpu` in crates/marbling-noise/src/wgsl.rs (64 bytes). The
 // driving fBms are separate arguments (in `NoiseUniform`, next to this struct): WebGL2
@@ -24,11 +29,12 @@ struct GaborParams {
     frequency_amount: f32,    // octaves per unit of the driving fBm
     poisson_parts: u32,       // the Poisson draw is split into this many parts
     reach_cells: i32,         // cells searched each way, ceil(R / cell)
-    _pad2: u32,
+    profile: u32,             // 0 Gabor; phasor profile 1 sine, 2 square, 3 saw, 4 triangle
 }
 
-// The un-normalised sum at p (output pixels).
-fn gabor_raw(p: vec2<f32>, g: GaborParams, orientation_drive: FbmParams, frequency_drive: FbmParams) -> f32 {
+// The un-normalised sum at p (output pixels): (real part, imaginary part), the imaginary
+// part summed only for a phasor noise (g.profile != 0).
+fn gabor_raw(p: vec2<f32>, g: GaborParams, orientation_drive: FbmParams, frequency_drive: FbmParams) -> vec2<f32> {
     let u = p.x / g.cell;
     let v = p.y / g.cell;
     let ix = floor_i32(u);
@@ -36,7 +42,7 @@ fn gabor_raw(p: vec2<f32>, g: GaborParams, orientation_drive: FbmParams, frequen
     let fx = (u - f32(ix)) * g.cell;
     let fy = (v - f32(iy)) * g.cell;
     let base = vec2<f32>(cos(g.orientation), sin(g.orientation));
-    var sum = 0.0;
+    var sum = vec2<f32>(0.0, 0.0);
     let reach = g.reach_cells;
     for (var dj = -reach; dj <= reach; dj = dj + 1) {
         for (var di = -reach; di <= reach; di = di + 1) {
@@ -79,15 +85,40 @@ fn gabor_raw(p: vec2<f32>, g: GaborParams, orientation_drive: FbmParams, frequen
                 if (g.drives & 2u) != 0u {
                     f = g.frequency * exp2(g.frequency_amount * fbm(ip, frequency_drive));
                 }
-                sum = sum + w * exp(-g.pi_a2 * r2) * cos(GABOR_TAU * f * (dx * dir.x + dy * dir.y) + phase);
+                let e = w * exp(-g.pi_a2 * r2);
+                let arg = GABOR_TAU * f * (dx * dir.x + dy * dir.y) + phase;
+                if g.profile == 0u {
+                    sum.x = sum.x + e * cos(arg);
+                } else {
+                    sum = sum + e * vec2<f32>(cos(arg), sin(arg));
+                }
             }
         }
     }
     return sum;
 }
 
-// Gabor noise at p, zero mean and unit variance; the drives are read only when
-// `g.drives` says so.
+// A phasor profile (1 sine, 2 square, 3 saw, 4 triangle) of phase phi in (-pi, pi], at
+// unit variance over a uniform phase.
+fn phasor_profile(profile: u32, phi: f32) -> f32 {
+    switch profile {
+        case 1u: { return GABOR_SQRT_2 * sin(phi); }
+        case 2u: { return select(-1.0, 1.0, phi >= 0.0); }
+        case 3u: { return GABOR_SQRT_3 * phi * GABOR_INV_PI; }
+        default: { return GABOR_SQRT_3 * (1.0 - 2.0 * abs(phi) * GABOR_INV_PI); }
+    }
+}
+
+// Gabor or phasor noise at p, zero mean and unit variance; the drives are read only when
+// `g.drives` says so. atan2(0, 0) is 0 where no kernel reaches, as on the CPU.
 fn gabor(p: vec2<f32>, g: GaborParams, orientation_drive: FbmParams, frequency_drive: FbmParams) -> f32 {
-    return gabor_raw(p, g, orientation_drive, frequency_drive) * g.inv_std;
+    let sum = gabor_raw(p, g, orientation_drive, frequency_drive);
+    if g.profile == 0u {
+        return sum.x * g.inv_std;
+    }
+    var phi = 0.0;
+    if sum.x != 0.0 || sum.y != 0.0 {
+        phi = atan2(sum.y, sum.x);
+    }
+    return phasor_profile(g.profile, phi);
 }

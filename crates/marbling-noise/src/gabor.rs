@@ -15,10 +15,13 @@
 //! Units: positions in output pixels, x right, y down; F₀ in cycles per output pixel;
 //! ω₀ in radians from +x towards +y; a in 1/pixels. The result is divided by the
 //! analytical standard deviation ([`GaborParams::variance`]), so it has zero mean and
-//! unit variance. Keep in sync with `shaders/gabor.wgsl`.
+//! unit variance. With a [`PhasorProfile`] the same kernels are summed as complex numbers
+//! and the phase of the sum goes through the profile ([`crate::phasor`]). Keep in sync
+//! with `shaders/gabor.wgsl`.
 
 use crate::field::Field;
 use crate::hash::{CellRng, floor_i32, poisson_split, wrap_cell};
+use crate::phasor::PhasorProfile;
 use std::f32::consts::{PI, TAU};
 use std::sync::Arc;
 
@@ -87,6 +90,8 @@ pub struct GaborParams {
     pub orientation_drive: Option<Drive>,
     /// Optional field driving the frequency.
     pub frequency_drive: Option<Drive>,
+    /// `Some`: phasor noise, the phase of the complex sum through this profile.
+    pub profile: Option<PhasorProfile>,
 }
 
 impl GaborParams {
@@ -178,15 +183,37 @@ impl Gabor {
         -self.exp_neg_part.ln() * self.poisson_parts as f32
     }
 
-    /// The noise at (x, y), output pixels, normalised to zero mean and unit variance.
+    /// The noise at (x, y), output pixels, normalised to zero mean and unit variance: the
+    /// Gabor sum, or the phasor profile of its phase.
     #[must_use]
     pub fn eval(&self, x: f32, y: f32) -> f32 {
-        self.eval_raw(x, y) * self.inv_std
+        match self.params.profile {
+            None => self.eval_raw(x, y) * self.inv_std,
+            Some(profile) => {
+                let (re, im) = self.sum::<true>(x, y);
+                profile.apply(im.atan2(re))
+            }
+        }
     }
 
     /// The un-normalised sum Σ wᵢ g(x − xᵢ).
     #[must_use]
     pub fn eval_raw(&self, x: f32, y: f32) -> f32 {
+        self.sum::<false>(x, y).0
+    }
+
+    /// The phase φ(x) = arg Σ wᵢ g_c(x − xᵢ) of the complex kernels
+    /// g_c = e^(−πa²r²)·e^(i·arg), radians in (−π, π] (0 where no kernel reaches).
+    #[must_use]
+    pub fn phase(&self, x: f32, y: f32) -> f32 {
+        let (re, im) = self.sum::<true>(x, y);
+        im.atan2(re)
+    }
+
+    /// (Σ wᵢ e^(−πa²r²) cos argᵢ, Σ wᵢ e^(−πa²r²) sin argᵢ); the imaginary part only
+    /// when `COMPLEX`.
+    #[inline]
+    fn sum<const COMPLEX: bool>(&self, x: f32, y: f32) -> (f32, f32) {
         let p = &self.params;
         let u = x / self.cell;
         let v = y / self.cell;
@@ -196,6 +223,7 @@ impl Gabor {
         let fy = (v - iy as f32) * self.cell;
         let (cos0, sin0) = (p.orientation.cos(), p.orientation.sin());
         let mut sum = 0.0_f32;
+        let mut sum_im = 0.0_f32;
         let k = self.reach_cells;
         for dj in -k..=k {
             for di in -k..=k {
@@ -231,11 +259,18 @@ impl Gabor {
                     let (ci, si, phase) = self.impulse_frame(px, py, extra, (cos0, sin0));
                     let f = self.impulse_frequency(px, py);
                     let arg = TAU * f * (dx * ci + dy * si) + phase;
-                    sum += w * (-self.pi_a2 * r2).exp() * arg.cos();
+                    let e = w * (-self.pi_a2 * r2).exp();
+                    if COMPLEX {
+                        let (s, c) = arg.sin_cos();
+                        sum += e * c;
+                        sum_im += e * s;
+                    } else {
+                        sum += e * arg.cos();
+                    }
                 }
             }
         }
-        sum
+        (sum, sum_im)
     }
 
     /// (cos ωᵢ, sin ωᵢ, φᵢ) of an impulse at (px, py) with its fourth uniform `extra`.

@@ -3,7 +3,8 @@
 //! see [`wgsl`]), sharing one u32 hash so both give the same pattern for a seed.
 //!
 //! Noises: sparse Gabor (anisotropic, isotropic, random phase; orientation and frequency
-//! optionally driven by another field), Perlin fBm, value noise, Worley (F1, F2, F2 − F1
+//! optionally driven by another field) and phasor noise from the same kernels (sine,
+//! square, saw or triangle profile), Perlin fBm, value noise, Worley (F1, F2, F2 − F1
 //! × Euclidean, Manhattan, Chebyshev), white noise, curl noise, paper and canvas fibers;
 //! tileable variants; transfer functions (thresholds, Khlebnikov et al. (2013)'s spline decay, curves,
 //! HSV value blend) and colour ramps; layers combined by add, multiply, max, min or mask;
@@ -25,8 +26,10 @@ mod field;
 mod gabor;
 pub mod hash;
 mod layer;
+mod maps;
 pub mod noise_gpu;
 mod perlin;
+mod phasor;
 mod ramp;
 pub mod ranges;
 mod render;
@@ -54,7 +57,9 @@ pub use fibers::{
 pub use field::Field;
 pub use gabor::{Drive, GABOR_TRUNCATION, Gabor, GaborKind, GaborParams};
 pub use hash::CellRng;
+pub use maps::{PngContent, SURFACE_MAPS, SurfaceMap, surface_normal};
 pub use layer::{COMBINES, Combine, Layer, MAX_LAYERS};
+pub use phasor::PhasorProfile;
 pub use perlin::{
     GRADIENTS, PERLIN_DERIVATIVE_VARIANCE, PERLIN_VARIANCE, fade, perlin2, perlin2_periodic,
     perlin2_with_gradient,

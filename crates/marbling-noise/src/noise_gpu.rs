@@ -86,8 +86,8 @@ pub struct GaborGpu {
     pub poisson_parts: u32,
     /// Cells searched each way.
     pub reach_cells: i32,
-    /// Padding.
-    pub _pad: u32,
+    /// 0 Gabor; a phasor noise's [`crate::PhasorProfile::index`].
+    pub profile: u32,
 }
 
 /// Host mirror of WGSL `FiberGrid` (fibers.wgsl). Keep in sync.
@@ -252,7 +252,7 @@ impl GaborGpu {
             frequency_amount: fa,
             poisson_parts: g.poisson_parts,
             reach_cells: g.reach_cells,
-            _pad: 0,
+            profile: p.profile.map_or(0, crate::PhasorProfile::index),
         }
     }
 }

@@ -2,7 +2,7 @@
 //! spec parser's checks and for the sliders and menus that set them (the playground's
 //! Noise panel). Frequencies are cycles per output pixel, lengths output pixels.
 
-use crate::{CurlComponent, GaborKind, MAX_OCTAVES, Metric, WorleyFeature};
+use crate::{CurlComponent, GaborKind, MAX_OCTAVES, Metric, PhasorProfile, WorleyFeature};
 use std::ops::RangeInclusive;
 
 /// A parameter's accepted values: `lo < x ≤ hi` when `open_below`, else `lo ≤ x ≤ hi`.
@@ -90,6 +90,18 @@ pub const GABOR_KINDS: [(&str, GaborKind); 3] = [
     ("anisotropic", GaborKind::Anisotropic),
     ("isotropic", GaborKind::Isotropic),
     ("random-phase", GaborKind::RandomPhase),
+];
+/// Relief of a normal map: the height of intensity 1 above 0, output pixels.
+pub const RELIEF: Range = Range::above(0.0, 1024.0);
+/// The relief an editor starts from, output pixels.
+pub const DEFAULT_RELIEF: f64 = 8.0;
+
+/// Phasor `profile` names.
+pub const PHASOR_PROFILES: [(&str, PhasorProfile); 4] = [
+    ("sine", PhasorProfile::Sine),
+    ("square", PhasorProfile::Square),
+    ("saw", PhasorProfile::Saw),
+    ("triangle", PhasorProfile::Triangle),
 ];
 /// Worley `feature` names.
 pub const WORLEY_FEATURES: [(&str, WorleyFeature); 3] = [

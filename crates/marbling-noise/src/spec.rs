@@ -12,6 +12,7 @@ use crate::fbm::FbmParams;
 use crate::fibers::FiberParams;
 use crate::gabor::{Drive, GaborKind, GaborParams};
 use crate::layer::Layer;
+use crate::phasor::PhasorProfile;
 use crate::ramp::{ColorRamp, Rgb};
 use crate::ranges;
 use crate::spec_reader::read_spec;
@@ -22,7 +23,7 @@ use serde_json::Value;
 
 /// Names accepted in `type`.
 pub const NOISE_TYPES: &[&str] = &[
-    "gabor", "perlin", "value", "worley", "white", "curl", "paper", "canvas", "product",
+    "gabor", "phasor", "perlin", "value", "worley", "white", "curl", "paper", "canvas", "product",
 ];
 
 /// Most impulses per kernel a Gabor spec may ask for.
@@ -103,7 +104,7 @@ impl Tile {
 /// The noise a spec evaluates.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Source {
-    /// Sparse Gabor noise ([`crate::Gabor`]).
+    /// Sparse Gabor noise, or phasor noise from the same kernels ([`crate::Gabor`]).
     Gabor(GaborSpec),
     /// fBm of Perlin or value noise ([`crate::Fbm`]); `period` is filled in at build time.
     Fbm(FbmParams),
@@ -138,6 +139,9 @@ pub struct GaborSpec {
     pub orientation_field: Option<DriveSpec>,
     /// Field driving the frequency.
     pub frequency_field: Option<DriveSpec>,
+    /// `Some`: phasor noise (`"type": "phasor"`), the phase of the kernels' complex sum
+    /// through this profile ([`PhasorProfile`]); `None`: Gabor noise.
+    pub profile: Option<PhasorProfile>,
 }
 
 impl GaborSpec {
@@ -159,6 +163,7 @@ impl GaborSpec {
             period,
             orientation_drive,
             frequency_drive,
+            profile: self.profile,
         }
     }
 }

@@ -7,6 +7,7 @@ use crate::data::DataRef;
 use crate::fbm::{Basis, FbmParams};
 use crate::fibers::{FiberLayout, FiberParams};
 use crate::gabor::GaborKind;
+use crate::phasor::PhasorProfile;
 use crate::ramp::ColorRamp;
 use crate::ranges::{self, Range};
 use crate::spec::{
@@ -23,6 +24,9 @@ impl Source {
     #[must_use]
     pub fn type_name(&self) -> &'static str {
         match self {
+            Source::Gabor(GaborSpec {
+                profile: Some(_), ..
+            }) => "phasor",
             Source::Gabor(GaborSpec { .. }) => "gabor",
             Source::Fbm(p) if p.basis == Basis::Value => "value",
             Source::Fbm(_) => "perlin",
@@ -67,6 +71,18 @@ impl Source {
                 seed,
                 orientation_field: None,
                 frequency_field: None,
+                profile: None,
+            }),
+            "phasor" => Source::Gabor(GaborSpec {
+                kind: GaborKind::Anisotropic,
+                frequency: 0.02,
+                orientation: 0.6,
+                bandwidth: 0.01,
+                impulses: 32.0,
+                seed,
+                orientation_field: None,
+                frequency_field: None,
+                profile: Some(PhasorProfile::Sine),
             }),
             "perlin" => Source::Fbm(fbm(Basis::Perlin)),
             "value" => Source::Fbm(fbm(Basis::Value)),
@@ -235,6 +251,7 @@ impl NoiseSpec {
                 seed,
                 orientation_field: drive(2, std::f32::consts::PI),
                 frequency_field: drive(1, 1.0),
+                profile: None,
             }))
         };
         gabor.zoom_independent(1.0 / FEATURE_PX[1])
@@ -346,6 +363,7 @@ mod tests {
             seed: 1,
             orientation_field: None,
             frequency_field: None,
+            profile: None,
         }));
         let Source::Gabor(GaborSpec {
             frequency,

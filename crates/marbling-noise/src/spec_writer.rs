@@ -137,9 +137,13 @@ impl NoiseSpec {
                 seed,
                 orientation_field,
                 frequency_field,
+                profile,
             }) => {
-                o.insert("type".into(), json!("gabor"));
+                o.insert("type".into(), json!(self.source.type_name()));
                 o.insert("kind".into(), name(&ranges::GABOR_KINDS, kind));
+                if let Some(p) = profile {
+                    o.insert("profile".into(), name(&ranges::PHASOR_PROFILES, p));
+                }
                 o.insert("frequency".into(), num(*frequency));
                 o.insert("orientation".into(), num(*orientation));
                 o.insert("bandwidth".into(), num(*bandwidth));

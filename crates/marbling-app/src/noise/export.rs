@@ -1,21 +1,25 @@
 //! Export PNG from the noise playground: the whole spec (layers, transfers, blend, data)
-//! at a chosen size, 8- or 16-bit, rendered row by row on the CPU within a time budget
+//! at a chosen size, 8- or 16-bit, or its 16-bit height or normal map
+//! (`marbling_noise::SurfaceMap`), rendered row by row on the CPU within a time budget
 //! per frame so the page stays responsive, then encoded and offered as a download. A
 //! tiling spec is exported seamless over the exported size (`"tile": true`).
 
 use crate::frame::Frame;
 use crate::noise::Noise;
-use marbling_noise::{Depth, NoiseSpec, Renderer, Tile};
+use marbling_noise::{NoiseSpec, PngContent, Renderer, Tile};
 
 /// The sizes offered, pixels per side.
 pub const EXPORT_SIZES: [u32; 5] = [512, 1024, 2048, 4096, 8192];
+/// What Export PNG can write, as the menu names them ([`crate::noise::settings::NoiseSettings::export_map`]
+/// indexes it; the maps in the order of `marbling_noise::SURFACE_MAPS`).
+pub const EXPORT_CONTENTS: [&str; 3] = ["image", "height map (16-bit)", "normal map (16-bit)"];
 /// CPU time spent on rows per frame, milliseconds.
 pub const FRAME_BUDGET_MS: f64 = 25.0;
 
 /// A running export.
 pub struct NoiseExport {
     renderer: Renderer,
-    depth: Depth,
+    content: PngContent,
     next_row: u32,
     samples: Vec<u8>,
     /// The download's file name.
@@ -23,21 +27,17 @@ pub struct NoiseExport {
 }
 
 impl NoiseExport {
-    /// Starts exporting `spec` at `size`² and `depth`.
-    pub fn start(spec: &NoiseSpec, size: u32, depth: Depth) -> Result<Self, String> {
+    /// Starts exporting `content` of `spec` at `size`².
+    pub fn start(spec: &NoiseSpec, size: u32, content: PngContent) -> Result<Self, String> {
         let mut spec = spec.clone();
         if spec.tile.is_on() {
             spec.tile = Tile::Output;
         }
         let renderer = Renderer::new(&spec, size).map_err(|e| e.to_string())?;
-        let bits = match depth {
-            Depth::Eight => 8,
-            Depth::Sixteen => 16,
-        };
         Ok(Self {
-            name: format!("noise-{}-{size}-{bits}bit.png", spec.source.type_name()),
+            name: content.file_name(spec.source.type_name(), size),
             renderer,
-            depth,
+            content,
             next_row: 0,
             samples: Vec::new(),
         })
@@ -54,7 +54,7 @@ impl NoiseExport {
         let start = now();
         while self.next_row < self.size() {
             self.samples
-                .extend(self.renderer.png_row(self.next_row, self.depth));
+                .extend(self.renderer.content_row(self.next_row, self.content));
             self.next_row += 1;
             if now() - start > budget_ms {
                 break;
@@ -73,7 +73,7 @@ impl NoiseExport {
         let mut out = Vec::new();
         let mut writer = self
             .renderer
-            .png_encoder(&mut out, self.depth)
+            .content_encoder(&mut out, self.content)
             .write_header()
             .map_err(|e| e.to_string())?;
         writer
@@ -103,9 +103,22 @@ impl Noise {
                             ui.selectable_value(&mut s.export_size, i, format!("{n}²"));
                         }
                     });
-                ui.checkbox(&mut s.export_16bit, "16-bit")
-                    .on_hover_text("65,536 levels per sample: height maps");
+                let shown = s.export_map.min(EXPORT_CONTENTS.len() - 1);
+                egui::ComboBox::from_id_salt("noise-export-map")
+                    .selected_text(EXPORT_CONTENTS[shown])
+                    .show_ui(ui, |ui| {
+                        for (i, label) in EXPORT_CONTENTS.iter().enumerate() {
+                            ui.selectable_value(&mut s.export_map, i, *label);
+                        }
+                    });
+                if s.export_map == 0 {
+                    ui.checkbox(&mut s.export_16bit, "16-bit")
+                        .on_hover_text("65,536 levels per sample");
+                }
             });
+            if self.settings().export_map != 0 {
+                self.relief.relief_ui(ui, frame);
+            }
             match &self.export {
                 Some(e) => {
                     ui.label(format!("exporting… {:.0} %", 100.0 * e.progress()));
@@ -121,18 +134,19 @@ impl Noise {
                 }
             }
         });
+        if self.settings().export_map != 0 {
+            let s = self.settings();
+            let size = EXPORT_SIZES[s.export_size.min(EXPORT_SIZES.len() - 1)];
+            let spec = s.export_spec();
+            self.relief.view_ui(ui, &spec, size, frame);
+        }
     }
 
     /// Starts Export PNG of the noise at the panel's size and depth.
     fn start_export(&mut self, frame: &mut Frame<'_>) {
         let s = self.settings();
         let size = EXPORT_SIZES[s.export_size.min(EXPORT_SIZES.len() - 1)];
-        let depth = if s.export_16bit {
-            Depth::Sixteen
-        } else {
-            Depth::Eight
-        };
-        match NoiseExport::start(&s.export_spec(), size, depth) {
+        match NoiseExport::start(&s.export_spec(), size, s.export_content(self.relief.relief())) {
             Ok(e) => {
                 frame.info(format!("exporting {size}×{size} noise PNG…"));
                 self.export = Some(e);
@@ -165,11 +179,13 @@ impl Noise {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use marbling_noise::Depth;
 
     /// The 16-bit greyscale samples of an exported `spec` at 64², one row per call.
     fn export(spec: &str) -> Vec<f64> {
         let spec = NoiseSpec::from_json(spec).expect("valid");
-        let mut e = NoiseExport::start(&spec, 64, Depth::Sixteen).expect("starts");
+        let mut e =
+            NoiseExport::start(&spec, 64, PngContent::Image(Depth::Sixteen)).expect("starts");
         // A clock that jumps past the budget at every reading: one row per call.
         let clock = std::cell::Cell::new(0.0);
         let now = || {
@@ -221,8 +237,11 @@ mod tests {
     #[test]
     fn the_file_is_named_after_the_noise_size_and_depth() {
         let spec = NoiseSpec::from_json(r#"{"type":"worley","frequency":0.05}"#).expect("valid");
-        let e = NoiseExport::start(&spec, 512, Depth::Eight).expect("starts");
+        let e = NoiseExport::start(&spec, 512, PngContent::Image(Depth::Eight)).expect("starts");
         assert_eq!(e.name, "noise-worley-512-8bit.png");
-        assert!(NoiseExport::start(&spec, 0, Depth::Eight).is_err());
+        let normal = PngContent::Map(marbling_noise::SurfaceMap::Normal { relief: 8.0 });
+        let e = NoiseExport::start(&spec, 256, normal).expect("starts");
+        assert_eq!(e.name, "noise-worley-256-normal.png");
+        assert!(NoiseExport::start(&spec, 0, PngContent::Image(Depth::Eight)).is_err());
     }
 }

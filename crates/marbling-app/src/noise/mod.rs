@@ -1,17 +1,20 @@
 //! The noise playground: the typed noise spec its sliders edit, its panel and controls,
-//! the data sets of data-driven Gabor, its preview and its PNG export.
+//! the data sets of data-driven Gabor, its preview, its PNG export (image, height or normal
+//! map) and the relief view.
 
 pub(crate) mod controls;
 pub(crate) mod data;
 pub(crate) mod export;
 pub(crate) mod panel;
 pub(crate) mod preview;
+pub(crate) mod relief;
 pub(crate) mod settings;
 
 use crate::noise::data::NoiseData;
 use crate::noise::export::NoiseExport;
 use crate::noise::panel::NoiseAnalysis;
 use crate::noise::preview::NoisePreview;
+use crate::noise::relief::ReliefView;
 use crate::noise::settings::NoiseSettings;
 
 /// The noise playground's state: the settings with a revision that counts their edits
@@ -37,6 +40,8 @@ pub(crate) struct Noise {
     preview: Option<NoisePreview>,
     /// A running Export PNG of the noise (src/noise/export.rs).
     export: Option<NoiseExport>,
+    /// The relief of the noise lit on a plane, and the relief of its normal map.
+    relief: ReliefView,
 }
 
 impl Noise {

@@ -400,7 +400,11 @@ pub(crate) fn noise_parameters(ui: &mut egui::Ui, spec: &mut NoiseSpec) {
             seed,
             orientation_field,
             frequency_field,
+            profile,
         }) => {
+            if let Some(p) = profile {
+                choice(ui, "profile", &ranges::PHASOR_PROFILES, p);
+            }
             choice(ui, "kind", &ranges::GABOR_KINDS, kind);
             frequency(ui, f, ranges::GABOR_FREQUENCY);
             if *kind != marbling_noise::GaborKind::Isotropic {

@@ -5,7 +5,7 @@
 
 use crate::noise::data::NoiseData;
 use marbling_core::{Design, NoiseBackground, NoiseLayer, Palette, Rgb8};
-use marbling_noise::WhiteSpec;
+use marbling_noise::{Depth, PngContent, SurfaceMap, WhiteSpec};
 use marbling_noise::{BlendBase, ColorRamp, FEATURE_PX, NoiseSpec, Source, Tile, Transfer};
 
 /// Storage key of the noise setup (the JSON of [`NoiseSettings::export_spec`]).
@@ -28,6 +28,9 @@ pub struct NoiseSettings {
     pub export_size: usize,
     /// Export PNG writes 16-bit samples (height maps).
     pub export_16bit: bool,
+    /// What Export PNG writes: 0 the image, 1 + an index into
+    /// `marbling_noise::SURFACE_MAPS` a 16-bit height or normal map.
+    pub export_map: usize,
 }
 
 impl Default for NoiseSettings {
@@ -42,11 +45,23 @@ impl Default for NoiseSettings {
             show_tiles: true,
             export_size: 1,
             export_16bit: false,
+            export_map: 0,
         }
     }
 }
 
 impl NoiseSettings {
+    /// What Export PNG writes ([`NoiseSettings::export_map`], the depth; a normal map
+    /// raised `relief` output pixels).
+    pub fn export_content(&self, relief: f32) -> PngContent {
+        match self.export_map {
+            1 => PngContent::Map(SurfaceMap::Height),
+            2 => PngContent::Map(SurfaceMap::Normal { relief }),
+            _ if self.export_16bit => PngContent::Image(Depth::Sixteen),
+            _ => PngContent::Image(Depth::Eight),
+        }
+    }
+
     /// The factor the zoom rule multiplies the frequencies by at `zoom` screen pixels
     /// per design pixel: a power of two, 1 when the rule is off or the noise has no
     /// frequency.

@@ -1,5 +1,5 @@
-//! `marbling noise`: PNG output (greyscale and coloured, file and stdin) and every error
-//! path with its message.
+//! `marbling noise`: PNG output (greyscale and coloured, file and stdin), phasor noise,
+//! height and normal maps, and every error path with its message.
 
 use std::path::PathBuf;
 
@@ -205,6 +205,51 @@ fn sixteen_bit_exports_hold_the_intensity_to_one_part_in_65535() {
     );
     let e = run(&["noise", "-", "-o", "x.png", "--depth", "12"], Some(GABOR));
     assert!(String::from_utf8_lossy(&e.stderr).contains("--depth must be 8 or 16, got 12"));
+}
+
+/// `--map height` is the 16-bit intensity; `--map normal` the tangent-space normal of
+/// z = relief·h (OpenGL: a slope rising to the right leans red low, a flat sheet is
+/// (0.5, 0.5, 1)), on a phasor noise whose square profile makes sharp ridges.
+#[test]
+fn height_and_normal_maps_of_a_phasor_noise() {
+    const PHASOR: &str = r#"{"type":"phasor","profile":"sine","frequency":0.05,"orientation":0,"bandwidth":0.02,"impulses":32,"seed":4}"#;
+    let (color, depth, heights) = export("height", PHASOR, 32, &["--map", "height"]);
+    assert_eq!((color, depth), (png::ColorType::Grayscale, png::BitDepth::Sixteen));
+    let (_, _, image) = export("image16", PHASOR, 32, &["--depth", "16"]);
+    assert_eq!(heights, image, "the height map is the 16-bit intensity");
+    let (color, depth, normals) =
+        export("normal", PHASOR, 32, &["--map", "normal", "--relief", "20"]);
+    assert_eq!((color, depth, normals.len()), (png::ColorType::Rgb, png::BitDepth::Sixteen, 32 * 32 * 6));
+    let sample = |data: &[u8], k: usize| f64::from(u16::from_be_bytes([data[2 * k], data[2 * k + 1]])) / 65535.0;
+    // Along a row, where the height rises to the right the normal's x is below ½.
+    let mut agree = 0;
+    let mut total = 0;
+    for j in 0..32 {
+        for i in 1..31 {
+            let rise = sample(&heights, j * 32 + i + 1) - sample(&heights, j * 32 + i - 1);
+            let nx = sample(&normals, 3 * (j * 32 + i)) - 0.5;
+            if rise.abs() > 0.02 {
+                total += 1;
+                agree += usize::from((rise > 0.0) == (nx < 0.0));
+            }
+        }
+    }
+    assert!(total > 100 && agree == total, "{agree} of {total} slopes agree");
+    // Every normal is a unit vector facing out of the sheet.
+    for k in 0..32 * 32 {
+        let n: Vec<f64> = (0..3).map(|c| 2.0 * sample(&normals, 3 * k + c) - 1.0).collect();
+        let len = n.iter().map(|v| v * v).sum::<f64>().sqrt();
+        assert!((len - 1.0).abs() < 1e-3 && n[2] > 0.0, "{n:?}");
+    }
+    let e = run(&["noise", "-", "-o", "x.png", "--map", "normal", "--relief", "0"], Some(PHASOR));
+    assert!(String::from_utf8_lossy(&e.stderr).contains("--relief must be above 0"));
+    let e = run(&["noise", "-", "-o", "x.png", "--map", "height", "--depth", "8"], Some(PHASOR));
+    assert!(String::from_utf8_lossy(&e.stderr).contains("--map writes 16-bit samples"));
+    let e = run(&["noise", "-", "-o", "x.png", "--map", "bump"], Some(PHASOR));
+    assert!(!e.status.success() && String::from_utf8_lossy(&e.stderr).contains("bump"));
+    let e = run(&["noise", "-", "-o", "x.png"], Some(r#"{"type":"phasor","frequency":0.05,"bandwidth":0.02,"profile":"wave"}"#));
+    let msg = String::from_utf8_lossy(&e.stderr);
+    assert!(msg.contains("profile") && msg.contains("sine"), "{msg}");
 }
 
 /// Mean absolute difference across the wrap-around seams (last column to first, last

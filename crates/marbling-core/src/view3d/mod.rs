@@ -19,6 +19,7 @@
 //! - Antialiasing: the design renderer's sample patterns and adaptive refinement
 //!   (where first-pass samples come from different sources), averaged in linear light.
 
+mod relief;
 mod shapes;
 mod vec3;
 
@@ -26,6 +27,7 @@ pub use shapes::{
     BOOK_DEPTH, Hit, Material, Object, PAGES, Shape, VASE_BISECTIONS, VASE_BOUND, VASE_STEPS,
     vase_radius,
 };
+pub use relief::{Light, ReliefMap, render_relief};
 pub use vec3::Vec3;
 
 use crate::image_background::ImagePixels;
@@ -192,12 +194,20 @@ impl View3d {
 
     /// The camera for `design`.
     pub fn rig(&self, design: &Design) -> Rig {
-        let object = self.object(design);
-        let (target, normal) = match self.camera.look_at {
-            Some(p) => object.surface_point(
+        let look_at = self.camera.look_at.map(|p| {
+            (
                 p.x / f64::from(design.width),
                 p.y / f64::from(design.height),
-            ),
+            )
+        });
+        self.rig_for(&self.object(design), look_at)
+    }
+
+    /// The camera for `object`, centred on texture coordinates `look_at` (u, v in
+    /// [0, 1]) or on the object's centre.
+    pub fn rig_for(&self, object: &Object, look_at: Option<(f64, f64)>) -> Rig {
+        let (target, normal) = match look_at {
+            Some((u, v)) => object.surface_point(u, v),
             None => (Vec3::default(), Vec3::new(0.0, 0.0, 1.0)),
         };
         let yaw = self
@@ -214,7 +224,7 @@ impl View3d {
             pitch.sin(),
             yaw.cos() * pitch.cos(),
         );
-        let distance = Self::distance(&object);
+        let distance = Self::distance(object);
         let origin = target + dir * distance;
         let forward = -dir;
         let right = forward.cross(Vec3::new(0.0, 1.0, 0.0)).normalized();

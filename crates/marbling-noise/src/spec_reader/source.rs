@@ -4,6 +4,7 @@ use super::{Reader, Role, Rule};
 use crate::fbm::{Basis, FbmParams};
 use crate::fibers::{FiberLayout, FiberParams, Impurities};
 use crate::gabor::GaborKind;
+use crate::phasor::PhasorProfile;
 use crate::ranges;
 use crate::spec::{CurlSpec, GaborSpec, WhiteSpec, WorleySpec};
 use crate::spec::{NoiseSpec, Source};
@@ -56,7 +57,19 @@ impl Reader {
         kind: &str,
     ) -> Option<Source> {
         match kind {
-            "gabor" => {
+            "gabor" | "phasor" => {
+                let profile = if kind == "phasor" {
+                    self.choice(
+                        path,
+                        obj,
+                        "profile",
+                        PhasorProfile::Sine,
+                        &ranges::PHASOR_PROFILES,
+                    )
+                    .map(Some)
+                } else {
+                    Some(None)
+                };
                 let gk = self.choice(
                     path,
                     obj,
@@ -94,6 +107,7 @@ impl Reader {
                     seed: seed?,
                     orientation_field: orientation_field.map_or(Some(None), |d| d.map(Some))?,
                     frequency_field: frequency_field.map_or(Some(None), |d| d.map(Some))?,
+                    profile: profile?,
                 }))
             }
             "perlin" => self.fbm(path, obj, Basis::Perlin).map(Source::Fbm),

@@ -5,7 +5,7 @@ use crate::common::{freq, power_spectrum};
 use marbling_noise::{Gabor, GaborKind, GaborParams};
 use std::f64::consts::PI;
 
-fn params(kind: GaborKind, frequency: f32, orientation: f32, bandwidth: f32) -> GaborParams {
+pub(crate) fn params(kind: GaborKind, frequency: f32, orientation: f32, bandwidth: f32) -> GaborParams {
     GaborParams {
         kind,
         frequency,
@@ -16,6 +16,7 @@ fn params(kind: GaborKind, frequency: f32, orientation: f32, bandwidth: f32) -> 
         period: None,
         orientation_drive: None,
         frequency_drive: None,
+        profile: None,
     }
 }
 
@@ -65,7 +66,7 @@ fn mean_zero_and_variance_matches_formula() {
     assert!(ok, "{report}");
 }
 
-fn tiled_image(p: GaborParams, n: usize) -> Vec<f32> {
+pub(crate) fn tiled_image(p: GaborParams, n: usize) -> Vec<f32> {
     let g = Gabor::new(GaborParams {
         period: Some(n as u32),
         ..p
@@ -81,7 +82,7 @@ fn tiled_image(p: GaborParams, n: usize) -> Vec<f32> {
 
 /// Power-weighted mean frequency vector over the half plane containing the strongest
 /// bin (the spectrum of a real image is symmetric).
-fn spectral_peak(power: &[f64], n: usize) -> (f64, f64) {
+pub(crate) fn spectral_peak(power: &[f64], n: usize) -> (f64, f64) {
     let (mut best, mut arg) = (0.0, 0);
     for (k, &p) in power.iter().enumerate() {
         if p > best {

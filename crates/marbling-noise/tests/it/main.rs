@@ -6,6 +6,7 @@ mod data_gabor;
 mod gabor;
 mod gpu;
 mod noises;
+mod phasor;
 mod snapshots;
 mod spec_errors;
 mod wgsl;

@@ -24,6 +24,10 @@ const CASES: &[(&str, &str)] = &[
             "orientation_field":{"noise":{"type":"perlin","frequency":0.01,"seed":9},"amount":1.2}}"#,
     ),
     (
+        "phasor_square",
+        r#"{"type":"phasor","profile":"square","frequency":0.06,"orientation":0.5,"bandwidth":0.02,"impulses":32,"seed":5}"#,
+    ),
+    (
         "perlin_fbm",
         r#"{"type":"perlin","frequency":0.03,"octaves":5,"seed":4}"#,
     ),

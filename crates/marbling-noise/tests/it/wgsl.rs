@@ -41,7 +41,7 @@ fn host_structs_match_wgsl_layout() {
         "GaborParams",
         fields!(GaborGpu: kind, seed, period_cells, drives, frequency, orientation, cell,
             radius2, pi_a2, exp_neg_part, inv_std, orientation_amount, frequency_amount,
-            poisson_parts, reach_cells),
+            poisson_parts, reach_cells, profile),
         size_of::<GaborGpu>(),
     );
     check_struct(
