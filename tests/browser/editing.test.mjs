@@ -416,6 +416,55 @@ for (const backend of Object.keys(BACKENDS)) {
       await context.close();
     });
 
+    test('phasor noise from a link on the canvas, its relief lit on the plane, and a 16-bit normal map', { skip: backend !== 'webgpu' }, async () => {
+      const link = (spec) => `#n=${zlib.deflateRawSync(Buffer.from(JSON.stringify(spec))).toString('base64url')}`;
+      const phasor = { type: 'phasor', profile: 'square', frequency: 0.04, orientation: 0.5, bandwidth: 0.02, impulses: 3, seed: 5 };
+      // Three kernels per point and a small page: SwiftShader draws the phasor in ~10 s.
+      const { page, context, errors } = await openPage(browser, site, link(phasor), { width: 1000, height: 1000 });
+      await page.waitForFunction(() => document.body.dataset.mode === 'noise' && document.body.dataset.ready === '1', null, { timeout: READY_MS });
+      assert.equal(JSON.parse(await attr(page, 'data-noise')).profile, 'square');
+      // The GPU draws the square profile: two levels, about half each (not a blank sheet).
+      const shot = await shootSheet(page, STONE.design.width, STONE.design.height);
+      let dark = 0;
+      for (let i = 0; i < shot.img.data.length; i += 4) dark += shot.img.data[i] < 128 ? 1 : 0;
+      const share = dark / (shot.img.data.length / 4);
+      assert.ok(share > 0.2 && share < 0.8, `dark share ${share.toFixed(3)}`);
+      // A normal map chosen: the relief view lights the noise on the plane.
+      await clickControl(page, 'noise-export-normal');
+      await page.waitForFunction(() => /noise-relief-toggle=/.test(document.body.dataset.controls), null, { timeout: READY_MS });
+      await clickControl(page, 'noise-relief-toggle');
+      await page.waitForFunction(() => /noise-relief-view=/.test(document.body.dataset.controls), null, { timeout: READY_MS });
+      // Scroll the panel until the whole picture is on screen.
+      await page.mouse.move(150, 600);
+      for (let i = 0; i < 10 && (await controls(page))['noise-relief-view'].y + (await controls(page))['noise-relief-view'].h > 990; i++) {
+        await page.mouse.wheel(0, 200);
+        await page.waitForTimeout(200);
+      }
+      const r = (await controls(page))['noise-relief-view'];
+      assert.ok(r.y >= 0 && r.y + r.h <= 1000, `the relief view at ${JSON.stringify(r)}`);
+      const full = decode(await page.screenshot({ timeout: READY_MS }));
+      const view = window(full, Math.round(r.x + 4), Math.round(r.y + 4), Math.round(r.w - 8), Math.round(r.h - 8));
+      const levels = new Set();
+      for (let i = 0; i < view.data.length; i += 4) levels.add(view.data[i] >> 3);
+      assert.ok(levels.size > 8, `the relief view shows ${levels.size} levels of red`);
+      await page.screenshot({ path: path.join(SHOTS, `noise-relief-${backend}.png`), timeout: READY_MS });
+      // A Perlin's 16-bit normal map (cheap enough at 1024²): unit normals facing out.
+      await page.evaluate((h) => { window.location.hash = h; }, link({ type: 'perlin', frequency: 0.01, octaves: 3, seed: 2 }));
+      await page.waitForFunction(() => JSON.parse(document.body.dataset.noise).type === 'perlin', null, { timeout: READY_MS });
+      const file = await download(page, 'noise-export-png');
+      assert.equal(file.name, 'noise-perlin-1024-normal.png');
+      assert.equal(file.bytes[24], 16, 'bit depth');
+      assert.equal(file.bytes[25], 2, 'colour type RGB');
+      const png = PNG.sync.read(file.bytes, { skipRescale: true });
+      const max = 65535;
+      for (const k of [0, 1234, 500_000, 1024 * 1024 - 1]) {
+        const n = [0, 1, 2].map((c) => 2 * png.data[4 * k + c] / max - 1);
+        assert.ok(Math.abs(Math.hypot(...n) - 1) < 2e-3 && n[2] > 0, `normal ${n} at ${k}`);
+      }
+      assert.deepEqual(errors, []);
+      await context.close();
+    });
+
     test('the Noise panel: a seamless export, a layer on 2×2 tiles, and Khlebnikov et al. 2013 weather data', { skip: backend !== 'webgpu' }, async () => {
       // A tall page: the whole Noise panel fits without scrolling.
       const { page, context, errors } = await openPage(browser, site, '', { width: 1300, height: 1500 });

@@ -10,8 +10,8 @@ use crate::input::{display_name, read_text};
 use anyhow::{Context, Result, bail};
 use clap::Args;
 use marbling_noise::{
-    DataGrid, Depth, MAX_SIZE, NoiseSpec, PngContent, Renderer, SURFACE_MAPS, SpecError, SurfaceMap,
-    ranges,
+    DataGrid, Depth, MAX_SIZE, NoiseSpec, PngContent, Renderer, SURFACE_MAPS, SpecError,
+    SurfaceMap, ranges,
 };
 use std::path::Path;
 use std::sync::Arc;

@@ -57,13 +57,13 @@ pub use fibers::{
 pub use field::Field;
 pub use gabor::{Drive, GABOR_TRUNCATION, Gabor, GaborKind, GaborParams};
 pub use hash::CellRng;
-pub use maps::{PngContent, SURFACE_MAPS, SurfaceMap, surface_normal};
 pub use layer::{COMBINES, Combine, Layer, MAX_LAYERS};
-pub use phasor::PhasorProfile;
+pub use maps::{PngContent, SURFACE_MAPS, SurfaceMap, surface_normal};
 pub use perlin::{
     GRADIENTS, PERLIN_DERIVATIVE_VARIANCE, PERLIN_VARIANCE, fade, perlin2, perlin2_periodic,
     perlin2_with_gradient,
 };
+pub use phasor::PhasorProfile;
 pub use ramp::{ColorRamp, PALETTES, Rgb, parse_hex};
 pub use render::{
     Depth, MAX_SIZE, NoiseImage, RenderError, Renderer, noise_field, noise_to_grey, sample_grid,

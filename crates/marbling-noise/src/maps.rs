@@ -130,7 +130,11 @@ impl Renderer {
 
     /// A PNG encoder for `map` of this output: size² pixels, 16-bit grey or RGB as
     /// [`Renderer::map_row`] writes them.
-    pub fn map_encoder<W: std::io::Write>(&self, out: W, map: SurfaceMap) -> png::Encoder<'static, W> {
+    pub fn map_encoder<W: std::io::Write>(
+        &self,
+        out: W,
+        map: SurfaceMap,
+    ) -> png::Encoder<'static, W> {
         let mut enc = png::Encoder::new(out, self.size(), self.size());
         enc.set_color(match map {
             SurfaceMap::Height => png::ColorType::Grayscale,
@@ -161,17 +165,22 @@ mod tests {
     /// the normal, −n_x/n_z / relief, equals the height map's finite difference (1e-3).
     #[test]
     fn normal_map_matches_height_map_slopes() {
-        let spec = NoiseSpec::from_json(r#"{"type":"perlin","frequency":0.01,"octaves":2,"seed":2}"#)
-            .expect("valid");
+        let spec =
+            NoiseSpec::from_json(r#"{"type":"perlin","frequency":0.01,"octaves":2,"seed":2}"#)
+                .expect("valid");
         let r = Renderer::new(&spec, 64).expect("renderer");
         let relief = 40.0;
-        let decode = |row: &[u8], k: usize| f32::from(u16::from_be_bytes([row[2 * k], row[2 * k + 1]])) / 65535.0;
+        let decode = |row: &[u8], k: usize| {
+            f32::from(u16::from_be_bytes([row[2 * k], row[2 * k + 1]])) / 65535.0
+        };
         let heights: Vec<Vec<u8>> = (0..64).map(|j| r.map_row(j, SurfaceMap::Height)).collect();
         let normals = r.map_row(20, SurfaceMap::Normal { relief });
         assert_eq!(normals.len(), 64 * 3 * 2);
         let mut worst = 0.0_f32;
         for i in 1..63 {
-            let n: Vec<f32> = (0..3).map(|c| 2.0 * decode(&normals, 3 * i + c) - 1.0).collect();
+            let n: Vec<f32> = (0..3)
+                .map(|c| 2.0 * decode(&normals, 3 * i + c) - 1.0)
+                .collect();
             let slope = -n[0] / n[2] / relief;
             let from_heights = 0.5 * (decode(&heights[20], i + 1) - decode(&heights[20], i - 1));
             worst = worst.max((slope - from_heights).abs());

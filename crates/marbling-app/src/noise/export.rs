@@ -10,9 +10,14 @@ use marbling_noise::{NoiseSpec, PngContent, Renderer, Tile};
 
 /// The sizes offered, pixels per side.
 pub const EXPORT_SIZES: [u32; 5] = [512, 1024, 2048, 4096, 8192];
-/// What Export PNG can write, as the menu names them ([`crate::noise::settings::NoiseSettings::export_map`]
-/// indexes it; the maps in the order of `marbling_noise::SURFACE_MAPS`).
-pub const EXPORT_CONTENTS: [&str; 3] = ["image", "height map (16-bit)", "normal map (16-bit)"];
+/// What Export PNG can write: the button's label and control name
+/// ([`crate::noise::settings::NoiseSettings::export_map`] indexes it; the maps in the order
+/// of `marbling_noise::SURFACE_MAPS`).
+pub const EXPORT_CONTENTS: [(&str, &str); 3] = [
+    ("image", "noise-export-image"),
+    ("height map", "noise-export-height"),
+    ("normal map", "noise-export-normal"),
+];
 /// CPU time spent on rows per frame, milliseconds.
 pub const FRAME_BUDGET_MS: f64 = 25.0;
 
@@ -103,14 +108,10 @@ impl Noise {
                             ui.selectable_value(&mut s.export_size, i, format!("{n}²"));
                         }
                     });
-                let shown = s.export_map.min(EXPORT_CONTENTS.len() - 1);
-                egui::ComboBox::from_id_salt("noise-export-map")
-                    .selected_text(EXPORT_CONTENTS[shown])
-                    .show_ui(ui, |ui| {
-                        for (i, label) in EXPORT_CONTENTS.iter().enumerate() {
-                            ui.selectable_value(&mut s.export_map, i, *label);
-                        }
-                    });
+                for (i, (label, control)) in EXPORT_CONTENTS.iter().enumerate() {
+                    let r = ui.selectable_value(&mut s.export_map, i, *label);
+                    frame.control(*control, &r);
+                }
                 if s.export_map == 0 {
                     ui.checkbox(&mut s.export_16bit, "16-bit")
                         .on_hover_text("65,536 levels per sample");
@@ -146,7 +147,11 @@ impl Noise {
     fn start_export(&mut self, frame: &mut Frame<'_>) {
         let s = self.settings();
         let size = EXPORT_SIZES[s.export_size.min(EXPORT_SIZES.len() - 1)];
-        match NoiseExport::start(&s.export_spec(), size, s.export_content(self.relief.relief())) {
+        match NoiseExport::start(
+            &s.export_spec(),
+            size,
+            s.export_content(self.relief.relief()),
+        ) {
             Ok(e) => {
                 frame.info(format!("exporting {size}×{size} noise PNG…"));
                 self.export = Some(e);

@@ -9,8 +9,8 @@
 use crate::frame::Frame;
 use crate::noise::export::FRAME_BUDGET_MS;
 use egui::{RichText, Slider};
-use marbling_core::view3d::{Camera, Light, ReliefMap, Shape, View3d, render_relief};
 use marbling_core::Antialias;
+use marbling_core::view3d::{Camera, Light, ReliefMap, Shape, View3d, render_relief};
 use marbling_noise::{NoiseSpec, Renderer, ranges};
 
 /// Samples per side of the height grid.
@@ -174,7 +174,8 @@ impl ReliefView {
             pitch: self.pitch,
         };
         if self.shown.as_ref().is_none_or(|(d, _)| *d != drawn) {
-            let Some(map) = ReliefMap::from_heights(GRID, &h.heights, &h.colors, h.cell, self.relief)
+            let Some(map) =
+                ReliefMap::from_heights(GRID, &h.heights, &h.colors, h.cell, self.relief)
             else {
                 return;
             };
@@ -189,9 +190,11 @@ impl ReliefView {
                     *d = drawn;
                 }
                 None => {
-                    let texture =
-                        ui.ctx()
-                            .load_texture("noise-relief", picture, egui::TextureOptions::LINEAR);
+                    let texture = ui.ctx().load_texture(
+                        "noise-relief",
+                        picture,
+                        egui::TextureOptions::LINEAR,
+                    );
                     self.shown = Some((drawn, texture));
                 }
             }

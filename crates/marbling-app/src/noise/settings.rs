@@ -5,8 +5,8 @@
 
 use crate::noise::data::NoiseData;
 use marbling_core::{Design, NoiseBackground, NoiseLayer, Palette, Rgb8};
-use marbling_noise::{Depth, PngContent, SurfaceMap, WhiteSpec};
 use marbling_noise::{BlendBase, ColorRamp, FEATURE_PX, NoiseSpec, Source, Tile, Transfer};
+use marbling_noise::{Depth, PngContent, SurfaceMap, WhiteSpec};
 
 /// Storage key of the noise setup (the JSON of [`NoiseSettings::export_spec`]).
 pub const KEY: &str = "marbling.noise.v1";

@@ -23,11 +23,11 @@ mod relief;
 mod shapes;
 mod vec3;
 
+pub use relief::{Light, ReliefMap, render_relief};
 pub use shapes::{
     BOOK_DEPTH, Hit, Material, Object, PAGES, Shape, VASE_BISECTIONS, VASE_BOUND, VASE_STEPS,
     vase_radius,
 };
-pub use relief::{Light, ReliefMap, render_relief};
 pub use vec3::Vec3;
 
 use crate::image_background::ImagePixels;

@@ -46,7 +46,8 @@ impl ReliefMap {
                 normals.push(surface_normal(hx, hy, relief));
             }
         }
-        let linear = |v: f32| crate::color::srgb_to_linear((v.clamp(0.0, 1.0) * 255.0).round() as u8);
+        let linear =
+            |v: f32| crate::color::srgb_to_linear((v.clamp(0.0, 1.0) * 255.0).round() as u8);
         Some(Self {
             side,
             normals,
@@ -77,7 +78,9 @@ impl ReliefMap {
             })
         };
         let nm = mix(&self.normals);
-        let len = (nm[0] * nm[0] + nm[1] * nm[1] + nm[2] * nm[2]).sqrt().max(1e-12);
+        let len = (nm[0] * nm[0] + nm[1] * nm[1] + nm[2] * nm[2])
+            .sqrt()
+            .max(1e-12);
         (nm.map(|c| c / len), mix(&self.albedo))
     }
 }
@@ -195,7 +198,8 @@ mod tests {
     #[test]
     fn flat_sheet_head_on_is_lit_by_the_light_elevation() {
         let side = 8;
-        let map = ReliefMap::from_heights(side, &[0.5; 64], &[[1.0; 3]; 64], 1.0, 8.0).expect("map");
+        let map =
+            ReliefMap::from_heights(side, &[0.5; 64], &[[1.0; 3]; 64], 1.0, 8.0).expect("map");
         let light = Light {
             azimuth: 0.0,
             elevation: 30.0,
@@ -212,12 +216,33 @@ mod tests {
     fn a_slope_is_bright_towards_the_light_and_dark_away() {
         let map = ramp(16);
         // The ramp rises to the right, so it faces left: bright in light from the left.
-        let from_left = render_relief(&map, Light { azimuth: 180.0, elevation: 30.0 }, &view(0.0, 0.0));
-        let from_right = render_relief(&map, Light { azimuth: 0.0, elevation: 30.0 }, &view(0.0, 0.0));
+        let from_left = render_relief(
+            &map,
+            Light {
+                azimuth: 180.0,
+                elevation: 30.0,
+            },
+            &view(0.0, 0.0),
+        );
+        let from_right = render_relief(
+            &map,
+            Light {
+                azimuth: 0.0,
+                elevation: 30.0,
+            },
+            &view(0.0, 0.0),
+        );
         let (l, r) = (grey_at(&from_left, 32, 24), grey_at(&from_right, 32, 24));
         assert!(l > r + 40, "from the left {l}, from the right {r}");
         // Turning the camera does not change the lighting of a point on the sheet.
-        let turned = render_relief(&map, Light { azimuth: 180.0, elevation: 30.0 }, &view(20.0, 25.0));
+        let turned = render_relief(
+            &map,
+            Light {
+                azimuth: 180.0,
+                elevation: 30.0,
+            },
+            &view(20.0, 25.0),
+        );
         assert!(grey_at(&turned, 32, 24).abs_diff(l) <= 2);
     }
 

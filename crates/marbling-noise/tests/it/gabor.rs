@@ -5,7 +5,12 @@ use crate::common::{freq, power_spectrum};
 use marbling_noise::{Gabor, GaborKind, GaborParams};
 use std::f64::consts::PI;
 
-pub(crate) fn params(kind: GaborKind, frequency: f32, orientation: f32, bandwidth: f32) -> GaborParams {
+pub(crate) fn params(
+    kind: GaborKind,
+    frequency: f32,
+    orientation: f32,
+    bandwidth: f32,
+) -> GaborParams {
     GaborParams {
         kind,
         frequency,

@@ -69,7 +69,10 @@ fn phasor_amplitude_is_constant_where_gabor_fades() {
     println!("share of |n| > 1: Gabor {g:.3}, phasor sine {s:.3}");
     assert!((0.45..0.55).contains(&s), "phasor {s}");
     assert!((0.25..0.38).contains(&g), "gabor {g}");
-    assert!(sine.iter().all(|v| v.abs() <= std::f32::consts::SQRT_2 + 1e-5));
+    assert!(
+        sine.iter()
+            .all(|v| v.abs() <= std::f32::consts::SQRT_2 + 1e-5)
+    );
 }
 
 #[test]
@@ -82,8 +85,14 @@ fn square_profile_is_two_levels_with_a_third_harmonic() {
     assert!(img.iter().all(|v| *v == 1.0 || *v == -1.0));
     let up = img.iter().filter(|v| **v > 0.0).count() as f64 / img.len() as f64;
     let power = power_spectrum(&img, N);
-    let (first, third) = (ring_power(&power, f0.into()), ring_power(&power, 3.0 * f64::from(f0)));
-    println!("square: {up:.3} at +1; third/first harmonic power {:.3}", third / first);
+    let (first, third) = (
+        ring_power(&power, f0.into()),
+        ring_power(&power, 3.0 * f64::from(f0)),
+    );
+    println!(
+        "square: {up:.3} at +1; third/first harmonic power {:.3}",
+        third / first
+    );
     assert!((0.45..0.55).contains(&up), "{up}");
     assert!((0.04..0.2).contains(&(third / first)), "{}", third / first);
     // A sine profile has (almost) no third harmonic: the test can tell them apart.
@@ -106,6 +115,9 @@ fn every_profile_has_zero_mean_and_unit_variance() {
         let mean = values.iter().sum::<f64>() / values.len() as f64;
         let var = values.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / values.len() as f64;
         println!("{profile:?}: mean {mean:+.3}, variance {var:.3}");
-        assert!(mean.abs() < 0.1 && (var - 1.0).abs() < 0.1, "{profile:?} {mean} {var}");
+        assert!(
+            mean.abs() < 0.1 && (var - 1.0).abs() < 0.1,
+            "{profile:?} {mean} {var}"
+        );
     }
 }

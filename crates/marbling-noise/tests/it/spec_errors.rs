@@ -35,7 +35,7 @@ fn path_named_errors() {
     );
     assert_eq!(
         errors(r#"{"type":"blob"}"#)[0],
-        "type: unknown noise type 'blob'; expected one of gabor, perlin, value, worley, white, curl, paper, canvas, product"
+        "type: unknown noise type 'blob'; expected one of gabor, phasor, perlin, value, worley, white, curl, paper, canvas, product"
     );
     let e = errors(r#"{"type":"perlin","frequency":0.1,"colour":"red"}"#);
     assert!(e[0].starts_with("colour: unknown field"), "{e:?}");
