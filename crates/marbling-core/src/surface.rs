@@ -77,10 +77,10 @@ impl NoiseLayer {
         Self::checked(json.clone(), spec)
     }
 
-    /// A spec made in code, for use in a design: written ([`NoiseSpec::to_value`]) and
-    /// read back, so every rule of the spec grammar is checked as for a document.
+    /// A spec made in code (its values within `marbling_noise::ranges`, as the editors
+    /// keep them), for use in a design; its document form is [`NoiseSpec::to_value`].
     pub fn from_spec(spec: &NoiseSpec) -> Result<Self, Vec<FieldError>> {
-        Self::from_value(&spec.to_value())
+        Self::checked(spec.to_value(), spec.clone())
     }
 
     /// `spec` (written as `json`) if a design may hold it: no tiling, palette, blend or

@@ -295,3 +295,23 @@ fn ink_keeps_its_colour_under_a_noise_background() {
         assert_eq!((img.width, img.height), (72, 48));
     }
 }
+
+/// A spec made in code gives the same layer as its document read back, for every noise
+/// type an editor starts from, and the design rules refuse the same specs either way.
+#[test]
+fn a_layer_from_a_typed_spec_equals_its_document_read_back() {
+    use marbling_noise::{NOISE_TYPES, NoiseSpec, Source, Tile};
+    for &t in NOISE_TYPES.iter().filter(|t| **t != "product") {
+        let spec = NoiseSpec::plain(Source::starting(t, 3).expect("a starting source"));
+        let typed = NoiseLayer::from_spec(&spec).expect(t);
+        let read = NoiseLayer::from_value(&spec.to_value()).expect(t);
+        assert_eq!(typed, read, "{t}");
+        assert_eq!(typed.spec(), read.spec(), "{t}");
+        let tiled = NoiseSpec {
+            tile: Tile::Output,
+            ..spec
+        };
+        let refused = NoiseLayer::from_spec(&tiled).expect_err("tiling is refused");
+        assert_eq!(refused[0].path, "tile", "{t}");
+    }
+}
