@@ -94,7 +94,7 @@ pub const GABOR_KINDS: [(&str, GaborKind); 3] = [
 /// Relief of a normal map: the height of intensity 1 above 0, output pixels.
 pub const RELIEF: Range = Range::above(0.0, 1024.0);
 /// The relief an editor starts from, output pixels.
-pub const DEFAULT_RELIEF: f64 = 8.0;
+pub const DEFAULT_RELIEF: f64 = 24.0;
 
 /// Phasor `profile` names.
 pub const PHASOR_PROFILES: [(&str, PhasorProfile); 4] = [
