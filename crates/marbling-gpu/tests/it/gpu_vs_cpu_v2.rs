@@ -20,7 +20,7 @@ fn layer(json: &str) -> NoiseLayer {
 }
 
 /// (name, background noise, palette) of each case.
-const BACKGROUNDS: [(&str, &str, &str); 3] = [
+const BACKGROUNDS: [(&str, &str, &str); 4] = [
     (
         "perlin fbm",
         r#"{"type":"perlin","frequency":0.03,"octaves":5,"seed":4}"#,
@@ -35,6 +35,11 @@ const BACKGROUNDS: [(&str, &str, &str); 3] = [
         "gabor",
         r#"{"type":"gabor","kind":"anisotropic","frequency":0.06,"orientation":0.7,"bandwidth":0.05,"impulses":32,"seed":7}"#,
         "sepia",
+    ),
+    (
+        "phasor",
+        r#"{"type":"phasor","profile":"sine","frequency":0.05,"orientation":0.4,"bandwidth":0.03,"impulses":8,"seed":5}"#,
+        "ocean",
     ),
 ];
 
