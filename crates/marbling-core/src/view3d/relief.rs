@@ -182,6 +182,13 @@ mod tests {
         }
     }
 
+    fn light(azimuth: f64) -> Light {
+        Light {
+            azimuth,
+            elevation: 30.0,
+        }
+    }
+
     fn grey_at(img: &RgbaImage, x: u32, y: u32) -> u8 {
         img.pixels[((y * img.width + x) * 4) as usize]
     }
@@ -216,33 +223,12 @@ mod tests {
     fn a_slope_is_bright_towards_the_light_and_dark_away() {
         let map = ramp(16);
         // The ramp rises to the right, so it faces left: bright in light from the left.
-        let from_left = render_relief(
-            &map,
-            Light {
-                azimuth: 180.0,
-                elevation: 30.0,
-            },
-            &view(0.0, 0.0),
-        );
-        let from_right = render_relief(
-            &map,
-            Light {
-                azimuth: 0.0,
-                elevation: 30.0,
-            },
-            &view(0.0, 0.0),
-        );
+        let from_left = render_relief(&map, light(180.0), &view(0.0, 0.0));
+        let from_right = render_relief(&map, light(0.0), &view(0.0, 0.0));
         let (l, r) = (grey_at(&from_left, 32, 24), grey_at(&from_right, 32, 24));
         assert!(l > r + 40, "from the left {l}, from the right {r}");
         // Turning the camera does not change the lighting of a point on the sheet.
-        let turned = render_relief(
-            &map,
-            Light {
-                azimuth: 180.0,
-                elevation: 30.0,
-            },
-            &view(20.0, 25.0),
-        );
+        let turned = render_relief(&map, light(180.0), &view(20.0, 25.0));
         assert!(grey_at(&turned, 32, 24).abs_diff(l) <= 2);
     }
 

@@ -32,29 +32,23 @@ enum Role {
     Layer,
 }
 
+/// A phasor's fields: a Gabor's, then `profile`.
+const GABOR_FIELDS: [&str; 9] = [
+    "kind",
+    "frequency",
+    "orientation",
+    "bandwidth",
+    "impulses",
+    "seed",
+    "orientation_field",
+    "frequency_field",
+    "profile",
+];
+
 fn fields_of(kind: &str) -> Option<&'static [&'static str]> {
     Some(match kind {
-        "gabor" => &[
-            "kind",
-            "frequency",
-            "orientation",
-            "bandwidth",
-            "impulses",
-            "seed",
-            "orientation_field",
-            "frequency_field",
-        ],
-        "phasor" => &[
-            "kind",
-            "frequency",
-            "orientation",
-            "bandwidth",
-            "impulses",
-            "seed",
-            "orientation_field",
-            "frequency_field",
-            "profile",
-        ],
+        "gabor" => &GABOR_FIELDS[..GABOR_FIELDS.len() - 1],
+        "phasor" => &GABOR_FIELDS,
         "perlin" | "value" => &["frequency", "octaves", "lacunarity", "persistence", "seed"],
         "worley" => &["frequency", "feature", "metric", "seed"],
         "white" => &["seed"],
