@@ -183,6 +183,32 @@ describe('v3 tools on webgl2', () => {
     assert.equal(penDrops.type, 'drops');
     assert.equal(penDrops.radius, 18, 'a full press did not double the drop (9 px set)');
     assert.ok(strokes.length >= 1 && strokes.every((o) => o.type === 'stylus' && o.wake === 1.6), `a light pen's wake is not 0.4 × 4 px: ${JSON.stringify(strokes.map((o) => o.wake))}`);
+
+    // MIDI (through the test hook, as Web MIDI delivers it): a note-on is one drop on the
+    // line across the middle, placed by pitch and sized by velocity; *Learn* binds a
+    // controller to the drop radius; one undo takes the last note's drop away.
+    const midi = (bytes) => page.evaluate((b) => window.marblingMidi(b), bytes);
+    const k = Number(await (await page.$('body')).getAttribute('data-ops'));
+    await midi([0x90, 60, 127]);
+    await waitOps(page, k + 1);
+    await clickControl(page, 'midi-learn-radius');
+    const frames = Number(await page.evaluate(() => document.body.dataset.frames));
+    await page.waitForFunction((n) => Number(document.body.dataset.frames) >= n, frames + 2, { timeout: READY_MS });
+    await midi([0xB0, 7, 0]);
+    await midi([0xB0, 7, 127]);
+    await midi([0x80, 96, 0]);
+    await midi([0x90, 96, 64]);
+    await waitOps(page, k + 2);
+    const played = JSON.parse((await download(page, 'save-json')).bytes.toString('utf8'));
+    const [note60, note96] = played.ops.slice(-2);
+    // Of the current ink (the pattern's colour cycling has moved it on from the first).
+    assert.deepEqual([note60.type, note96.type, note96.color], ['drop', 'drop', note60.color]);
+    const near = (a, b) => Math.abs(a - b) < 1e-9;
+    assert.ok(near(note60.center[0], 300 * 0.42) && near(note60.center[1], 100), `middle C at ${note60.center}`);
+    assert.ok(near(note60.radius, 9 * 1.75), `velocity 127 gave radius ${note60.radius}`);
+    assert.ok(near(note96.center[0], 270) && near(note96.radius, 300 * (0.25 + 1.5 * 64 / 127)), `C7 after controller 7 at 127: ${JSON.stringify(note96)}`);
+    await page.keyboard.press('Control+z');
+    await waitOps(page, k + 1);
     assert.deepEqual(errors, []);
     await context.close();
   });

@@ -418,6 +418,7 @@ impl eframe::App for MarblingApp {
         });
         with_frame!(self, |f| self.rendering.video.tick(&ctx, drawn, &mut f));
         with_frame!(self, |f| self.noise.poll_picked_data(&mut f));
+        with_frame!(self, |f| self.panels.midi.tick(&ctx, &mut f));
         self.check_fragment();
         self.handle_shortcuts(&ctx);
         self.advance_playback(&ctx);

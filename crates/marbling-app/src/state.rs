@@ -255,6 +255,8 @@ pub struct Panels {
     pub rail: crate::shell::tool_rail::ToolRail,
     /// The layout of the last frame (for `data-layout`).
     pub layout: crate::shell::layout::Layout,
+    /// MIDI in: notes make drops, controllers move parameters.
+    pub midi: crate::media::midi::MidiPanel,
 }
 
 impl Default for Panels {
@@ -275,6 +277,7 @@ impl Default for Panels {
             sheet: Default::default(),
             rail: Default::default(),
             layout: crate::shell::layout::Layout::Desktop,
+            midi: Default::default(),
         }
     }
 }

@@ -30,7 +30,7 @@ pub(crate) fn ui(ui: &mut egui::Ui, frame: &mut Frame<'_>) {
                 "Click to drop; hold to grow."
             });
             ui.add(
-                Slider::new(&mut s.drop_radius, 1.0..=300.0)
+                Slider::new(&mut s.drop_radius, crate::marbling::tools::DROP_RADIUS)
                     .text("radius")
                     .logarithmic(true),
             );

@@ -1,6 +1,8 @@
-//! Pictures, live video and the 3D view: backgrounds from outside the program and the
-//! design seen on objects.
+//! Pictures, live video, MIDI and the 3D view: backgrounds and input from outside the
+//! program and the design seen on objects.
 
+pub(crate) mod midi;
+pub(crate) mod midi_input;
 pub(crate) mod picture;
 pub(crate) mod recorder;
 pub(crate) mod video;

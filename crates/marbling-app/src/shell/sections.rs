@@ -24,6 +24,8 @@ pub(crate) enum Section {
     Picture,
     /// Live video as the background.
     Video,
+    /// MIDI in: notes make drops.
+    Midi,
     /// Undo, redo, the gesture list and the player.
     History,
     /// The designs that New, Open, a link or the gallery replaced.
@@ -53,7 +55,7 @@ const fn row(section: Section, marbling: bool, noise: bool, tab: SheetTab, group
 }
 
 /// Every section, in panel order.
-const ROWS: [Row; 10] = [
+const ROWS: [Row; 11] = [
     row(Section::File, true, true, SheetTab::Files, 0),
     // The noise playground exports its own PNG (one Export PNG per tab).
     row(Section::Export, true, false, SheetTab::Files, 1),
@@ -63,6 +65,7 @@ const ROWS: [Row; 10] = [
     row(Section::Ink, true, false, SheetTab::Ink, 4),
     row(Section::Picture, true, false, SheetTab::Ink, 4),
     row(Section::Video, true, false, SheetTab::Ink, 4),
+    row(Section::Midi, true, false, SheetTab::Ink, 4),
     row(Section::History, true, false, SheetTab::History, 5),
     row(Section::Recent, true, true, SheetTab::Files, 6),
 ];

@@ -47,6 +47,7 @@ impl MarblingApp {
             Section::Ink => with_frame!(self, |f| self.panels.ink.ui(ui, &mut f)),
             Section::Picture => with_frame!(self, |f| self.panels.pictures.ui(ui, &mut f)),
             Section::Video => with_frame!(self, |f| self.rendering.video.ui(ui, &mut f)),
+            Section::Midi => with_frame!(self, |f| self.panels.midi.ui(ui, &mut f)),
             Section::History => with_frame!(self, |f| self.panels.history.ui(ui, &mut f)),
             Section::Recent => {
                 let recent = &self.session.recent;

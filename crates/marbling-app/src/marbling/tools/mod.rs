@@ -104,6 +104,9 @@ pub const TOOL_KEYS: [egui::Key; 10] = [
     egui::Key::Num0,
 ];
 
+/// The drop tool's radius slider, design pixels (MIDI controllers move within it too).
+pub const DROP_RADIUS: std::ops::RangeInclusive<f64> = 1.0..=300.0;
+
 /// Every tool parameter of the side panel (design pixels unless stated). Stored with
 /// the other preferences (`prefs.rs`); a missing field takes its default.
 #[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
