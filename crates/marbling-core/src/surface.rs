@@ -77,10 +77,11 @@ impl NoiseLayer {
         Self::checked(json.clone(), spec)
     }
 
-    /// A spec made in code (its values within `marbling_noise::ranges`, as the editors
-    /// keep them), for use in a design; its document form is [`NoiseSpec::to_value`].
+    /// A spec made in code, for use in a design: written ([`NoiseSpec::to_value`]) and
+    /// read back, so every range of the spec grammar is checked as for a document (a
+    /// typed spec can hold any number: the reader is where the ranges are enforced).
     pub fn from_spec(spec: &NoiseSpec) -> Result<Self, Vec<FieldError>> {
-        Self::checked(spec.to_value(), spec.clone())
+        Self::from_value(&spec.to_value())
     }
 
     /// `spec` (written as `json`) if a design may hold it: no tiling, palette, blend or

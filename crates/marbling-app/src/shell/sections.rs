@@ -107,6 +107,7 @@ mod tests {
                 (Ink, true),
                 (Picture, false),
                 (Video, false),
+                (Midi, false),
                 (History, true),
                 (Recent, true),
             ]
