@@ -65,9 +65,10 @@ const ROWS: [Row; 11] = [
     row(Section::Ink, true, false, SheetTab::Ink, 4),
     row(Section::Picture, true, false, SheetTab::Ink, 4),
     row(Section::Video, true, false, SheetTab::Ink, 4),
-    row(Section::Midi, true, false, SheetTab::Ink, 4),
     row(Section::History, true, false, SheetTab::History, 5),
-    row(Section::Recent, true, true, SheetTab::Files, 6),
+    // Below the history: a keyboard player's section, out of the way of the rest.
+    row(Section::Midi, true, false, SheetTab::Ink, 6),
+    row(Section::Recent, true, true, SheetTab::Files, 7),
 ];
 
 /// The sections shown in `mode` (only those of `tab` when given: the bottom sheet), in
@@ -107,8 +108,8 @@ mod tests {
                 (Ink, true),
                 (Picture, false),
                 (Video, false),
-                (Midi, false),
                 (History, true),
+                (Midi, true),
                 (Recent, true),
             ]
         );
