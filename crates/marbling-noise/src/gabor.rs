@@ -202,14 +202,6 @@ impl Gabor {
         self.sum::<false>(x, y).0
     }
 
-    /// The phase φ(x) = arg Σ wᵢ g_c(x − xᵢ) of the complex kernels
-    /// g_c = e^(−πa²r²)·e^(i·arg), radians in (−π, π] (0 where no kernel reaches).
-    #[must_use]
-    pub fn phase(&self, x: f32, y: f32) -> f32 {
-        let (re, im) = self.sum::<true>(x, y);
-        im.atan2(re)
-    }
-
     /// (Σ wᵢ e^(−πa²r²) cos argᵢ, Σ wᵢ e^(−πa²r²) sin argᵢ); the imaginary part only
     /// when `COMPLEX`.
     #[inline]

@@ -55,12 +55,6 @@ impl ReliefMap {
         })
     }
 
-    /// Side of the grid.
-    #[must_use]
-    pub fn side(&self) -> usize {
-        self.side
-    }
-
     /// Bilinear normal (renormalised) and linear colour at (u, v) ∈ [0, 1]², clamped.
     fn at(&self, u: f64, v: f64) -> ([f32; 3], [f32; 3]) {
         let n = self.side;
