@@ -8,9 +8,9 @@ pub const MAX_SIDE: u32 = 16_384;
 pub const MAX_OPS: usize = 100_000;
 /// The newest schema version this crate writes (designs that need none of its
 /// additions are still written as version 1, see [`Design::version`]).
-pub const CURRENT_VERSION: u64 = 3;
+pub const CURRENT_VERSION: u64 = 4;
 /// Every schema version this crate reads.
-pub const SUPPORTED_VERSIONS: &[u64] = &[1, 2, 3];
+pub const SUPPORTED_VERSIONS: &[u64] = &[1, 2, 3, 4];
 
 /// A marbled design: its history of operations, oldest first, on a plain or noise
 /// background, with optional grain overlays (schema v2; see [`crate::surface`] for
@@ -62,11 +62,13 @@ impl Design {
         }
     }
 
-    /// The schema version this design is written as: 3 when it holds a v3 op, else 2
-    /// when it has a noise background or overlays, else 1 (so v1 and v2 documents and
-    /// share links stay byte-identical).
+    /// The schema version this design is written as: 4 when it holds a flow, else 3
+    /// when it holds a v3 op, else 2 when it has a noise background or overlays, else 1
+    /// (so v1, v2 and v3 documents and share links stay byte-identical).
     pub fn version(&self) -> u64 {
-        if self.ops.iter().any(Op::is_v3) {
+        if self.ops.iter().any(Op::is_v4) {
+            4
+        } else if self.ops.iter().any(Op::is_v3) {
             3
         } else if self.uses_v2() {
             2

@@ -27,11 +27,13 @@ pub enum OpKind {
     Jiggle = 8,
     /// A stylus stroke.
     Stylus = 9,
+    /// A flow along a curl noise.
+    Flow = 10,
 }
 
 impl OpKind {
     /// Every kind, in code order.
-    pub const ALL: [OpKind; 10] = [
+    pub const ALL: [OpKind; 11] = [
         OpKind::Drop,
         OpKind::Spray,
         OpKind::Comb,
@@ -42,6 +44,7 @@ impl OpKind {
         OpKind::Tines,
         OpKind::Jiggle,
         OpKind::Stylus,
+        OpKind::Flow,
     ];
 
     /// The code carried to the GPU.
@@ -67,6 +70,7 @@ impl OpKind {
             OpKind::Tines => "KIND_TINES",
             OpKind::Jiggle => "KIND_JIGGLE",
             OpKind::Stylus => "KIND_STYLUS",
+            OpKind::Flow => "KIND_FLOW",
         }
     }
 }
@@ -81,6 +85,6 @@ mod tests {
             assert_eq!(k.code() as usize, i);
             assert_eq!(OpKind::from_code(k.code()), Some(k));
         }
-        assert_eq!(OpKind::from_code(10), None);
+        assert_eq!(OpKind::from_code(11), None);
     }
 }

@@ -100,7 +100,7 @@ impl Walker {
                 CompiledOp::Swirl { .. } => (x, y) = swirl_turn(x, y, s, -1.0),
                 CompiledOp::Rigid { .. } => (x, y) = rigid_move(x, y, s, -1.0),
                 CompiledOp::Tines { .. } => (x, y) = tines_shift(x, y, s, -1.0),
-                CompiledOp::Jiggle { .. } | CompiledOp::Stylus { .. } => {
+                CompiledOp::Jiggle { .. } | CompiledOp::Stylus { .. } | CompiledOp::Flow { .. } => {
                     let q = s.inverse(Point::new(x, y)).unwrap_or_default();
                     (x, y) = (q.x, q.y);
                 }
@@ -172,6 +172,10 @@ impl Walker {
                 CompiledOp::Tines { .. } => apply(xs, ys, |x, y| tines_shift(x, y, s, -1.0)),
                 CompiledOp::Jiggle { .. } => apply(xs, ys, |x, y| {
                     let q = jiggle_back(Point::new(x, y), s);
+                    (q.x, q.y)
+                }),
+                CompiledOp::Flow { ref field } => apply(xs, ys, |x, y| {
+                    let q = field.inverse(Point::new(x, y));
                     (q.x, q.y)
                 }),
                 CompiledOp::Stylus { ref segments } => {

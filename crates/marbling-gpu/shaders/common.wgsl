@@ -10,7 +10,8 @@
 //   KIND_CIRCULAR, KIND_VORTEX: a = (kind, cx, cy, r),      b = (αλ, λ, 0, 0)
 //   KIND_RIGID (shift, turn):   a = (kind, cx, cy, sin θ),  b = (cos θ, ox, oy, 0)
 //   KIND_JIGGLE:           a = (kind, ux, uy, 2π/λ),        b = (A, B, φ₀ mod 2π, 0)
-// KIND_TINES and KIND_STYLUS span several records; ops_v3.wgsl walks them and, in the
+// KIND_TINES, KIND_STYLUS and KIND_FLOW span several records; ops_v3.wgsl walks them
+// (a flow with flow.wgsl) and, in the
 // exact walk, KIND_RIGID and KIND_JIGGLE (the live preview calls rigid_back and
 // jiggle_back directly).
 // Packed sRGB is r·65536 + g·256 + b, exact in an f32 (24 bits).
@@ -25,6 +26,7 @@ const KIND_RIGID: u32 = 6u;
 const KIND_TINES: u32 = 7u;
 const KIND_JIGGLE: u32 = 8u;
 const KIND_STYLUS: u32 = 9u;
+const KIND_FLOW: u32 = 10u;
 
 // Walks design point `p` back through the op (a, b): returns (x, y, covered), where
 // covered = 1.0 when `p` lies in the op's ink (the walk stops there with colour `b`),

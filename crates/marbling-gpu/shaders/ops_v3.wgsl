@@ -13,6 +13,7 @@
 //     records, H2 = a (T, smallest offset, largest offset, H1 index − tips' index),
 //     b (records to step back over: 2, plus the tips' for the first segment, ℓ, 0, 0)
 //     and the header H1 = a (kind, start x, start y, n.x), b (n.y, δ, N, L).
+//   KIND_FLOW: see flow.wgsl (or its stand-in flow_off.wgsl, in variants without a flow).
 
 const V3_ENABLED: bool = true;
 
@@ -34,6 +35,9 @@ fn v3_back(at: u32, r: OpRecord, p: vec2<f32>) -> vec3<f32> {
     }
     if kind == KIND_TINES {
         return vec3<f32>(tines_back(at, r, p), f32(1u + data_records(u32(r.b.w))));
+    }
+    if kind == KIND_FLOW {
+        return vec3<f32>(flow_back(at, r, p), f32(1u + data_records(2u * u32(r.b.x))));
     }
     let h2 = op_record(at - 1u);
     return vec3<f32>(stylus_back(at, r, h2, p), h2.b.x);

@@ -55,8 +55,8 @@ impl GpuOp {
 }
 
 impl GpuOp {
-    /// The one record of an op of a one-record kind (every kind but [`OpKind::Tines`]
-    /// and [`OpKind::Stylus`]); `None` for those two.
+    /// The one record of an op of a one-record kind (every kind but [`OpKind::Tines`],
+    /// [`OpKind::Stylus`] and [`OpKind::Flow`]); `None` for those three.
     pub fn single(op: &CompiledOp) -> Option<Self> {
         let kind = op.kind().code() as f32;
         let f = |v: f64| v as f32;
@@ -116,7 +116,9 @@ impl GpuOp {
                 [kind, f(ux), f(uy), f(k)],
                 [f(along), f(across), f(phase.rem_euclid(TAU)), 0.0],
             ),
-            CompiledOp::Tines { .. } | CompiledOp::Stylus { .. } => return None,
+            CompiledOp::Tines { .. } | CompiledOp::Stylus { .. } | CompiledOp::Flow { .. } => {
+                return None;
+            }
         };
         Some(Self { a, b })
     }
@@ -142,6 +144,9 @@ fn offset_records(offsets: &[f64], out: &mut Vec<GpuOp>) {
 /// - [`OpKind::Tines`]: ⌈T/8⌉ records of tine offsets, then the header.
 /// - [`OpKind::Stylus`]: for more than one tip, ⌈T/8⌉ records of tip offsets; then per
 ///   segment two records, `H2` and the header `H1` (see `shaders/records.wgsl`).
+/// - [`OpKind::Flow`]: ⌈octaves/4⌉ records of (frequency, amplitude/σ) per octave,
+///   then the header a = (kind, U/(2πf), Δt, N), b = (octaves, basis: 0 Perlin and
+///   1 value, the first octave's seed's high and low 16 bits).
 /// - every other kind: its one record ([`GpuOp::single`]).
 pub fn compiled_records(op: &CompiledOp, out: &mut Vec<GpuOp>) {
     let f = |v: f64| v as f32;
@@ -190,6 +195,30 @@ pub fn compiled_records(op: &CompiledOp, out: &mut Vec<GpuOp>) {
                     b: [f(s.n.y), f(s.delta), s.steps as f32, f(s.wake)],
                 });
             }
+        }
+        CompiledOp::Flow { field } => {
+            let octaves = field.octaves();
+            let pairs: Vec<f64> = octaves.iter().flat_map(|&(f, a, _)| [f, a]).collect();
+            offset_records(&pairs, out);
+            let seed = octaves.first().map_or(0, |o| o.2);
+            let basis = match field.basis() {
+                marbling_noise::Basis::Perlin => 0.0,
+                marbling_noise::Basis::Value => 1.0,
+            };
+            out.push(GpuOp {
+                a: [
+                    OpKind::Flow.code() as f32,
+                    f(field.factor),
+                    f(field.dt),
+                    field.steps as f32,
+                ],
+                b: [
+                    octaves.len() as f32,
+                    basis,
+                    (seed >> 16) as f32,
+                    (seed & 0xffff) as f32,
+                ],
+            });
         }
         single => out.extend(GpuOp::single(single)),
     }

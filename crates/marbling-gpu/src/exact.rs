@@ -58,6 +58,8 @@ pub struct PreparedDesign {
     textured: bool,
     /// Whether it holds ops only the v3 walk knows ([`Op::walks_v3`]).
     v3: bool,
+    /// Whether it holds a flow ([`Op::is_v4`]).
+    flow: bool,
     uniform: wgpu::Buffer,
     bind_group: wgpu::BindGroup,
     params: RenderParams,
@@ -204,6 +206,7 @@ impl ExactRenderer {
             live_image: None,
             textured: false,
             v3: false,
+            flow: false,
             uniform,
             bind_group,
             params: RenderParams::new(
@@ -291,6 +294,7 @@ impl ExactRenderer {
         }
         prepared.textured = surface_params.needs_noise();
         prepared.v3 = prepared.uploaded.iter().any(Op::walks_v3);
+        prepared.flow = prepared.uploaded.iter().any(Op::is_v4);
         self.variant_pipeline(device, prepared.variant());
         prepared.background = design.background;
         (prepared.width, prepared.height) = (design.width, design.height);
@@ -551,6 +555,7 @@ impl PreparedDesign {
                 NoiseKinds::NONE
             },
             v3: self.v3,
+            flow: self.flow,
         }
     }
 

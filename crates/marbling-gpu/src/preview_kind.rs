@@ -51,11 +51,11 @@ impl PreviewKind {
             Some(OpKind::Circular | OpKind::Vortex) => PreviewKind::Swirl,
             Some(OpKind::Rigid) => PreviewKind::Rigid,
             Some(OpKind::Jiggle) => PreviewKind::Jiggle,
-            // No pending op: the cache alone. Finite combs and styli span several
+            // No pending op: the cache alone. Finite combs, styli and flows span several
             // records and are never a pending op ([`crate::encode::encode_op`] gives
             // none for them; the app draws them exactly), nor are records of unknown
             // kind made.
-            Some(OpKind::Tines | OpKind::Stylus) | None => PreviewKind::Idle,
+            Some(OpKind::Tines | OpKind::Stylus | OpKind::Flow) | None => PreviewKind::Idle,
         }
     }
 

@@ -19,6 +19,10 @@ pub const RECORDS: &str = include_str!("../shaders/records.wgsl");
 pub const OPS_V3: &str = include_str!("../shaders/ops_v3.wgsl");
 /// `shaders/ops_v3_off.wgsl`: stand-in for `ops_v3.wgsl` in variants without v3 ops.
 pub const OPS_V3_OFF: &str = include_str!("../shaders/ops_v3_off.wgsl");
+/// `shaders/flow.wgsl`: the exact walk of schema v4's flow (needs the noise lattice).
+pub const FLOW: &str = include_str!("../shaders/flow.wgsl");
+/// `shaders/flow_off.wgsl`: stand-in for `flow.wgsl` in v3 variants without a flow.
+pub const FLOW_OFF: &str = include_str!("../shaders/flow_off.wgsl");
 /// `shaders/image.wgsl`: the image background's sampling (every variant).
 pub const IMAGE: &str = include_str!("../shaders/image.wgsl");
 /// `shaders/surface.wgsl`: noise background, pigment and paper grain.
@@ -60,6 +64,8 @@ pub struct ExactVariant {
     pub noises: NoiseKinds,
     /// With schema v3's ops (`ops_v3.wgsl`).
     pub v3: bool,
+    /// With schema v4's flow (`flow.wgsl` and the noise lattice; only with `v3`).
+    pub flow: bool,
 }
 
 impl ExactVariant {
@@ -67,22 +73,37 @@ impl ExactVariant {
     pub const PLAIN: ExactVariant = ExactVariant {
         noises: NoiseKinds::NONE,
         v3: false,
+        flow: false,
     };
 
-    /// The four kinds of module: plain, with every noise, with v3 ops, with both.
-    pub const ALL: [ExactVariant; 4] = [
+    /// The six kinds of module: plain, with every noise, with v3 ops, with both, and
+    /// the last two with the flow.
+    pub const ALL: [ExactVariant; 6] = [
         ExactVariant::PLAIN,
         ExactVariant {
             noises: NoiseKinds::ALL,
             v3: false,
+            flow: false,
         },
         ExactVariant {
             noises: NoiseKinds::NONE,
             v3: true,
+            flow: false,
         },
         ExactVariant {
             noises: NoiseKinds::ALL,
             v3: true,
+            flow: false,
+        },
+        ExactVariant {
+            noises: NoiseKinds::NONE,
+            v3: true,
+            flow: true,
+        },
+        ExactVariant {
+            noises: NoiseKinds::ALL,
+            v3: true,
+            flow: true,
         },
     ];
 
@@ -91,16 +112,19 @@ impl ExactVariant {
         !self.noises.is_empty()
     }
 
-    /// Short name, for labels and test messages: `plain`, `v3`, `surface(gabor)`, …
+    /// Short name, for labels and test messages: `plain`, `v3`, `v3+flow`,
+    /// `surface(gabor)`, …
     pub fn name(self) -> String {
-        match (self.surface(), self.v3) {
-            (false, false) => "plain".to_owned(),
-            (false, true) => "v3".to_owned(),
-            (true, v3) => format!(
-                "surface({}){}",
-                self.noises.name(),
-                if v3 { "+v3" } else { "" }
-            ),
+        let ops = match (self.v3, self.flow) {
+            (false, _) => "",
+            (true, false) => "v3",
+            (true, true) => "v3+flow",
+        };
+        match (self.surface(), ops) {
+            (false, "") => "plain".to_owned(),
+            (false, ops) => ops.to_owned(),
+            (true, "") => format!("surface({})", self.noises.name()),
+            (true, ops) => format!("surface({})+{ops}", self.noises.name()),
         }
     }
 
@@ -110,6 +134,13 @@ impl ExactVariant {
             return RENDER_PLAIN_WGSL.to_owned();
         }
         let v3 = if self.v3 { OPS_V3 } else { OPS_V3_OFF };
+        let flow = match (self.v3 && self.flow, self.surface()) {
+            (false, _) if self.v3 => FLOW_OFF.to_owned(),
+            (false, _) => String::new(),
+            // The surface's noise module holds the lattice already.
+            (true, true) => FLOW.to_owned(),
+            (true, false) => [flow_lattice().as_str(), FLOW].join("\n"),
+        };
         let surface = if self.surface() {
             let noise =
                 marbling_noise::wgsl::module_for("noise", self.noises).unwrap_or_else(|| {
@@ -119,7 +150,7 @@ impl ExactVariant {
         } else {
             SURFACE_OFF.to_owned()
         };
-        [COMMON, RECORDS, v3, IMAGE, &surface, RENDER].join("\n")
+        [COMMON, RECORDS, v3, &flow, IMAGE, &surface, RENDER].join("\n")
     }
 
     /// The render module with the compute entry point.
@@ -159,9 +190,23 @@ pub const PRESENT_WGSL: &str = concat!(
     include_str!("../shaders/present.wgsl")
 );
 
-/// The exact renderer with everything: schema v2 surfaces and schema v3 ops.
+/// The noise lattice `flow.wgsl` needs: marbling-noise's hash, Perlin and value files.
+fn flow_lattice() -> String {
+    marbling_noise::wgsl::module("value").unwrap_or_else(|| {
+        unreachable!("marbling-noise always provides its value module");
+    })
+}
+
+/// The walk over op records with every kind: `common.wgsl`, `records.wgsl`,
+/// `ops_v3.wgsl`, the noise lattice and `flow.wgsl` (the per-op tests append their
+/// entry point).
+pub fn walk_wgsl() -> String {
+    [COMMON, RECORDS, OPS_V3, &flow_lattice(), FLOW].join("\n")
+}
+
+/// The exact renderer with everything: schema v2 surfaces, schema v3 ops and the flow.
 pub fn render_wgsl() -> String {
-    ExactVariant::ALL[3].render_wgsl()
+    ExactVariant::ALL[5].render_wgsl()
 }
 
 /// Every render-pipeline module (vertex + fragment; WebGPU and WebGL2) as (name,
@@ -171,6 +216,7 @@ pub fn all() -> Vec<(String, String)> {
     let one_noise = NoiseKind::ALL.map(|k| ExactVariant {
         noises: NoiseKinds::NONE.with(k),
         v3: false,
+        flow: false,
     });
     let mut out: Vec<(String, String)> = ExactVariant::ALL
         .iter()

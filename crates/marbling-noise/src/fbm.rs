@@ -115,6 +115,21 @@ impl Fbm {
         }
     }
 
+    /// Its octaves as (frequency in cycles per output pixel, amplitude, seed), first
+    /// octave first: the numbers [`Fbm::eval`] sums (the f64 twin [`crate::Fbm64`] reads
+    /// them here, so both sum the same octaves).
+    pub fn octaves(&self) -> impl Iterator<Item = (f32, f32, u32)> + '_ {
+        self.octaves[..self.count]
+            .iter()
+            .map(|o| (o.frequency, o.amplitude, o.seed))
+    }
+
+    /// 1/σ: the factor that brings the sum of octaves to unit variance.
+    #[must_use]
+    pub fn inv_std(&self) -> f32 {
+        self.inv_std
+    }
+
     /// The parameters this fBm was built from.
     #[must_use]
     pub fn params(&self) -> &FbmParams {

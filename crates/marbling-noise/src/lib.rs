@@ -21,6 +21,7 @@ mod curl;
 mod curve;
 mod data;
 mod fbm;
+mod fbm64;
 mod fibers;
 mod field;
 mod gabor;
@@ -51,6 +52,7 @@ pub use data::{
     WEATHER_TEMPERATURE,
 };
 pub use fbm::{Basis, Fbm, FbmParams, MAX_OCTAVES, OCTAVE_SEED_STEP};
+pub use fbm64::{Fbm64, Jet, VALUE_GRADIENT_BOUND};
 pub use fibers::{
     FiberLayout, FiberParams, Fibers, IMPURITY_SEED, Impurities, MAX_FIBERS_PER_CELL,
 };
@@ -60,8 +62,8 @@ pub use hash::CellRng;
 pub use layer::{COMBINES, Combine, Layer, MAX_LAYERS};
 pub use maps::{PngContent, SURFACE_MAPS, SurfaceMap, surface_normal};
 pub use perlin::{
-    GRADIENTS, PERLIN_DERIVATIVE_VARIANCE, PERLIN_VARIANCE, fade, perlin2, perlin2_periodic,
-    perlin2_with_gradient,
+    GRADIENTS, PERLIN_DERIVATIVE_VARIANCE, PERLIN_GRADIENT_BOUND, PERLIN_VARIANCE, fade, perlin2,
+    perlin2_periodic, perlin2_with_gradient,
 };
 pub use phasor::PhasorProfile;
 pub use ramp::{ColorRamp, PALETTES, Rgb, parse_hex};

@@ -262,6 +262,29 @@ pub struct NoiseSpec {
 }
 
 impl NoiseSpec {
+    /// `source` alone: untiled, the default transfer, no layers, palette or blend.
+    #[must_use]
+    pub fn from_source(source: Source) -> Self {
+        Self {
+            source,
+            tile: Tile::Off,
+            transfer: None,
+            layers: Vec::new(),
+            palette: None,
+            blend: None,
+        }
+    }
+
+    /// Whether the spec is its source alone ([`NoiseSpec::from_source`]).
+    #[must_use]
+    pub fn is_plain(&self) -> bool {
+        self.tile == Tile::Off
+            && self.transfer.is_none()
+            && self.layers.is_empty()
+            && self.palette.is_none()
+            && self.blend.is_none()
+    }
+
     /// Parses and checks a spec; every problem is reported with its path.
     pub fn from_json(text: &str) -> Result<Self, SpecError> {
         let value = marbling_json::parse(text).map_err(|e| SpecError::Syntax {

@@ -9,8 +9,9 @@ use crate::perlin::fade;
 /// fade of a uniform t, = (1/3)·(181/231)² (exact; checked by a test).
 pub const VALUE_VARIANCE: f32 = (1.0 / 3.0) * (181.0 / 231.0) * (181.0 / 231.0);
 
+/// The value at lattice corner (ix, iy), in [−1, 1].
 #[inline(always)]
-fn corner(ix: i32, iy: i32, seed: u32) -> f32 {
+pub(crate) fn corner(ix: i32, iy: i32, seed: u32) -> f32 {
     unit_f32(lattice_hash(ix, iy, seed)) * 2.0 - 1.0
 }
 

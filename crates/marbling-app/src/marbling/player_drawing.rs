@@ -126,6 +126,22 @@ pub fn draw_tool(
                 at(mid + u * j.wavelength * e),
             );
         }
+        Op::Flow(f) => {
+            // Floating markers on a 6×4 grid, each trailing the path it has streamed.
+            let field = f.field();
+            for j in 0..4 {
+                for i in 0..6 {
+                    let start = Point::new(
+                        w * (f64::from(i) + 0.5) / 6.0,
+                        h * (f64::from(j) + 0.5) / 4.0,
+                    );
+                    let path = field.path(start, e, 24);
+                    let head = *path.last().unwrap_or(&start);
+                    polyline(painter, path.iter().map(|p| at(*p)).collect());
+                    painter.circle_filled(at(head), 3.0, Color32::WHITE);
+                }
+            }
+        }
     }
 }
 

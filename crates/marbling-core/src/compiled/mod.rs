@@ -7,7 +7,7 @@
 //! formulas are those of [`Op::forward`] and [`Op::inverse`] (results agree to
 //! rounding, f64 design pixels).
 
-use crate::ops::StylusSegment;
+use crate::ops::{FlowField, StylusSegment};
 use crate::{Op, OpKind, Rgb8};
 use kurbo::{Point, Vec2};
 use std::f64::consts::TAU;
@@ -146,6 +146,11 @@ pub enum CompiledOp {
         /// The path's segments of non-zero length.
         segments: Arc<[StylusSegment]>,
     },
+    /// Flow along a curl noise: its sub-steps.
+    Flow {
+        /// The compiled flow.
+        field: Arc<FlowField>,
+    },
 }
 
 impl CompiledOp {
@@ -232,6 +237,9 @@ impl CompiledOp {
             Op::Stylus(s) => Self::Stylus {
                 segments: s.segments().into(),
             },
+            Op::Flow(f) => Self::Flow {
+                field: Arc::new(f.field()),
+            },
             Op::Drops(_) | Op::Sprays(_) => {
                 unreachable!("drop patterns compile to one disc per drop (CompiledOp::push)")
             }
@@ -294,6 +302,7 @@ impl CompiledOp {
             Self::Tines { .. } => OpKind::Tines,
             Self::Jiggle { .. } => OpKind::Jiggle,
             Self::Stylus { .. } => OpKind::Stylus,
+            Self::Flow { .. } => OpKind::Flow,
         }
     }
 
@@ -305,6 +314,9 @@ impl CompiledOp {
             Self::Tines { offsets, .. } => offsets.len() as u64,
             Self::Stylus { segments } => crate::ops::STYLUS_SEGMENT_COST * segments.len() as u64,
             Self::Jiggle { .. } => crate::ops::JIGGLE_COST,
+            Self::Flow { field } => {
+                crate::ops::flow_cost(field.steps, field.octaves().len() as u32)
+            }
             _ => 1,
         }
     }
@@ -352,6 +364,7 @@ impl CompiledOp {
             Self::Stylus { ref segments } => {
                 return segments.iter().fold(p, |p, s| s.forward(p));
             }
+            Self::Flow { ref field } => return field.forward(p),
         };
         Point::new(x, y)
     }
@@ -383,6 +396,7 @@ impl CompiledOp {
             Self::Stylus { ref segments } => {
                 return Some(segments.iter().rev().fold(p, |p, s| s.inverse(p)));
             }
+            Self::Flow { ref field } => return Some(field.inverse(p)),
         };
         Some(Point::new(x, y))
     }

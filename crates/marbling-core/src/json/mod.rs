@@ -13,6 +13,10 @@
 //! Schema v3 (`"version": 3`) adds seven op types (shift, turn, comb, drops, sprays,
 //! jiggle, stylus; see [`crate::Op`]). A design is written with the lowest version that
 //! holds it: 1 when it uses neither v2's surfaces nor v3's ops.
+//!
+//! Schema v4 (`"version": 4`) adds the `flow` op
+//! (`{"type": "flow", "noise": SPEC, "strength": U, "time": T}`, SPEC a `perlin` or
+//! `value` spec of `marbling-noise`; see [`crate::Flow`]).
 
 mod op_fields;
 mod read;

@@ -6,6 +6,7 @@ use super::read::Reader;
 use crate::Rgb8;
 use kurbo::{Point, Vec2};
 use marbling_json::{join, short};
+use marbling_noise::{NoiseSpec, SpecError};
 use serde_json::{Map, Value, json};
 use std::sync::Arc;
 
@@ -64,6 +65,26 @@ impl FieldReader<'_> {
                 r.pair_value(p, v).map(Point::from)
             })
             .map(Arc::from)
+    }
+
+    /// A noise spec in the `marbling-noise` format, its problems reported under the
+    /// field (`ops[4].noise.octaves`).
+    pub(crate) fn noise(&mut self, name: &str) -> Option<NoiseSpec> {
+        let v = self.reader.field(self.path, self.obj, name)?;
+        let path = join(self.path, name);
+        match NoiseSpec::from_value(v) {
+            Ok(spec) => Some(spec),
+            Err(SpecError::Invalid(list)) => {
+                self.reader
+                    .errors
+                    .extend(list.into_iter().map(|p| p.under(&path)));
+                None
+            }
+            Err(other) => {
+                self.reader.push(path, other.to_string());
+                None
+            }
+        }
     }
 
     /// A list of colours `"#rrggbb"`.
@@ -140,6 +161,11 @@ impl FieldWriter {
             name,
             Value::Array(list.iter().map(|p| pair(p.x, p.y)).collect()),
         );
+    }
+
+    /// A noise spec, as `marbling-noise` writes it.
+    pub(crate) fn noise(&mut self, name: &str, spec: &NoiseSpec) {
+        self.put(name, spec.to_value());
     }
 
     /// A list of colours `"#rrggbb"`.

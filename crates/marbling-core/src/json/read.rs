@@ -2,7 +2,7 @@
 
 use super::op_fields::FieldReader;
 use crate::design::{CURRENT_VERSION, SUPPORTED_VERSIONS};
-use crate::ops::{OP_TYPES_V3, op_fields};
+use crate::ops::{OP_TYPES_V3, OP_TYPES_V4, op_fields};
 use crate::validate::{Checker, FieldError};
 use crate::{Design, GestureSpan, Op, Recipe, Rgb8};
 use marbling_json::{PathReader, join, short, type_of};
@@ -140,11 +140,18 @@ impl Reader {
         };
         self.object(&path, v, fields)?;
         let version = self.version;
-        if version < 3 && OP_TYPES_V3.contains(&kind) {
+        let needs = if OP_TYPES_V4.contains(&kind) {
+            4
+        } else if OP_TYPES_V3.contains(&kind) {
+            3
+        } else {
+            1
+        };
+        if version < needs {
             self.push(
                 format!("{path}.type"),
                 format!(
-                    "op type {kind:?} needs \"version\": 3 (this document is version {version})"
+                    "op type {kind:?} needs \"version\": {needs} (this document is version {version})"
                 ),
             );
         }

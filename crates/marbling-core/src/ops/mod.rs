@@ -6,6 +6,7 @@ mod circular;
 mod comb;
 mod drop;
 mod drops;
+mod flow;
 mod jiggle;
 mod op_type;
 mod rake;
@@ -23,11 +24,12 @@ pub use circular::Circular;
 pub use comb::{Comb, MAX_COMB_TINES};
 pub use drop::Drop;
 pub use drops::{DropSet, MAX_DROPS, Radii};
+pub use flow::{FLOW_STEP_PX, Flow, FlowField, MAX_FLOW_STEPS};
 pub use jiggle::Jiggle;
 pub(crate) use jiggle::solve_kepler;
 pub(crate) use op_type::OpType;
 pub use rake::Rake;
-pub use rounding::{ANGLE_STEP, LENGTH_STEP};
+pub use rounding::{ANGLE_STEP, LENGTH_STEP, TIME_STEP};
 pub use shift::Shift;
 pub use spray::Spray;
 pub use stylus::{
@@ -77,6 +79,8 @@ pub enum Op {
     Jiggle(Jiggle),
     /// A free-hand stroke of one or more tips (schema v3).
     Stylus(Stylus),
+    /// The tank streaming along a curl noise for a while (schema v4).
+    Flow(Flow),
 }
 
 /// Smallest radius of a drop scaled toward 0 ([`Op::scaled`]), design pixels: it stays
@@ -87,6 +91,9 @@ pub(crate) const MIN_SCALED_RADIUS: f64 = 1e-6;
 pub const STYLUS_SEGMENT_COST: u64 = 8;
 /// Walk cost of a jiggle, in simple ops ([`Op::walk_cost`]).
 pub const JIGGLE_COST: u64 = 8;
+/// Walk cost of one sub-step of a flow per octave of its noise, in simple ops
+/// ([`Op::walk_cost`]).
+pub const FLOW_OCTAVE_STEP_COST: u64 = 4;
 
 /// Result of walking one point back through one operation.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -96,6 +103,9 @@ pub enum Back {
     /// The point lies in ink laid by the operation; the walk stops with this colour.
     Ink(Rgb8),
 }
+
+/// The op types schema v4 adds.
+pub(crate) const OP_TYPES_V4: [&str; 1] = ["flow"];
 
 /// The op types schema v3 adds.
 pub(crate) const OP_TYPES_V3: [&str; 7] = [
@@ -208,6 +218,7 @@ op_types! {
     "sprays" => Sprays(DropSet),
     "jiggle" => Jiggle(Jiggle),
     "stylus" => Stylus(Stylus),
+    "flow" => Flow(Flow),
 }
 
 impl Op {
@@ -216,10 +227,16 @@ impl Op {
         OP_TYPES_V3.contains(&self.type_name())
     }
 
-    /// Whether the GPU walk needs the v3 code for this op: every v3 type but the drop
-    /// and spray patterns, which compile to plain discs (see [`crate::CompiledOp::push`]).
+    /// Whether the op is one schema v4 adds (a design holding one is written as v4).
+    pub fn is_v4(&self) -> bool {
+        OP_TYPES_V4.contains(&self.type_name())
+    }
+
+    /// Whether the GPU walk needs the v3 code for this op: every v3 and v4 type but the
+    /// drop and spray patterns, which compile to plain discs (see
+    /// [`crate::CompiledOp::push`]).
     pub fn walks_v3(&self) -> bool {
-        self.is_v3() && !matches!(self, Op::Drops(_) | Op::Sprays(_))
+        (self.is_v3() && !matches!(self, Op::Drops(_) | Op::Sprays(_))) || self.is_v4()
     }
 
     /// How many ops this one counts as toward [`crate::MAX_OPS`]: every drop of a
@@ -241,6 +258,7 @@ impl Op {
             Op::Comb(c) => c.tines.len() as u64,
             Op::Stylus(s) => STYLUS_SEGMENT_COST * s.path.len().saturating_sub(1) as u64,
             Op::Jiggle(_) => JIGGLE_COST,
+            Op::Flow(f) => flow_cost(f.field().steps, f.noise.octaves),
             _ => 1,
         }
     }
@@ -272,6 +290,7 @@ impl Op {
             Op::Sprays(_) => p,
             Op::Jiggle(j) => j.forward(p),
             Op::Stylus(s) => s.forward(p),
+            Op::Flow(f) => f.forward(p),
         }
     }
 
@@ -293,8 +312,14 @@ impl Op {
             Op::Sprays(d) => back_through(d.expand(true), p),
             Op::Jiggle(j) => Back::Moved(j.inverse(p)),
             Op::Stylus(s) => Back::Moved(s.inverse(p)),
+            Op::Flow(f) => Back::Moved(f.inverse(p)),
         }
     }
+}
+
+/// The walk cost of a flow of `steps` sub-steps over `octaves` octaves.
+pub(crate) fn flow_cost(steps: u32, octaves: u32) -> u64 {
+    (FLOW_OCTAVE_STEP_COST * u64::from(steps) * u64::from(octaves)).max(1)
 }
 
 /// Walks `p` back through `ops` (oldest first), newest first.

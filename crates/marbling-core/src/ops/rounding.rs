@@ -14,6 +14,9 @@ use kurbo::{Point, Vec2};
 pub const LENGTH_STEP: f64 = 0.01;
 /// Step of rounded angles and phases, radians.
 pub const ANGLE_STEP: f64 = 1e-4;
+/// Step of rounded flow times (a flow moves about its strength in px per unit time, so
+/// a step moves a point by strength·10⁻⁴ px).
+pub const TIME_STEP: f64 = 1e-4;
 
 fn round_to(v: f64, step: f64) -> f64 {
     // Dividing by the reciprocal of the step gives the shortest decimal (12.34, not
@@ -36,6 +39,11 @@ pub(super) fn positive(v: f64) -> f64 {
 /// Rounded as the module doc says.
 pub(super) fn angle(v: f64) -> f64 {
     round_to(v, ANGLE_STEP)
+}
+
+/// A flow's time, rounded to [`TIME_STEP`].
+pub(super) fn time(v: f64) -> f64 {
+    round_to(v, TIME_STEP)
 }
 
 /// Rounded as the module doc says.

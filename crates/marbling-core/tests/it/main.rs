@@ -4,6 +4,7 @@
 mod common;
 mod design_json;
 mod design_v2;
+mod flow;
 mod image_background;
 mod ops_properties;
 mod ops_v3;

@@ -3,9 +3,10 @@
 //! the jiggle, whose determinant is 1 + kA·cos φ (checked against that formula).
 
 use marbling_core::{
-    Back, Circular, Comb, Drop, DropSet, Jiggle, Op, Point, Radii, Rake, Rgb8, Shift, Spray,
+    Back, Circular, Comb, Drop, DropSet, Flow, Jiggle, Op, Point, Radii, Rake, Rgb8, Shift, Spray,
     Stylus, Tine, Turn, Vec2, Vortex, Wavy,
 };
+use marbling_noise::{Basis, FbmParams};
 use proptest::prelude::*;
 use std::f64::consts::TAU;
 use std::sync::Arc;
@@ -146,6 +147,7 @@ fn v3_op() -> impl Strategy<Value = Op> {
                 phase
             })),
         stylus(),
+        flow(),
     ]
 }
 
@@ -172,6 +174,32 @@ fn stylus() -> impl Strategy<Value = Op> {
         })
 }
 
+/// A flow along Perlin or value noise of 20–200 px, 1–4 octaves, for a time of either
+/// sign (a few hundred sub-steps at most).
+fn flow() -> impl Strategy<Value = Op> {
+    (
+        prop::bool::ANY,
+        20.0..200.0f32,
+        1..5u32,
+        any::<u32>(),
+        -30.0..30.0f64,
+        -2.0..2.0f64,
+    )
+        .prop_map(|(perlin, size, octaves, seed, strength, time)| {
+            Op::Flow(Flow {
+                noise: FbmParams {
+                    basis: if perlin { Basis::Perlin } else { Basis::Value },
+                    frequency: 1.0 / size,
+                    octaves,
+                    seed,
+                    ..FbmParams::default()
+                },
+                strength,
+                time,
+            })
+        })
+}
+
 /// Points where an op is hard to invert: near its centre (`eps` × its size away), on its
 /// tine lines. Closer than about √ε·r to a drop centre, f64 cannot tell the forward image
 /// from the drop's circle itself (|P' − C|² = r² + ρ²), so that is where "near" stops.
@@ -191,7 +219,9 @@ fn tricky_point(op: &Op, t: f64, eps: f64) -> Point {
             let m = r.direction.normalize();
             r.origin + m * (t * 300.0) + Vec2::new(-m.y, m.x) * (r.spacing * (t * 10.0).round())
         }
-        Op::Wavy(_) | Op::Shift(_) | Op::Turn(_) | Op::Jiggle(_) => Point::new(t * 100.0, eps),
+        Op::Wavy(_) | Op::Shift(_) | Op::Turn(_) | Op::Jiggle(_) | Op::Flow(_) => {
+            Point::new(t * 100.0, eps)
+        }
         Op::Comb(c) => {
             let m = c.direction.normalize();
             let k = ((t + 1.0) * 10.0) as usize % c.tines.len();
@@ -308,7 +338,7 @@ fn near_singular(op: &Op, p: Point, margin: f64) -> bool {
             .centers
             .iter()
             .any(|&c| (p - c).hypot() < margin.max(1e-3 * d.radius(0))),
-        Op::Stylus(_) => false,
+        Op::Stylus(_) | Op::Flow(_) => false,
     }
 }
 

@@ -213,7 +213,11 @@ fn gpu_op_back(
 /// on either side).
 fn inverse_errors(ctx: &GpuContext, shaders: &str, kind: marbling_core::OpKind) -> (usize, f64) {
     use marbling_core::{CompiledOp, Point};
-    let mut ops = Vec::new();
+    let mut ops = if kind == marbling_core::OpKind::Flow {
+        flows()
+    } else {
+        Vec::new()
+    };
     for (seed, mix) in [
         (1, Mix::Mixed),
         (2, Mix::DropHeavy),
@@ -269,17 +273,36 @@ fn inverse_errors(ctx: &GpuContext, shaders: &str, kind: marbling_core::OpKind) 
     (other_answer, worst)
 }
 
+/// Six flows (random designs hold none): Perlin and value noise, one to four octaves,
+/// times of either sign, 30 to 330 sub-steps.
+fn flows() -> Vec<marbling_core::Op> {
+    (0..6u32)
+        .map(|k| {
+            marbling_core::Op::Flow(marbling_core::Flow {
+                noise: marbling_noise::FbmParams {
+                    basis: if k % 2 == 0 {
+                        marbling_noise::Basis::Perlin
+                    } else {
+                        marbling_noise::Basis::Value
+                    },
+                    frequency: 1.0 / (30.0 + 25.0 * k as f32),
+                    octaves: 1 + k % 4,
+                    seed: 1000 * k + 7,
+                    ..marbling_noise::FbmParams::default()
+                },
+                strength: 8.0 + 4.0 * f64::from(k),
+                time: if k % 3 == 0 { -1.0 } else { 1.3 },
+            })
+        })
+        .collect()
+}
+
 /// The per-kind test: the same ink answers, positions within 1e-4 relative.
 fn wgsl_inverse_matches_cpu(kind: marbling_core::OpKind) {
     let Some(ctx) = marbling_testkit::gpu_or_skip(GpuContext::new_headless()) else {
         return;
     };
-    let shaders = [
-        marbling_gpu::shaders::COMMON,
-        marbling_gpu::shaders::RECORDS,
-        marbling_gpu::shaders::OPS_V3,
-    ]
-    .join("\n");
+    let shaders = marbling_gpu::shaders::walk_wgsl();
     let (other_answer, worst) = inverse_errors(&ctx, &shaders, kind);
     assert_eq!(
         other_answer, 0,
@@ -290,18 +313,14 @@ fn wgsl_inverse_matches_cpu(kind: marbling_core::OpKind) {
 
 /// The comparison sees a mistake: a drop inverse with 0.1 % of r² missing, a wave whose
 /// phase is off by 0.01 rad, a finite comb that skips its last tine record, a stylus
-/// sub-step walked forward instead of back.
+/// sub-step walked forward instead of back, a flow whose octaves draw the wrong seeds or
+/// whose velocity is 1 % too fast.
 #[test]
 fn a_wrong_wgsl_inverse_is_caught() {
     let Some(ctx) = marbling_testkit::gpu_or_skip(GpuContext::new_headless()) else {
         return;
     };
-    let shaders = [
-        marbling_gpu::shaders::COMMON,
-        marbling_gpu::shaders::RECORDS,
-        marbling_gpu::shaders::OPS_V3,
-    ]
-    .join("\n");
+    let shaders = marbling_gpu::shaders::walk_wgsl();
     for (kind, right, wrong) in [
         (
             marbling_core::OpKind::Drop,
@@ -323,6 +342,16 @@ fn a_wrong_wgsl_inverse_is_caught() {
             "stylus_sub_step(q, -0.5 * delta",
             "stylus_sub_step(q, 0.5 * delta",
         ),
+        (
+            marbling_core::OpKind::Flow,
+            "seed0 + o * 0x9E3779B9u",
+            "seed0 + o * 0x9E3779B1u",
+        ),
+        (
+            marbling_core::OpKind::Flow,
+            "c * vec2<f32>(g.y, -g.x)",
+            "c * vec2<f32>(g.y, -g.x) * 1.01",
+        ),
     ] {
         assert!(shaders.contains(right), "{right} is not in the shaders");
         let broken = shaders.replacen(right, wrong, 1);
@@ -332,6 +361,11 @@ fn a_wrong_wgsl_inverse_is_caught() {
             "{kind:?}: a wrong inverse passed ({worst:e})"
         );
     }
+}
+
+#[test]
+fn wgsl_inverse_of_flow_matches_cpu() {
+    wgsl_inverse_matches_cpu(marbling_core::OpKind::Flow);
 }
 
 #[test]

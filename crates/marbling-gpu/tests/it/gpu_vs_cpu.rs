@@ -40,6 +40,7 @@ fn scaled(mut design: Design, k: f64) -> Design {
             }
             Op::Turn(t) => t.angle *= k,
             Op::Shift(t) => t.offset *= k,
+            Op::Flow(f) => f.strength *= k,
             Op::Drop(_) | Op::Spray(_) | Op::Drops(_) | Op::Sprays(_) | Op::Stylus(_) => {}
         }
     }
@@ -143,6 +144,10 @@ fn rounded_to_f32(mut design: Design) -> Design {
                     })
                     .collect();
                 r(&mut st.wake);
+            }
+            Op::Flow(f) => {
+                r(&mut f.strength);
+                r(&mut f.time);
             }
         }
     }

@@ -5,6 +5,7 @@ mod common;
 mod compute;
 mod gpu_vs_cpu;
 mod gpu_vs_cpu_v2;
+mod gpu_vs_cpu_v4;
 mod image_background;
 mod layout;
 mod present;

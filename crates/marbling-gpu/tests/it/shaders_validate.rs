@@ -216,9 +216,7 @@ fn the_shaders_op_kinds_are_the_op_kind_codes() {
 #[test]
 fn the_op_back_test_shader_validates() {
     let source = [
-        marbling_gpu::shaders::COMMON,
-        marbling_gpu::shaders::RECORDS,
-        marbling_gpu::shaders::OPS_V3,
+        marbling_gpu::shaders::walk_wgsl().as_str(),
         include_str!("op_back.wgsl"),
     ]
     .join("\n");
