@@ -100,21 +100,28 @@ fn flow_field(first: u32, h: OpRecord, p: vec2<f32>) -> TipField {
 }
 
 // KIND_FLOW (header record i): N implicit-midpoint sub-steps of −Δt, each
-// M = q − (Δt/2)·u(M) by Newton's method from the explicit guess, then 2M − q.
+// M = q − (Δt/2)·u(M) by Newton's method, then 2M − q. The first guess takes u(q)
+// extrapolated from the previous sub-step's last field (where it was taken, its u and
+// Jacobian), as the CPU does; the first sub-step evaluates it.
 fn flow_back(i: u32, h: OpRecord, p: vec2<f32>) -> vec2<f32> {
     let first = i - data_records(2u * u32(h.b.x));
     let hh = -0.5 * h.a.z;
     let steps = u32(h.a.w);
     var q = p;
+    var last = flow_field(first, h, q);
+    var at = q;
     for (var n = 0u; n < steps; n++) {
-        var m = q + hh * flow_field(first, h, q).u;
+        let dq = q - at;
+        let u0 = last.u + vec2<f32>(dot(last.j.xy, dq), dot(last.j.zw, dq));
+        var m = q + hh * u0;
         for (var k = 0u; k < FLOW_NEWTON; k++) {
-            let f = flow_field(first, h, m);
-            let r = m - q - hh * f.u;
-            let a = 1.0 - hh * f.j.x;
-            let b = -hh * f.j.y;
-            let c = -hh * f.j.z;
-            let d = 1.0 - hh * f.j.w;
+            last = flow_field(first, h, m);
+            at = m;
+            let r = m - q - hh * last.u;
+            let a = 1.0 - hh * last.j.x;
+            let b = -hh * last.j.y;
+            let c = -hh * last.j.z;
+            let d = 1.0 - hh * last.j.w;
             let det = a * d - b * c;
             m -= vec2<f32>(d * r.x - b * r.y, a * r.y - c * r.x) / det;
         }

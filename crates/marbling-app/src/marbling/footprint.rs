@@ -181,6 +181,19 @@ pub fn draw(
                 .collect();
             polyline(painter, pts);
         }
+        ToolKind::Flow => {
+            if dragging {
+                // Markers streaming as far as the flow released now would take them.
+                let design = app.editor.history.design();
+                let flow = marbling_core::Op::Flow(crate::marbling::tools::flow(s, drag.hypot()));
+                let size = (design.width, design.height);
+                crate::marbling::player_drawing::draw_tool(painter, rect, view, &flow, 1.0, size);
+                arrow(painter, at(a), at(b));
+            } else {
+                // The noise's feature size.
+                circle(painter, at(a), (0.5 * s.flow_size) as f32 * z);
+            }
+        }
         ToolKind::Turn => {
             circle(painter, at(a), 4.0);
             if dragging {

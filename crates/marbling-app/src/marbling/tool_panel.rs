@@ -134,6 +134,27 @@ pub(crate) fn ui(ui: &mut egui::Ui, frame: &mut Frame<'_>) {
         ToolKind::Turn => {
             ui.label("Press at the centre, drag around it: the whole tank turns.");
         }
+        ToolKind::Flow => {
+            ui.label("Drag: the ink streams along a curl noise, about as far as you drag.");
+            ui.horizontal(|ui| {
+                ui.selectable_value(&mut s.flow_value, false, "Perlin");
+                ui.selectable_value(&mut s.flow_value, true, "value");
+                ui.label("noise");
+            });
+            ui.add(
+                Slider::new(&mut s.flow_size, 20.0..=2000.0)
+                    .text("noise size")
+                    .logarithmic(true),
+            );
+            ui.add(Slider::new(&mut s.flow_octaves, 1..=4).text("octaves"));
+            ui.add(
+                Slider::new(&mut s.flow_strength, 1.0..=200.0)
+                    .text("strength px")
+                    .logarithmic(true),
+            )
+            .on_hover_text("how fast the ink streams, design px per unit of time");
+            ui.add(Slider::new(&mut s.flow_seed, 0..=999).text("seed"));
+        }
         ToolKind::Spray => {
             ui.label("Drag to spray droplets.");
             ui.add(

@@ -130,13 +130,26 @@ impl FlowField {
     }
 
     /// One implicit-midpoint sub-step of `h` = ±Δt/2: M = q + h·u(M) by Newton's method
-    /// from the explicit guess M = q + h·u(q), then 2M − q.
-    fn sub_step(&self, qx: f64, qy: f64, h: f64) -> (f64, f64) {
-        let (u, _) = self.velocity(qx, qy);
+    /// from the explicit guess M = q + h·u(q), then 2M − q. `last` is the velocity and
+    /// Jacobian of the previous sub-step's last Newton iteration and where they were
+    /// taken: u(q) is then extrapolated from them (exact to second order, which Newton
+    /// corrects) instead of evaluated, and this step's are left there for the next.
+    fn sub_step(&self, qx: f64, qy: f64, h: f64, last: &mut Option<Sample>) -> (f64, f64) {
+        let u = match *last {
+            Some(Sample { at, u, j }) => {
+                let (dx, dy) = (qx - at[0], qy - at[1]);
+                [u[0] + j[0] * dx + j[1] * dy, u[1] + j[2] * dx + j[3] * dy]
+            }
+            None => self.velocity(qx, qy).0,
+        };
         let (mut mx, mut my) = (qx + h * u[0], qy + h * u[1]);
-        let tol = 1e-13 * (1.0 + qx.abs() + qy.abs());
+        // Newton converges quadratically and its error after an update dx is about
+        // |h·D²u|·dx², far below f64 rounding once |dx| ≤ 1e-7·scale: one evaluation
+        // fewer than waiting for an update of 1e-13.
+        let tol = 1e-7 * (1.0 + qx.abs() + qy.abs());
         for _ in 0..MAX_NEWTON {
             let (u, j) = self.velocity(mx, my);
+            *last = Some(Sample { at: [mx, my], u, j });
             let (fx, fy) = (mx - qx - h * u[0], my - qy - h * u[1]);
             let (a, b, c, d) = (1.0 - h * j[0], -h * j[1], -h * j[2], 1.0 - h * j[3]);
             let det = a * d - b * c;
@@ -152,8 +165,9 @@ impl FlowField {
 
     fn walk(&self, p: Point, h: f64) -> Point {
         let (mut x, mut y) = (p.x, p.y);
+        let mut last = None;
         for _ in 0..self.steps {
-            (x, y) = self.sub_step(x, y, h);
+            (x, y) = self.sub_step(x, y, h, &mut last);
         }
         Point::new(x, y)
     }
@@ -176,8 +190,9 @@ impl FlowField {
         let every = (total / points.max(1)).max(1);
         let (mut x, mut y) = (p.x, p.y);
         let mut out = vec![p];
+        let mut last = None;
         for i in 0..total {
-            (x, y) = self.sub_step(x, y, 0.5 * self.dt);
+            (x, y) = self.sub_step(x, y, 0.5 * self.dt, &mut last);
             if (i + 1) % every == 0 || i + 1 == total {
                 out.push(Point::new(x, y));
             }
@@ -194,6 +209,14 @@ impl FlowField {
     pub fn basis(&self) -> Basis {
         self.fbm.basis()
     }
+}
+
+/// The velocity and its Jacobian where Newton last took them.
+#[derive(Clone, Copy, Debug)]
+struct Sample {
+    at: [f64; 2],
+    u: [f64; 2],
+    j: [f64; 4],
 }
 
 /// "Perlin" or "value".
@@ -373,7 +396,7 @@ mod tests {
         let mut most = 0.0_f64;
         for _ in 0..2000 {
             let p = Point::new(rng.range(0.0, 500.0), rng.range(0.0, 500.0));
-            let (x, y) = field.sub_step(p.x, p.y, 0.5 * field.dt);
+            let (x, y) = field.sub_step(p.x, p.y, 0.5 * field.dt, &mut None);
             most = most.max((x - p.x).hypot(y - p.y));
         }
         assert!(most <= FLOW_STEP_PX, "{most}");

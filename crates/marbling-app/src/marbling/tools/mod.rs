@@ -5,9 +5,10 @@ use crate::marbling::drop_patterns::{self, DropPattern, PatternShape};
 use crate::marbling::stroke;
 use marbling_core::synth::SplitMix64;
 use marbling_core::{
-    Circular, Comb, Drop, DropSet, Jiggle, Op, Point, Radii, Rake, Rgb8, Shift, Spray, Tine, Turn,
-    Vec2, Vortex, Wavy,
+    Circular, Comb, Drop, DropSet, Flow, Jiggle, Op, Point, Radii, Rake, Rgb8, Shift, Spray, Tine,
+    Turn, Vec2, Vortex, Wavy,
 };
+use marbling_noise::{Basis, FbmParams};
 use std::sync::Arc;
 
 /// The tools of the side panel.
@@ -37,11 +38,13 @@ pub enum ToolKind {
     Shift,
     /// Press at the centre, drag around it: the whole tank turns.
     Turn,
+    /// Drag: the tank streams along a curl noise, longer the longer the drag.
+    Flow,
 }
 
 impl ToolKind {
     /// Every tool, in panel order.
-    pub const ALL: [ToolKind; 11] = [
+    pub const ALL: [ToolKind; 12] = [
         ToolKind::Drop,
         ToolKind::Spray,
         ToolKind::Tine,
@@ -53,6 +56,7 @@ impl ToolKind {
         ToolKind::Vortex,
         ToolKind::Shift,
         ToolKind::Turn,
+        ToolKind::Flow,
     ];
 
     /// Its name in stored preferences and in `data-controls` (`tool-…`).
@@ -69,6 +73,7 @@ impl ToolKind {
             ToolKind::Jiggle => "jiggle",
             ToolKind::Shift => "shift",
             ToolKind::Turn => "turn",
+            ToolKind::Flow => "flow",
         }
     }
 
@@ -86,11 +91,12 @@ impl ToolKind {
             ToolKind::Jiggle => "Jiggle",
             ToolKind::Shift => "Shift",
             ToolKind::Turn => "Turn",
+            ToolKind::Flow => "Flow",
         }
     }
 }
 
-/// The keys that pick the tools, in [`ToolKind::ALL`] order (the eleventh has none).
+/// The keys that pick the tools, in [`ToolKind::ALL`] order (the last two have none).
 pub const TOOL_KEYS: [egui::Key; 10] = [
     egui::Key::Num1,
     egui::Key::Num2,
@@ -181,6 +187,16 @@ pub struct ToolSettings {
     pub jiggle_across: f64,
     /// A pen's pressure (or a finger's force) scales the drop size and the stylus wake.
     pub pressure: bool,
+    /// Flow: the size of the noise's features, 1/frequency.
+    pub flow_size: f64,
+    /// Flow: the noise's octaves.
+    pub flow_octaves: u32,
+    /// Flow: the strength U, design pixels per unit time.
+    pub flow_strength: f64,
+    /// Flow: the noise's seed.
+    pub flow_seed: u32,
+    /// Flow: value noise instead of Perlin noise.
+    pub flow_value: bool,
 }
 
 impl Default for ToolSettings {
@@ -219,6 +235,11 @@ impl Default for ToolSettings {
             jiggle_along: 5.0,
             jiggle_across: 12.0,
             pressure: true,
+            flow_size: 160.0,
+            flow_octaves: 2,
+            flow_strength: 40.0,
+            flow_seed: 1,
+            flow_value: false,
         }
     }
 }
@@ -360,6 +381,31 @@ pub fn stylus_tips(s: &ToolSettings) -> Option<Arc<[f64]>> {
     })
 }
 
+/// The flow tool's settings for a drag of `length` design pixels: time = length/U (a
+/// point moves about U px per unit time), cut to what [`marbling_core::MAX_FLOW_STEPS`]
+/// sub-steps allow.
+pub fn flow(s: &ToolSettings, length: f64) -> Flow {
+    let mut f = Flow {
+        noise: FbmParams {
+            basis: if s.flow_value {
+                Basis::Value
+            } else {
+                Basis::Perlin
+            },
+            frequency: (1.0 / s.flow_size.max(1.0)) as f32,
+            octaves: s.flow_octaves.clamp(1, marbling_noise::MAX_OCTAVES),
+            seed: s.flow_seed,
+            ..FbmParams::default()
+        },
+        strength: s.flow_strength.max(0.01),
+        time: 0.0,
+    };
+    let longest = marbling_core::MAX_FLOW_STEPS as f64 * marbling_core::FLOW_STEP_PX
+        / f.speed_bound().max(f64::MIN_POSITIVE);
+    f.time = (length / f.strength).min(0.999 * longest);
+    f
+}
+
 /// The largest jiggle amplitude along the drag that cannot fold the tank (|kA| ≤ 0.9).
 pub fn jiggle_along_limit(wavelength: f64) -> f64 {
     0.9 * wavelength / std::f64::consts::TAU
@@ -490,6 +536,7 @@ fn unrounded_ops(
                 lambda: s.vortex_lambda,
             })]
         }
+        ToolKind::Flow => vec![Op::Flow(flow(s, len))],
         ToolKind::Turn => {
             let angle = g.swept_angle(a);
             if angle.abs() < 1e-3 {

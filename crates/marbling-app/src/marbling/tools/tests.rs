@@ -267,3 +267,43 @@ fn pressure_scales_the_drop_it_pressed() {
         other => panic!("not a drop: {other:?}"),
     }
 }
+
+#[test]
+fn a_flow_streams_for_the_drag_over_its_strength_and_stays_valid() {
+    let mut s = ToolSettings::default();
+    let ops = ops_for(
+        ToolKind::Flow,
+        &s,
+        &drag((10.0, 10.0), (130.0, 10.0)),
+        &[INK],
+        0,
+    );
+    let [Op::Flow(f)] = ops.as_slice() else {
+        panic!("one flow: {ops:?}")
+    };
+    // 120 px of drag at 40 px per unit time.
+    assert_eq!(f.time, 3.0);
+    assert_eq!(f.noise.frequency, 1.0 / 160.0);
+    assert_eq!(f.noise.octaves, 2);
+    let mut d = marbling_core::Design::new(400, 300, Rgb8::WHITE);
+    d.ops.push(Op::Flow(f.clone()));
+    assert!(d.validate().is_ok(), "{:?}", d.validate());
+    // A drag far longer than the sub-step cap allows is cut to the cap, still valid.
+    s.flow_strength = 200.0;
+    s.flow_size = 20.0;
+    let ops = ops_for(
+        ToolKind::Flow,
+        &s,
+        &drag((0.0, 0.0), (5000.0, 0.0)),
+        &[INK],
+        0,
+    );
+    let [Op::Flow(f)] = ops.as_slice() else {
+        panic!("one flow: {ops:?}")
+    };
+    assert!(f.time < 25.0 && f.time > 0.1, "{}", f.time);
+    assert!(f.sub_steps() <= marbling_core::MAX_FLOW_STEPS);
+    assert!(f.sub_steps() > marbling_core::MAX_FLOW_STEPS / 2);
+    // A click makes nothing.
+    assert!(ops_for(ToolKind::Flow, &s, &drag((0.0, 0.0), (0.5, 0.0)), &[INK], 0).is_empty());
+}
