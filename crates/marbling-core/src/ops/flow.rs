@@ -156,7 +156,8 @@ impl FlowField {
             let (dx, dy) = ((d * fx - b * fy) / det, (a * fy - c * fx) / det);
             mx -= dx;
             my -= dy;
-            if !(dx.abs() + dy.abs() > tol) {
+            let update = dx.abs() + dy.abs();
+            if update <= tol || update.is_nan() {
                 break;
             }
         }

@@ -92,8 +92,9 @@ pub const STYLUS_SEGMENT_COST: u64 = 8;
 /// Walk cost of a jiggle, in simple ops ([`Op::walk_cost`]).
 pub const JIGGLE_COST: u64 = 8;
 /// Walk cost of one sub-step of a flow per octave of its noise, in simple ops
-/// ([`Op::walk_cost`]).
-pub const FLOW_OCTAVE_STEP_COST: u64 = 4;
+/// ([`Op::walk_cost`]): measured on the CPU, one flow of 286 sub-steps and 3 octaves
+/// takes as long per sample as 27,000 tines (docs/BENCHMARKS.md).
+pub const FLOW_OCTAVE_STEP_COST: u64 = 32;
 
 /// Result of walking one point back through one operation.
 #[derive(Clone, Copy, Debug, PartialEq)]

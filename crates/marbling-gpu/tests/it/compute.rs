@@ -280,7 +280,7 @@ fn flows() -> Vec<marbling_core::Op> {
         .map(|k| {
             marbling_core::Op::Flow(marbling_core::Flow {
                 noise: marbling_noise::FbmParams {
-                    basis: if k % 2 == 0 {
+                    basis: if k.is_multiple_of(2) {
                         marbling_noise::Basis::Perlin
                     } else {
                         marbling_noise::Basis::Value
@@ -291,7 +291,7 @@ fn flows() -> Vec<marbling_core::Op> {
                     ..marbling_noise::FbmParams::default()
                 },
                 strength: 8.0 + 4.0 * f64::from(k),
-                time: if k % 3 == 0 { -1.0 } else { 1.3 },
+                time: if k.is_multiple_of(3) { -1.0 } else { 1.3 },
             })
         })
         .collect()

@@ -14,7 +14,7 @@ const THRESHOLD: u8 = 8;
 fn flow(k: u32, time: f64) -> Op {
     Op::Flow(Flow {
         noise: FbmParams {
-            basis: if k % 2 == 0 {
+            basis: if k.is_multiple_of(2) {
                 Basis::Perlin
             } else {
                 Basis::Value
