@@ -1,9 +1,10 @@
-// The tools schema v3 added, as a user meets them in Chromium on WebGL2: a drop pattern
-// shows its ghost drops before the click and lays one op cycling the palette, a
+// The tools schemas v3 and v4 added, as a user meets them in Chromium on WebGL2: a drop
+// pattern shows its ghost drops before the click and lays one op cycling the palette, a
 // jiggle, a shift, a turn, a comb of five tines as one op and a free-hand stylus with
 // three tips — each changes the canvas, each is one undo step, the saved document
-// holds the v3 ops, and the app's exact picture of it is `marbling render`'s. One
-// browser, one page, a small sheet.
+// holds the v3 ops, and the app's exact picture of it is `marbling render`'s; the flow
+// tool streams the ink along a curl noise as one v4 op, drawn as the CLI draws it. One
+// browser, a small sheet.
 import { after, before, describe, test } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
@@ -209,6 +210,70 @@ describe('v3 tools on webgl2', () => {
     assert.ok(near(note96.center[0], 270) && near(note96.radius, 300 * (0.25 + 1.5 * 64 / 127)), `C7 after controller 7 at 127: ${JSON.stringify(note96)}`);
     await page.keyboard.press('Control+z');
     await waitOps(page, k + 1);
+    assert.deepEqual(errors, []);
+    await context.close();
+  });
+
+  test('flow: a drag streams the ink as one v4 op, the CLI picture, one undo', async () => {
+    const design = {
+      version: 1, width: 160, height: 120, background: '#f4ecd8',
+      ops: [
+        { type: 'drop', center: [55, 60], radius: 30, color: '#e63946' },
+        { type: 'drop', center: [110, 60], radius: 30, color: '#1d3557' },
+        { type: 'drop', center: [80, 60], radius: 14, color: '#f1c453' },
+      ],
+    };
+    const prefs = JSON.stringify({
+      tool: 'flow', palette: 0, ink: '#1d3557', antialias: 'rgss',
+      settings: { flow_size: 60, flow_octaves: 1, flow_strength: 20, flow_seed: 3 },
+    });
+    const context = await browser.newContext({ viewport: { width: 760, height: 480 }, deviceScaleFactor: 1, acceptDownloads: true });
+    await context.addInitScript((p) => localStorage.setItem('marbling.prefs.v1', p), prefs);
+    const page = await context.newPage();
+    const errors = [];
+    page.on('pageerror', (e) => errors.push(String(e)));
+    await page.goto(site.url + linkFragment(design, 'flow'));
+    await waitOps(page, 3);
+    const s = await sheet(page);
+    const p = (x, y) => ({ x: s.x + x * s.scale, y: s.y + y * s.scale });
+    const before = await shootSheet(page, design.width, design.height);
+    // A 30-px drag at 20 px per unit time: T = 1.5.
+    const t0 = Date.now();
+    await page.mouse.move(p(60, 100).x, p(60, 100).y);
+    await page.mouse.down();
+    for (let i = 1; i <= 6; i++) await page.mouse.move(p(60 + 5 * i, 100).x, p(60 + 5 * i, 100).y);
+    await page.mouse.up();
+    await waitOps(page, 4);
+    const after = await shootSheet(page, design.width, design.height);
+    console.log(`tools: flow drawn exactly ${((Date.now() - t0) / 1000).toFixed(1)} s after the drag began`);
+    const changed = differing(before.img, after.img, 8);
+    assert.ok(changed > 0.02, `the flow changed only ${(100 * changed).toFixed(2)} % of the sheet`);
+
+    const saved = JSON.parse((await download(page, 'save-json')).bytes.toString('utf8'));
+    assert.equal(saved.version, 4);
+    const flow = saved.ops[3];
+    assert.deepEqual(
+      [flow.type, flow.noise.type, flow.noise.octaves, flow.noise.seed, flow.strength],
+      ['flow', 'perlin', 1, 3, 20],
+    );
+    // The pointer lands on whole CSS pixels: the drag is 30 design px within one pixel.
+    assert.ok(Math.abs(flow.time - 1.5) <= 1 / (20 * s.scale), `time ${flow.time}`);
+    // 1/60 as the f32 the noise crate keeps.
+    assert.ok(Math.abs(flow.noise.frequency - 1 / 60) < 1e-8, `frequency ${flow.noise.frequency}`);
+    const file = path.join(os.tmpdir(), `marbling-flow-saved-${process.pid}.json`);
+    fs.writeFileSync(file, JSON.stringify(saved));
+    const out = path.join(os.tmpdir(), `marbling-flow-${process.pid}.png`);
+    execFileSync(MARBLING, ['render', file, '-o', out, '--scale', String(after.scale), '--aa', 'rgss']);
+    const cpu = decode(fs.readFileSync(out));
+    const w = Math.min(cpu.width, after.img.width);
+    const h = Math.min(cpu.height, after.img.height);
+    const frac = differing(crop(cpu, w, h), crop(after.img, w, h), 24);
+    console.log(`tools: flow, app vs CLI: ${(100 * frac).toFixed(3)} % of ${w}×${h} px differ by > 24/255`);
+    assert.ok(frac <= 0.01, `${(100 * frac).toFixed(2)} % of pixels differ from the CLI render`);
+    await page.screenshot({ path: path.join(SHOTS, 'tool-flow-webgl2.png'), timeout: READY_MS });
+
+    await page.keyboard.press('Control+z');
+    await waitOps(page, 3);
     assert.deepEqual(errors, []);
     await context.close();
   });

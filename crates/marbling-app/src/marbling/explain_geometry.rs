@@ -114,7 +114,16 @@ impl ExplainGeometry {
         let ops = &window.ops;
         let (w, h) = (f64::from(size.0), f64::from(size.1));
         let long = w.max(h);
-        let cost = ops.len().max(1) as f64;
+        // Ops push a point in about the same time, but a flow walks thousands of
+        // sub-steps: it counts its walk cost ([`Op::walk_cost`]).
+        let cost = ops
+            .iter()
+            .map(|op| match op {
+                Op::Flow(_) => op.walk_cost(),
+                _ => 1,
+            })
+            .sum::<u64>()
+            .max(1) as f64;
         // 16 lines along the longer side, fewer when the ops are many (the first
         // samples then take at most a quarter of the work).
         let mut spacing = long / 16.0;
