@@ -1,8 +1,10 @@
 //! `marbling animate`: the making of a design as an animated PNG (APNG) or GIF, every
 //! frame an exact render of the design part way through its steps (as the app's step
-//! player shows it, `marbling_core::making`); the last frame is the whole design.
+//! player shows it, `marbling_core::making`); the last frame is the whole design. With
+//! `--flow`, one period of a looping colour turbulence of the finished design instead
+//! (`marbling_core::turbulence`).
 
-use crate::input::read_design;
+use crate::input::{read_design, read_turbulence};
 use anyhow::{Context, Result, bail};
 use clap::Args;
 use indicatif::{ProgressBar, ProgressStyle};
@@ -41,6 +43,14 @@ pub struct AnimateArgs {
     /// has no jump: frames 0 … N−1, then N−2 … 1.
     #[arg(long)]
     reverse: bool,
+    /// Colour turbulence: a JSON `{"noise": SPEC, "strength": U, "period": P}`; the
+    /// animation is one period of the finished design streaming along its curl noise,
+    /// frame i at t = i·P/N, so it loops without a jump.
+    #[arg(long, value_name = "TURB.json", conflicts_with_all = ["seconds", "hold", "reverse"])]
+    flow: Option<String>,
+    /// Frames N of the --flow loop.
+    #[arg(long, default_value_t = 24, requires = "flow")]
+    frames: usize,
 }
 
 /// The frame order of a loop of `made` frames of the making (0 the start, `made − 1`
@@ -79,6 +89,10 @@ pub fn run(args: &AnimateArgs) -> Result<()> {
         bail!("--width must be at least 1");
     }
     let design = read_design(&args.design)?;
+    let turbulence = args.flow.as_deref().map(read_turbulence).transpose()?;
+    if turbulence.is_some() && !(2..=MAX_FRAMES).contains(&args.frames) {
+        bail!("--frames must be 2 to {MAX_FRAMES}, got {}", args.frames);
+    }
     let steps = design.gesture_sizes().len();
     let seconds = args.seconds.unwrap_or((steps as f64).max(2.0));
     if !(seconds.is_finite() && seconds > 0.0) {
@@ -87,7 +101,10 @@ pub fn run(args: &AnimateArgs) -> Result<()> {
     if !(args.hold.is_finite() && (0.0..=60.0).contains(&args.hold)) {
         bail!("--hold must be 0 to 60 seconds, got {}", args.hold);
     }
-    let made = ((seconds * f64::from(args.fps)).round() as usize).max(2);
+    let made = match &turbulence {
+        Some(_) => args.frames,
+        None => ((seconds * f64::from(args.fps)).round() as usize).max(2),
+    };
     let order = loop_order(made, args.reverse);
     let frames = order.len();
     if frames > MAX_FRAMES {
@@ -119,8 +136,13 @@ pub fn run(args: &AnimateArgs) -> Result<()> {
             bar.inc(1);
             return Ok(image.clone());
         }
-        let position = steps as f64 * i as f64 / (made - 1) as f64;
-        let image = render(&design_at(&design, position), &opts)?;
+        let image = match &turbulence {
+            Some(t) => t.render(&design, t.period * i as f64 / made as f64, &opts)?,
+            None => {
+                let position = steps as f64 * i as f64 / (made - 1) as f64;
+                render(&design_at(&design, position), &opts)?
+            }
+        };
         bar.inc(1);
         if args.reverse {
             rendered[i] = Some(image.clone());
@@ -170,6 +192,13 @@ pub fn run(args: &AnimateArgs) -> Result<()> {
     out.flush()
         .with_context(|| format!("cannot write '{}'", args.output))?;
     bar.finish_and_clear();
+    if let Some(t) = &turbulence {
+        println!(
+            "{}: {frames} frames of {w}×{h} px, one period ({}) of the flow at {} fps, looping",
+            args.output, t.period, args.fps
+        );
+        return Ok(());
+    }
     println!(
         "{}: {frames} frames of {w}×{h} px, {steps} steps in {seconds} s at {} fps{}{}",
         args.output,

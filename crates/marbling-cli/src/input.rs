@@ -49,6 +49,21 @@ pub fn read_design(path: &str) -> Result<Design> {
     }
 }
 
+/// Reads a turbulence document (`--flow`), every problem named with the file and its
+/// path.
+pub fn read_turbulence(path: &str) -> Result<marbling_core::turbulence::Turbulence> {
+    let text = read_text(path)?;
+    let name = display_name(path);
+    marbling_core::turbulence::Turbulence::from_json(&text).map_err(|errors| {
+        let lines: Vec<String> = errors.iter().map(|e| format!("{name}: {e}")).collect();
+        anyhow::anyhow!(
+            "{} problem(s) in the turbulence:\n{}",
+            lines.len(),
+            lines.join("\n")
+        )
+    })
+}
+
 /// `text` with a `background.image` that names a file replaced by the file's `data:`
 /// URI (unchanged when it holds none, or is not JSON: the reader reports that).
 fn embed_image_file(path: &str, text: String) -> Result<String> {

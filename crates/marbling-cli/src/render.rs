@@ -51,6 +51,19 @@ pub struct RenderArgs {
     /// Tracing tolerance of --backend vector, output pixels.
     #[arg(long, default_value_t = 1.0, allow_negative_numbers = true)]
     tolerance: f64,
+    /// Colour turbulence: a JSON `{"noise": SPEC, "strength": U, "period": P}`; the
+    /// design streams along its curl noise as two exact layers blended in linear light
+    /// (see --time).
+    #[arg(long, value_name = "TURB.json", conflicts_with = "print")]
+    flow: Option<String>,
+    /// The time of the --flow frame (it loops: t and t + P are the same frame).
+    #[arg(
+        long,
+        default_value_t = 0.0,
+        requires = "flow",
+        allow_negative_numbers = true
+    )]
+    time: f64,
 }
 
 /// A progress bar on stderr that appears only once a render has taken about a second.
@@ -121,6 +134,18 @@ pub fn run(args: &RenderArgs) -> Result<()> {
         scale,
         antialias: args.aa,
     };
+    let turbulence = match &args.flow {
+        Some(path) => {
+            if args.backend != Backend::Cpu {
+                bail!("--flow renders with the exact CPU walk: leave out --backend");
+            }
+            if !args.time.is_finite() {
+                bail!("--time must be a finite number, got {}", args.time);
+            }
+            Some(crate::input::read_turbulence(path)?)
+        }
+        None => None,
+    };
     let start = Instant::now();
     // The vector backend traces before the output is opened, so a design it refuses
     // leaves no file behind.
@@ -137,9 +162,10 @@ pub fn run(args: &RenderArgs) -> Result<()> {
                 .with_context(|| format!("cannot write '{}'", args.output))?,
         )
     };
-    let image = match traced {
-        Some(image) => image,
-        None => {
+    let image = match (traced, &turbulence) {
+        (Some(image), _) => image,
+        (None, Some(turbulence)) => turbulence.render(&design, args.time, &opts)?,
+        (None, None) => {
             let progress = LazyProgress::new();
             let image = render_image(args.backend, &design, &opts, args.tolerance, &progress)?;
             progress.finish();

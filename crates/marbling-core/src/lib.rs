@@ -31,6 +31,7 @@ mod share;
 pub mod share_qr;
 pub mod surface;
 pub mod synth;
+pub mod turbulence;
 mod validate;
 pub mod view3d;
 mod walk;

@@ -4,6 +4,7 @@
 mod cli;
 mod cli_gpu;
 mod common;
+mod flow_cli;
 mod making_cli;
 mod noise_cli;
 mod palette_cli;

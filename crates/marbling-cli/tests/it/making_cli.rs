@@ -84,7 +84,7 @@ fn render_at_96(dir: &std::path::Path, design: &str, name: &str) -> RgbaImage {
 }
 
 /// Decodes every frame of an APNG.
-fn apng_frames(bytes: &[u8]) -> (u32, Vec<RgbaImage>) {
+pub(crate) fn apng_frames(bytes: &[u8]) -> (u32, Vec<RgbaImage>) {
     let mut reader = png::Decoder::new(std::io::Cursor::new(bytes))
         .read_info()
         .expect("png");

@@ -212,6 +212,18 @@ impl FlowField {
     }
 }
 
+/// The fBm a flow follows, if `spec` is one: a `perlin` or `value` spec alone; else why
+/// not.
+pub fn flow_noise(spec: &NoiseSpec) -> Result<FbmParams, &'static str> {
+    match spec.source {
+        Source::Fbm(params) if spec.is_plain() => Ok(params),
+        Source::Fbm(_) => {
+            Err("a flow's noise is the fBm alone: no tile, transfer, layers, palette or blend")
+        }
+        _ => Err("must be a \"perlin\" or \"value\" noise (a flow follows the curl of an fBm)"),
+    }
+}
+
 /// The velocity and its Jacobian where Newton last took them.
 #[derive(Clone, Copy, Debug)]
 struct Sample {
@@ -233,24 +245,11 @@ impl OpType for Flow {
 
     fn read(r: &mut FieldReader<'_>) -> Option<Self> {
         let (spec, strength, time) = (r.noise("noise"), r.number("strength"), r.number("time"));
-        let spec = spec?;
-        let noise = match spec.source {
-            Source::Fbm(params) if spec.is_plain() => Some(params),
-            Source::Fbm(_) => {
-                r.push(
-                    "noise",
-                    "a flow's noise is the fBm alone: no tile, transfer, layers, palette or blend",
-                );
-                None
-            }
-            _ => {
-                r.push(
-                    "noise",
-                    "must be a \"perlin\" or \"value\" noise (a flow follows the curl of an fBm)",
-                );
-                None
-            }
-        };
+        let noise = spec.and_then(|spec| {
+            flow_noise(&spec)
+                .map_err(|message| r.push("noise", message))
+                .ok()
+        });
         Some(Flow {
             noise: noise?,
             strength: strength?,

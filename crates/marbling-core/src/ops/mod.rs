@@ -24,7 +24,7 @@ pub use circular::Circular;
 pub use comb::{Comb, MAX_COMB_TINES};
 pub use drop::Drop;
 pub use drops::{DropSet, MAX_DROPS, Radii};
-pub use flow::{FLOW_STEP_PX, Flow, FlowField, MAX_FLOW_STEPS};
+pub use flow::{FLOW_STEP_PX, Flow, FlowField, MAX_FLOW_STEPS, flow_noise};
 pub use jiggle::Jiggle;
 pub(crate) use jiggle::solve_kepler;
 pub(crate) use op_type::OpType;
