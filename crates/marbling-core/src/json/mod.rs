@@ -83,9 +83,10 @@ mod tests {
             r##"{"type":"sprays","centers":[[5,5],[9,9]],"radii":[2,3],"colors":["#ffffff"]}"##,
             r#"{"type":"jiggle","angle":0.2,"wavelength":60,"along":2,"across":1,"phase":0}"#,
             r#"{"type":"stylus","path":[[1,1],[20,9]],"wake":6,"tips":[-2,2]}"#,
+            r#"{"type":"flow","noise":{"type":"value","frequency":0.05,"octaves":2},"strength":3,"time":0.5}"#,
         ];
         let text = format!(
-            r##"{{"version":3,"width":64,"height":48,"background":"#000000","ops":[{}]}}"##,
+            r##"{{"version":4,"width":64,"height":48,"background":"#000000","ops":[{}]}}"##,
             ops.join(",")
         );
         let design = Design::from_json(&text).expect("every op type");

@@ -266,7 +266,7 @@ fn unknown_fields_are_rejected() {
 fn unknown_op_types_are_rejected() {
     assert_error(
         &variant("\"type\":\"vortex\"", "\"type\":\"whirl\""),
-        "ops[6].type: unknown op type \"whirl\"; expected one of drop, spray, tine, rake, wavy, circular, vortex, shift, turn, comb, drops, sprays, jiggle, stylus",
+        "ops[6].type: unknown op type \"whirl\"; expected one of drop, spray, tine, rake, wavy, circular, vortex, shift, turn, comb, drops, sprays, jiggle, stylus, flow",
     );
 }
 
@@ -274,7 +274,7 @@ fn unknown_op_types_are_rejected() {
 fn unsupported_versions_name_the_supported_ones() {
     assert_eq!(
         errors(&variant("\"version\": 1", "\"version\": 7")),
-        ["version: unsupported version 7; this build reads version 1, 2, 3"]
+        ["version: unsupported version 7; this build reads version 1, 2, 3, 4"]
     );
 }
 
