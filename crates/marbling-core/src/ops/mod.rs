@@ -1,7 +1,6 @@
-//! The marbling operations (Lu, Jaffer, Jin, Zhao & Mao 2012): the seven of schema v1
-//! the seven schema v3 adds (shift, turn, comb, drops, sprays, jiggle, stylus) and the flow
-//! of schema v4, each
-//! with its forward map and its inverse, in f64 design pixels.
+//! The marbling operations (Lu, Jaffer, Jin, Zhao & Mao 2012): the seven of schema v1,
+//! the seven schema v3 adds (shift, turn, comb, drops, sprays, jiggle, stylus) and the
+//! flow of schema v4, each with its forward map and its inverse, in f64 design pixels.
 
 mod circular;
 mod comb;
