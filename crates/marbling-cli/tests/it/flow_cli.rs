@@ -5,8 +5,7 @@
 //! blur, every edge as sharp as in a still render), blends two exact layers in between,
 //! and refuses bad input with its path.
 
-use crate::common::marbling;
-use crate::making_cli::apng_frames;
+use crate::making_cli::{apng_frames, fails_with, ok};
 use marbling_core::RgbaImage;
 use std::path::{Path, PathBuf};
 
@@ -14,26 +13,6 @@ fn scratch() -> PathBuf {
     let dir = std::env::temp_dir().join(format!("marbling-flow-cli-{}", std::process::id()));
     std::fs::create_dir_all(&dir).expect("tmp dir");
     dir
-}
-
-fn ok(args: &[&str]) -> String {
-    let o = marbling(args, None);
-    assert!(
-        o.status.success(),
-        "{args:?}: {}",
-        String::from_utf8_lossy(&o.stderr)
-    );
-    String::from_utf8_lossy(&o.stdout).into_owned()
-}
-
-fn fails_with(args: &[&str], needle: &str) {
-    let o = marbling(args, None);
-    let err = String::from_utf8_lossy(&o.stderr);
-    assert!(
-        !o.status.success() && err.contains(needle),
-        "{args:?}: {err}"
-    );
-    assert!(!err.contains("panicked"), "{err}");
 }
 
 fn png(path: &Path) -> RgbaImage {

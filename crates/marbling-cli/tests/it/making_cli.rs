@@ -12,7 +12,8 @@ fn scratch(name: &str) -> PathBuf {
     dir
 }
 
-fn ok(args: &[&str]) -> String {
+/// Runs `marbling ARGS`, asserting success; its standard output.
+pub(crate) fn ok(args: &[&str]) -> String {
     let o = marbling(args, None);
     assert!(
         o.status.success(),
@@ -23,7 +24,8 @@ fn ok(args: &[&str]) -> String {
     String::from_utf8_lossy(&o.stdout).into_owned()
 }
 
-fn fails_with(args: &[&str], needle: &str) {
+/// Runs `marbling ARGS`, asserting it fails with `needle` in its errors, without a panic.
+pub(crate) fn fails_with(args: &[&str], needle: &str) {
     let o = marbling(args, None);
     let err = String::from_utf8_lossy(&o.stderr);
     assert!(

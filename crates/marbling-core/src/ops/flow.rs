@@ -11,6 +11,7 @@
 //! M = P + (Δt/2)·u(M), P′ = 2M − P; M is found by Newton's method to 1e-13 relative.
 
 use super::OpType;
+use super::midpoint::newton_update;
 use super::rounding as round;
 use crate::caption::num;
 use crate::explain::Formula;
@@ -143,17 +144,15 @@ impl FlowField {
             None => self.velocity(qx, qy).0,
         };
         let (mut mx, mut my) = (qx + h * u[0], qy + h * u[1]);
-        // Newton converges quadratically and its error after an update dx is about
-        // |h·D²u|·dx², far below f64 rounding once |dx| ≤ 1e-7·scale: one evaluation
-        // fewer than waiting for an update of 1e-13.
-        let tol = 1e-7 * (1.0 + qx.abs() + qy.abs());
+        // Newton converges quadratically: after an update of dx the error is about
+        // |h·D²u|·dx², so once an update is ≤ 1e-9 px the next would be far below f64
+        // rounding (absolute, not relative to |q|: the map must stay smooth to the
+        // finite differences of the area tests wherever the point is).
+        let tol = 1e-9 + 1e-15 * (qx.abs() + qy.abs());
         for _ in 0..MAX_NEWTON {
             let (u, j) = self.velocity(mx, my);
             *last = Some(Sample { at: [mx, my], u, j });
-            let (fx, fy) = (mx - qx - h * u[0], my - qy - h * u[1]);
-            let (a, b, c, d) = (1.0 - h * j[0], -h * j[1], -h * j[2], 1.0 - h * j[3]);
-            let det = a * d - b * c;
-            let (dx, dy) = ((d * fx - b * fy) / det, (a * fy - c * fx) / det);
+            let [dx, dy] = newton_update([mx, my], [qx, qy], h, u, j);
             mx -= dx;
             my -= dy;
             let update = dx.abs() + dy.abs();

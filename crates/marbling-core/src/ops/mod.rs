@@ -8,6 +8,7 @@ mod drop;
 mod drops;
 mod flow;
 mod jiggle;
+mod midpoint;
 mod op_type;
 mod rake;
 mod rotation;

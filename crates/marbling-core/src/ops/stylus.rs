@@ -15,6 +15,7 @@
 //! Newton's method to 1e-12 relative.
 
 use super::OpType;
+use super::midpoint::newton_update;
 use super::rounding as round;
 use crate::caption::{at, num, plural};
 use crate::explain::Formula;
@@ -202,10 +203,7 @@ fn solve_sub_step(qx: f64, qy: f64, h: f64, tips: &[f64], wake: f64) -> (f64, f6
     let tol = 1e-13 * (wake + qx.abs() + qy.abs());
     for _ in 0..MAX_NEWTON {
         let (u, j) = tip_field(mx, my, tips, wake);
-        let (fx, fy) = (mx - qx - h * u[0], my - qy - h * u[1]);
-        let (a, b, c, d) = (1.0 - h * j[0], -h * j[1], -h * j[2], 1.0 - h * j[3]);
-        let det = a * d - b * c;
-        let (dx, dy) = ((d * fx - b * fy) / det, (a * fy - c * fx) / det);
+        let [dx, dy] = newton_update([mx, my], [qx, qy], h, u, j);
         mx -= dx;
         my -= dy;
         if dx.abs() + dy.abs() <= tol {

@@ -174,22 +174,25 @@ fn stylus() -> impl Strategy<Value = Op> {
         })
 }
 
-/// A flow along Perlin or value noise of 20–200 px, 1–4 octaves, for a time of either
-/// sign (a few hundred sub-steps at most).
+/// A flow along Perlin or value noise whose finest octave is 20–200 px (1–3 octaves),
+/// for a time of either sign (a few hundred sub-steps at most). Finer noise streamed
+/// longer is chaotic: points 1e-5 px apart part by far more than the map's smoothness
+/// lets central differences measure its Jacobian (det J read as 0.9991 for an octave of
+/// 3 px stretched 57×), so such flows are left to the round trip.
 fn flow() -> impl Strategy<Value = Op> {
     (
         prop::bool::ANY,
         20.0..200.0f32,
-        1..5u32,
+        1..4u32,
         any::<u32>(),
-        -30.0..30.0f64,
-        -2.0..2.0f64,
+        -20.0..20.0f64,
+        -1.5..1.5f64,
     )
-        .prop_map(|(perlin, size, octaves, seed, strength, time)| {
+        .prop_map(|(perlin, finest, octaves, seed, strength, time)| {
             Op::Flow(Flow {
                 noise: FbmParams {
                     basis: if perlin { Basis::Perlin } else { Basis::Value },
-                    frequency: 1.0 / size,
+                    frequency: 1.0 / (finest * (1 << (octaves - 1)) as f32),
                     octaves,
                     seed,
                     ..FbmParams::default()
