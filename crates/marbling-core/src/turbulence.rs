@@ -12,7 +12,7 @@
 use crate::color::{linear_to_srgb, srgb_to_linear};
 use crate::ops::{MAX_FLOW_STEPS, flow_noise};
 use crate::{Design, Flow, Op, RenderError, RenderOptions, RgbaImage, render};
-use marbling_json::{FieldError, PathReader, join};
+use marbling_json::{FieldError, PathReader};
 use marbling_noise::{FbmParams, NoiseSpec, SpecError};
 
 /// A looping turbulence (module doc).
@@ -63,13 +63,10 @@ impl Turbulence {
         let strength = r.number("", obj, "strength");
         let period = r.number("", obj, "period");
         if let Some(s) = strength.filter(|s| !s.is_finite()) {
-            r.push(
-                join("", "strength"),
-                format!("must be a finite number, got {s}"),
-            );
+            r.push("strength", format!("must be a finite number, got {s}"));
         }
         if let Some(p) = period.filter(|p| !(p.is_finite() && *p > 0.0)) {
-            r.push(join("", "period"), format!("must be a number > 0, got {p}"));
+            r.push("period", format!("must be a number > 0, got {p}"));
         }
         let t = match (noise, strength, period) {
             (Some(noise), Some(strength), Some(period)) => Some(Self {

@@ -264,12 +264,12 @@ impl OpType for Flow {
 
     fn check(&self, c: &mut OpCheck<'_>) {
         let ok = c.finite("strength", self.strength) & c.finite("time", self.time);
-        if ok && self.sub_steps() > MAX_FLOW_STEPS {
+        let steps = if ok { self.sub_steps() } else { 0 };
+        if steps > MAX_FLOW_STEPS {
             c.push(
                 "time",
                 format!(
-                    "needs {} sub-steps of at most {FLOW_STEP_PX} px, more than {MAX_FLOW_STEPS}; use a shorter time, a smaller strength or a larger noise",
-                    self.sub_steps()
+                    "needs {steps} sub-steps of at most {FLOW_STEP_PX} px, more than {MAX_FLOW_STEPS}; use a shorter time, a smaller strength or a larger noise"
                 ),
             );
         }
