@@ -22,6 +22,11 @@ struct RenderParams {
     refine_count: u32,
     // 1: write sRGB-encoded values (…Unorm targets); 0: write linear light (…UnormSrgb).
     encode_srgb: u32,
+    // A looping turbulence's two layers (marbling-core's turbulence.rs), each
+    // (Δt, N, weight, record index of the flow's header; 0: no turbulence): a sample
+    // walks back N sub-steps of Δt through that flow, then through records
+    // [0, op_count), the layers blended in linear light.
+    layers: array<vec4<f32>, 2>,
     // (dx, dy, weight, 0): offsets from the pixel's top-left corner in output pixels.
     samples: array<vec4<f32>, 20>,
 }
@@ -49,9 +54,38 @@ struct Hit {
 
 // Walks design point `p0` back through every op: the colour it shows as
 // (linear r, g, b, packed sRGB; for a v2 surface, packed is the ink's or the plain
-// background's, used only to decide refinement).
+// background's, used only to decide refinement). With a turbulence, the two layers'
+// colours blended in linear light (packed is −1 where they differ).
 fn trace(p0: vec2<f32>) -> vec4<f32> {
-    let h = walk(p0);
+    if params.layers[0].w == 0.0 {
+        return trace_from(p0, p0);
+    }
+    var acc = vec3<f32>(0.0);
+    var packed = -2.0;
+    for (var k = 0u; k < 2u; k++) {
+        let layer = params.layers[k];
+        if layer.z <= 0.0 {
+            continue;
+        }
+        let at = u32(layer.w);
+        var h = op_record(at);
+        h.a.z = layer.x;
+        h.a.w = layer.y;
+        let c = trace_from(p0, flow_back(at, h, p0));
+        acc += layer.z * c.rgb;
+        if packed == -2.0 || packed == c.w {
+            packed = c.w;
+        } else {
+            packed = -1.0;
+        }
+    }
+    return vec4<f32>(acc, packed);
+}
+
+// The colour design point `p0` shows when its walk through the ops starts at `p`
+// (p0 itself, or where a turbulence's flow took it; the paper's grain stays at p0).
+fn trace_from(p0: vec2<f32>, p: vec2<f32>) -> vec4<f32> {
+    let h = walk(p);
     if surface.flags == 0u {
         return h.color;
     }

@@ -11,6 +11,7 @@ use crate::shaders::{ExactVariant, RENDER_PLAIN_WGSL};
 use crate::surface::SurfaceParams;
 use crate::variants::Variants;
 use marbling_core::ImageFit;
+use marbling_core::turbulence::Layer;
 use marbling_core::image_background::ImagePixels;
 use marbling_core::{Antialias, Design, Op};
 use marbling_noise::wgsl::NoiseKinds;
@@ -60,6 +61,9 @@ pub struct PreparedDesign {
     v3: bool,
     /// Whether it holds a flow ([`Op::is_v4`]).
     flow: bool,
+    /// The layers of a looping turbulence whose flow is the last uploaded op
+    /// ([`PreparedDesign::set_turbulence`]).
+    turbulence: Option<[Layer; 2]>,
     uniform: wgpu::Buffer,
     bind_group: wgpu::BindGroup,
     params: RenderParams,
@@ -207,6 +211,7 @@ impl ExactRenderer {
             textured: false,
             v3: false,
             flow: false,
+            turbulence: None,
             uniform,
             bind_group,
             params: RenderParams::new(
@@ -510,16 +515,55 @@ impl PreparedDesign {
         self.write_params(queue);
     }
 
+    /// Shows the uploaded ops as a looping turbulence's frame
+    /// (`marbling_core::turbulence`): the last uploaded op must be a flow (of any time;
+    /// its noise and strength are the turbulence's), and each sample walks back through
+    /// it for each layer's time, then through the ops before it, the layers blended by
+    /// their weights. `None`, or a last op that is no flow: the ops as they are.
+    pub fn set_turbulence(&mut self, queue: &wgpu::Queue, layers: Option<[Layer; 2]>) {
+        self.turbulence = layers;
+        self.write_params(queue);
+    }
+
+    /// The flow the turbulence layers follow: the last uploaded op, when one is set.
+    fn turbulence_flow(&self) -> Option<(&marbling_core::Flow, [Layer; 2])> {
+        match (self.uploaded.last(), self.turbulence) {
+            (Some(Op::Flow(flow)), Some(layers)) => Some((flow, layers)),
+            _ => None,
+        }
+    }
+
     fn write_params(&mut self, queue: &wgpu::Queue) {
+        let mut op_count = self.records.len() as u32;
+        let mut layers = [[0.0; 4]; 2];
+        if let Some((flow, turbulence)) = self.turbulence_flow() {
+            let header = self.records.len() - 1;
+            let before = self.uploaded.len().checked_sub(2);
+            op_count = before.map_or(0, |k| self.record_ends[k]) as u32;
+            for (slot, layer) in layers.iter_mut().zip(turbulence) {
+                let field = marbling_core::Flow {
+                    time: layer.time,
+                    ..flow.clone()
+                }
+                .field();
+                *slot = [
+                    field.dt as f32,
+                    field.steps as f32,
+                    layer.weight as f32,
+                    header as f32,
+                ];
+            }
+        }
         self.params = RenderParams::new(
             self.background,
-            self.records.len() as u32,
+            op_count,
             self.layout.ops_per_row,
             self.view.antialias,
             self.view.scale,
             self.view.offset,
             self.params.encode_srgb == 1,
         );
+        self.params.layers = layers;
         queue.write_buffer(&self.uniform, 0, bytemuck::bytes_of(&self.params));
     }
 
@@ -537,7 +581,11 @@ impl PreparedDesign {
     /// ([`Op::walk_cost`]) and the noise it reads ([`Design::surface_cost`]); renderers
     /// size their tiles by it.
     pub fn walk_cost(&self) -> u64 {
-        self.uploaded.iter().map(Op::walk_cost).sum::<u64>() + self.surface_cost
+        let ops: u64 = self.uploaded.iter().map(Op::walk_cost).sum();
+        // A turbulence walks twice: the two layers' flow times add up to less than
+        // 1.5 periods, the flow's own time being one.
+        let walks = if self.turbulence_flow().is_some() { 2 } else { 1 };
+        walks * ops + self.surface_cost
     }
 
     /// Records written into the op texture since it was prepared (an update that only

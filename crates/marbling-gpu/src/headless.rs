@@ -6,7 +6,7 @@ use crate::exact::{ExactRenderer, PreparedDesign, View};
 use crate::target::{RenderTarget, copy_to_buffer, read_buffer};
 use crate::tile_grid;
 use crate::{GpuContext, GpuError};
-use marbling_core::{Design, RenderOptions, RgbaImage, output_size};
+use marbling_core::{Design, Op, RenderOptions, RgbaImage, output_size};
 
 /// Default tile side, pixels (smaller when the device's texture limit is smaller).
 /// Large enough that 1080p and 4K frames are one or a few draws, small enough that a
@@ -195,8 +195,37 @@ impl GpuRenderer {
         opts: &RenderOptions,
         progress: &dyn Fn(usize, usize),
     ) -> Result<RgbaImage, GpuError> {
-        let (width, height) = output_size(design, opts.scale)?;
         let mut prepared = self.prepare(design)?;
+        self.render_prepared(&mut prepared, design, opts, progress)
+    }
+
+    /// The frame at time `t` of `turbulence` over `design` (the twin of
+    /// `marbling_core::turbulence::Turbulence::render`, in f32): each sample walks back
+    /// through the flow for each layer's time, then through the ops, the layers blended
+    /// in linear light.
+    pub fn render_turbulence(
+        &self,
+        design: &Design,
+        turbulence: &marbling_core::turbulence::Turbulence,
+        t: f64,
+        opts: &RenderOptions,
+    ) -> Result<RgbaImage, GpuError> {
+        let mut flowed = design.clone();
+        flowed.ops.push(Op::Flow(turbulence.flow(turbulence.period)));
+        let mut prepared = self.prepare(&flowed)?;
+        prepared.set_turbulence(&self.ctx.queue, Some(turbulence.layers(t)));
+        self.render_prepared(&mut prepared, design, opts, &|_, _| {})
+    }
+
+    /// Renders `prepared` (an upload of `design`) in tiles.
+    fn render_prepared(
+        &self,
+        prepared: &mut PreparedDesign,
+        design: &Design,
+        opts: &RenderOptions,
+        progress: &dyn Fn(usize, usize),
+    ) -> Result<RgbaImage, GpuError> {
+        let (width, height) = output_size(design, opts.scale)?;
         let mut image = RgbaImage::filled(width, height, [0, 0, 0, 255]);
         let tiles = tile_grid(width, height, self.tile_side);
         for (done, &(x0, y0, w, h)) in tiles.iter().enumerate() {
@@ -212,7 +241,7 @@ impl GpuRenderer {
                     .ctx
                     .device
                     .create_command_encoder(&wgpu::CommandEncoderDescriptor { label: None });
-                self.record(&mut encoder, &prepared, &target);
+                self.record(&mut encoder, prepared, &target);
                 let (buffer, padded) = copy_to_buffer(&self.ctx.device, &mut encoder, &target);
                 self.ctx.queue.submit([encoder.finish()]);
                 let row_bytes = width as usize * 4;

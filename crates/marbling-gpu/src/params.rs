@@ -33,6 +33,11 @@ pub struct RenderParams {
     pub refine_count: u32,
     /// 1: the shader writes sRGB-encoded values; 0: linear light (sRGB targets).
     pub encode_srgb: u32,
+    /// The two layers of a looping turbulence (`marbling_core::turbulence`), each
+    /// (Δt, N, weight, record index of the flow's header): every sample walks back N
+    /// sub-steps of Δt through the flow whose header is that record, then through the
+    /// `op_count` records before the flow. All zero: no turbulence.
+    pub layers: [[f32; 4]; 2],
     /// (dx, dy, weight, 0) per sample: first pass, then refinement.
     pub samples: [[f32; 4]; MAX_RENDER_SAMPLES],
 }
@@ -95,6 +100,7 @@ impl RenderParams {
             first_count: first.len() as u32,
             refine_count: refine.len() as u32,
             encode_srgb: u32::from(encode_srgb),
+            layers: [[0.0; 4]; 2],
             samples,
         }
     }

@@ -21,7 +21,7 @@ pub const OPS_V3: &str = include_str!("../shaders/ops_v3.wgsl");
 pub const OPS_V3_OFF: &str = include_str!("../shaders/ops_v3_off.wgsl");
 /// `shaders/flow.wgsl`: the exact walk of schema v4's flow (needs the noise lattice).
 pub const FLOW: &str = include_str!("../shaders/flow.wgsl");
-/// `shaders/flow_off.wgsl`: stand-in for `flow.wgsl` in v3 variants without a flow.
+/// `shaders/flow_off.wgsl`: stand-in for `flow.wgsl` in variants without a flow.
 pub const FLOW_OFF: &str = include_str!("../shaders/flow_off.wgsl");
 /// `shaders/image.wgsl`: the image background's sampling (every variant).
 pub const IMAGE: &str = include_str!("../shaders/image.wgsl");
@@ -35,7 +35,7 @@ pub const RENDER: &str = include_str!("../shaders/render.wgsl");
 
 /// The exact renderer for designs with a plain or image background, no overlays and no
 /// schema v3 op (every v1 design): `common.wgsl`, `records.wgsl`, `ops_v3_off.wgsl`,
-/// `image.wgsl`, `surface_off.wgsl`, `render.wgsl` — no noise or stylus code, so it is
+/// `flow_off.wgsl`, `image.wgsl`, `surface_off.wgsl`, `render.wgsl` — no noise or stylus code, so it is
 /// as small and fast as before schemas v2 and v3.
 pub const RENDER_PLAIN_WGSL: &str = concat!(
     include_str!("../shaders/common.wgsl"),
@@ -43,6 +43,8 @@ pub const RENDER_PLAIN_WGSL: &str = concat!(
     include_str!("../shaders/records.wgsl"),
     "\n",
     include_str!("../shaders/ops_v3_off.wgsl"),
+    "\n",
+    include_str!("../shaders/flow_off.wgsl"),
     "\n",
     include_str!("../shaders/image.wgsl"),
     "\n",
@@ -135,8 +137,7 @@ impl ExactVariant {
         }
         let v3 = if self.v3 { OPS_V3 } else { OPS_V3_OFF };
         let flow = match (self.v3 && self.flow, self.surface()) {
-            (false, _) if self.v3 => FLOW_OFF.to_owned(),
-            (false, _) => String::new(),
+            (false, _) => FLOW_OFF.to_owned(),
             // The surface's noise module holds the lattice already.
             (true, true) => FLOW.to_owned(),
             (true, false) => [flow_lattice().as_str(), FLOW].join("\n"),

@@ -108,3 +108,48 @@ fn a_flow_that_runs_longer_fails_the_comparison() {
     println!("flows 30 % longer: {r:?}");
     assert!(r.fraction() > 0.02, "{r:?}");
 }
+
+/// A looping turbulence of a drop design (`Turbulence` of marbling-core).
+fn turbulence() -> (Design, marbling_core::turbulence::Turbulence) {
+    let d = design(0, 30);
+    let Op::Flow(f) = flow(2, 1.0) else {
+        unreachable!("flow() makes flows");
+    };
+    let t = marbling_core::turbulence::Turbulence {
+        noise: f.noise,
+        strength: 12.0,
+        period: 3.0,
+    };
+    (d, t)
+}
+
+/// Each GPU sample walks back through both layers' flows and blends them as the CPU
+/// does, at a time when both layers show (weights ⅓ and ⅔) and when one does; a frame a
+/// tenth of a period later differs (so the comparison can tell frames apart).
+#[test]
+fn turbulence_frames_match_the_cpu() {
+    let Some(gpu) = crate::common::renderer() else {
+        return;
+    };
+    let (d, turb) = turbulence();
+    let opts = RenderOptions {
+        scale: 1.0,
+        antialias: Antialias::Rgss,
+    };
+    for t in [1.0, 0.0, 4.0] {
+        let c = turb.render(&d, t, &opts).expect("CPU turbulence");
+        let g = gpu
+            .render_turbulence(&d, &turb, t, &opts)
+            .expect("GPU turbulence");
+        let r = compare(&c, &g, THRESHOLD).expect("same size");
+        println!("turbulence at t = {t}: {r:?}");
+        assert!(r.fraction() <= 0.005, "t = {t}: {r:?}");
+    }
+    let c = turb.render(&d, 1.0, &opts).expect("CPU turbulence");
+    let later = gpu
+        .render_turbulence(&d, &turb, 1.3, &opts)
+        .expect("GPU turbulence");
+    let r = compare(&c, &later, THRESHOLD).expect("same size");
+    println!("turbulence a tenth of a period later: {r:?}");
+    assert!(r.fraction() > 0.02, "{r:?}");
+}

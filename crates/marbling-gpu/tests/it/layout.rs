@@ -28,6 +28,7 @@ fn render_params_match_wgsl() {
             ("first_count", offset_of!(RenderParams, first_count)),
             ("refine_count", offset_of!(RenderParams, refine_count)),
             ("encode_srgb", offset_of!(RenderParams, encode_srgb)),
+            ("layers", offset_of!(RenderParams, layers)),
             ("samples", offset_of!(RenderParams, samples)),
         ],
         size_of::<RenderParams>(),
