@@ -4,6 +4,7 @@
 //! `--flow`, one period of a looping colour turbulence of the finished design instead
 //! (`marbling_core::turbulence`).
 
+use crate::backend::{Backend, gpu_renderer};
 use crate::input::{read_design, read_turbulence};
 use anyhow::{Context, Result, bail};
 use clap::Args;
@@ -51,6 +52,10 @@ pub struct AnimateArgs {
     /// Frames N of the --flow loop.
     #[arg(long, default_value_t = 24, requires = "flow")]
     frames: usize,
+    /// Renderer of the frames: cpu (the exact f64 reference) or gpu (the WGSL renderer,
+    /// f32).
+    #[arg(long, value_enum, default_value_t = Backend::Cpu)]
+    backend: Backend,
 }
 
 /// The frame order of a loop of `made` frames of the making (0 the start, `made − 1`
@@ -87,6 +92,9 @@ pub fn run(args: &AnimateArgs) -> Result<()> {
     }
     if args.width == 0 {
         bail!("--width must be at least 1");
+    }
+    if args.backend == Backend::Vector {
+        bail!("animate renders with the exact walk: use --backend cpu or gpu");
     }
     let design = read_design(&args.design)?;
     let turbulence = args.flow.as_deref().map(read_turbulence).transpose()?;
@@ -128,6 +136,15 @@ pub fn run(args: &AnimateArgs) -> Result<()> {
     {
         bar.set_style(style.progress_chars("=> "));
     }
+    let gpu = match args.backend {
+        Backend::Gpu => {
+            let gpu = gpu_renderer()?;
+            eprintln!("gpu adapter: {}", gpu.context().describe());
+            Some(gpu)
+        }
+        _ => None,
+    };
+    let start = std::time::Instant::now();
     // Frame i of the making shows it at i/(made − 1) of its steps: the last, all of it.
     // A reversed loop shows each again on the way back: rendered once, kept.
     let mut rendered: Vec<Option<RgbaImage>> = vec![None; made];
@@ -136,11 +153,18 @@ pub fn run(args: &AnimateArgs) -> Result<()> {
             bar.inc(1);
             return Ok(image.clone());
         }
-        let image = match &turbulence {
-            Some(t) => t.render(&design, t.period * i as f64 / made as f64, &opts)?,
-            None => {
+        let image = match (&turbulence, &gpu) {
+            (Some(t), None) => t.render(&design, t.period * i as f64 / made as f64, &opts)?,
+            (Some(t), Some(gpu)) => {
+                gpu.render_turbulence(&design, t, t.period * i as f64 / made as f64, &opts)?
+            }
+            (None, gpu) => {
                 let position = steps as f64 * i as f64 / (made - 1) as f64;
-                render(&design_at(&design, position), &opts)?
+                let at = design_at(&design, position);
+                match gpu {
+                    Some(gpu) => gpu.render(&at, &opts)?,
+                    None => render(&at, &opts)?,
+                }
             }
         };
         bar.inc(1);
@@ -192,6 +216,12 @@ pub fn run(args: &AnimateArgs) -> Result<()> {
     out.flush()
         .with_context(|| format!("cannot write '{}'", args.output))?;
     bar.finish_and_clear();
+    let seconds_taken = start.elapsed().as_secs_f64();
+    eprintln!(
+        "rendered and encoded {frames} frames in {seconds_taken:.3} s ({:.2} frames/s, backend {})",
+        frames as f64 / seconds_taken,
+        args.backend.name()
+    );
     if let Some(t) = &turbulence {
         println!(
             "{}: {frames} frames of {w}×{h} px, one period ({}) of the flow at {} fps, looping",

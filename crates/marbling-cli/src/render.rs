@@ -136,8 +136,8 @@ pub fn run(args: &RenderArgs) -> Result<()> {
     };
     let turbulence = match &args.flow {
         Some(path) => {
-            if args.backend != Backend::Cpu {
-                bail!("--flow renders with the exact CPU walk: leave out --backend");
+            if args.backend == Backend::Vector {
+                bail!("--flow renders with the exact walk: use --backend cpu or gpu");
             }
             if !args.time.is_finite() {
                 bail!("--time must be a finite number, got {}", args.time);
@@ -164,7 +164,14 @@ pub fn run(args: &RenderArgs) -> Result<()> {
     };
     let image = match (traced, &turbulence) {
         (Some(image), _) => image,
-        (None, Some(turbulence)) => turbulence.render(&design, args.time, &opts)?,
+        (None, Some(turbulence)) => match args.backend {
+            Backend::Gpu => {
+                let gpu = crate::backend::gpu_renderer()?;
+                eprintln!("gpu adapter: {}", gpu.context().describe());
+                gpu.render_turbulence(&design, turbulence, args.time, &opts)?
+            }
+            _ => turbulence.render(&design, args.time, &opts)?,
+        },
         (None, None) => {
             let progress = LazyProgress::new();
             let image = render_image(args.backend, &design, &opts, args.tolerance, &progress)?;

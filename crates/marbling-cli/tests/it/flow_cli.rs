@@ -119,8 +119,12 @@ fn bad_turbulence_is_refused_with_its_path() {
     std::fs::write(&good, TURBULENCE).expect("write");
     let g = good.to_str().expect("utf-8");
     fails_with(
-        &["render", d, "--flow", g, "--backend", "gpu", "-o", o],
-        "--flow renders with the exact CPU walk",
+        &["render", d, "--flow", g, "--backend", "vector", "-o", o],
+        "--flow renders with the exact walk: use --backend cpu or gpu",
+    );
+    fails_with(
+        &["animate", d, "--flow", g, "--backend", "vector", "-o", o],
+        "animate renders with the exact walk: use --backend cpu or gpu",
     );
     fails_with(
         &["animate", d, "--flow", g, "--frames", "1", "-o", o],
@@ -136,4 +140,47 @@ fn the_flow_example_validates_as_version_4() {
     );
     let out = ok(&["validate", path]);
     assert!(out.contains("flow"), "{out}");
+}
+
+/// `--backend gpu` draws the turbulence's frame as the CPU does (≤ 1 % of pixels off by
+/// more than 8 of 255), in `render` and in `animate`.
+#[test]
+fn the_gpu_draws_the_turbulence_frame_of_the_cpu() {
+    let dir = scratch().join("gpu");
+    std::fs::create_dir_all(&dir).expect("tmp dir");
+    let (design, turb) = (dir.join("d.json"), dir.join("turb.json"));
+    std::fs::write(&design, DESIGN).expect("write");
+    std::fs::write(&turb, TURBULENCE).expect("write");
+    let (d, t) = (
+        design.to_str().expect("utf-8"),
+        turb.to_str().expect("utf-8"),
+    );
+    let (cpu, gpu) = (dir.join("cpu.png"), dir.join("gpu.png"));
+    let run = |backend: &str, out: &Path| {
+        std::process::Command::new(env!("CARGO_BIN_EXE_marbling"))
+            .args(["render", d, "--flow", t, "--time", "0.7", "--backend", backend])
+            .arg("-o")
+            .arg(out)
+            .output()
+            .expect("marbling runs")
+    };
+    let g = run("gpu", &gpu);
+    let stderr = String::from_utf8_lossy(&g.stderr);
+    if !g.status.success()
+        && stderr.contains("no GPU adapter")
+        && marbling_testkit::gpu_or_skip::<(), _>(Err(stderr.trim())).is_none()
+    {
+        return;
+    }
+    assert!(g.status.success(), "{stderr}");
+    assert!(run("cpu", &cpu).status.success());
+    let r = marbling_core::compare::compare(&png(&cpu), &png(&gpu), 8).expect("same size");
+    assert!(r.fraction() <= 0.01, "{r:?}");
+    let anim = dir.join("loop.png");
+    let a = anim.to_str().expect("utf-8");
+    ok(&[
+        "animate", d, "--flow", t, "--frames", "3", "--width", "60", "--backend", "gpu", "-o", a,
+    ]);
+    let (count, frames) = apng_frames(&std::fs::read(&anim).expect("apng"));
+    assert_eq!((count, frames.len()), (3, 3));
 }
