@@ -417,6 +417,12 @@ impl eframe::App for MarblingApp {
             live.map(|f| f.number)
         });
         with_frame!(self, |f| self.rendering.video.tick(&ctx, drawn, &mut f));
+        let drawn = self.rendering.status.lock().ok().and_then(|s| {
+            let stream = s.drawn.as_ref().and_then(|r| r.stream.as_ref());
+            stream.map(|f| f.number)
+        });
+        let now = ctx.input(|i| i.time);
+        with_frame!(self, |f| self.rendering.stream.tick(&ctx, drawn, now, &mut f));
         with_frame!(self, |f| self.noise.poll_picked_data(&mut f));
         with_frame!(self, |f| self.panels.midi.tick(&ctx, &mut f));
         self.check_fragment();

@@ -171,6 +171,8 @@ pub struct Rendering {
     pub last_input_s: f64,
     /// The live video background (src/media/video_panel.rs).
     pub video: crate::media::video_panel::LiveVideoBackground,
+    /// The design streaming along the Flow tool's noise (src/marbling/stream.rs).
+    pub stream: crate::marbling::stream::FlowStream,
 }
 
 impl Rendering {
@@ -193,6 +195,7 @@ impl Rendering {
             svg: Default::default(),
             last_input_s: 0.0,
             video: Default::default(),
+            stream: Default::default(),
         }
     }
 }

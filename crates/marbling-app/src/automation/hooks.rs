@@ -11,7 +11,7 @@ impl MarblingApp {
         // size, antialiasing and picture — is in the canvas texture's commands. Ready: the
         // GPU has also finished it (the queue's work-done callback). A zoom, pan or resize
         // asks for another frame, so ready falls to 0 until that one is drawn.
-        let (recorded, finished) = {
+        let (recorded, finished, streaming) = {
             let st = self.rendering.status.lock().ok();
             let drawn = st.as_ref().and_then(|s| s.drawn.clone());
             let finished = st.as_ref().is_some_and(|s| {
@@ -26,8 +26,9 @@ impl MarblingApp {
                     && drawn == self.hooks.requested
                     && drawn
                         .as_ref()
-                        .is_some_and(|d| d.design_key == self.editor.key),
+                        .is_some_and(|d| d.design_key == self.editor.key || d.stream.is_some()),
                 finished,
+                drawn.is_some_and(|d| d.stream.is_some()),
             )
         };
         let ready = recorded && finished;
@@ -49,8 +50,9 @@ impl MarblingApp {
             .ok()
             .map(|s| {
                 let asked = s.cache_ready == Some(self.editor.key);
-                if recorded && !asked {
-                    // One more frame builds the live-preview cache.
+                if recorded && !asked && !streaming {
+                    // One more frame builds the live-preview cache (none is built while
+                    // the stream shows).
                     ctx.request_repaint();
                 }
                 let done =
@@ -180,6 +182,10 @@ impl MarblingApp {
                 self.hooks.noise_json.as_ref().map(|(_, j)| j.clone()),
             ),
             ("data-noise-preview", Some(self.noise.preview_hook())),
+            (
+                "data-stream",
+                self.rendering.stream.hook(&self.prefs.settings),
+            ),
             ("data-layout", Some(self.panels.layout.name().to_owned())),
             (
                 "data-focus",

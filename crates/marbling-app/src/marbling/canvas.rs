@@ -331,8 +331,31 @@ impl MarblingApp {
             .clone()
             .filter(|(key, _)| *key == self.editor.key)
             .map(|(_, s)| s);
+        // The stream shows while no gesture or Play is under way.
+        let stream = self
+            .rendering
+            .stream
+            .frame(&self.prefs.settings)
+            .filter(|_| {
+                pending.is_empty()
+                    && self.editor.active.is_none()
+                    && self.editor.playback.is_none()
+            });
         let (shown, design_key, single) = match pending.as_slice() {
-            [] => (self.editor.shown.clone(), self.editor.key, None),
+            [] => match &stream {
+                // The design then its flow (the renderer walks it for each layer's
+                // time), keyed by the flow so the GPU writes the ops once.
+                Some(s) => {
+                    let flow = [Op::Flow(s.flow.clone())];
+                    (
+                        self.editor.shown.then(&flow),
+                        (self.editor.key.wrapping_mul(1_000_003) ^ fingerprint(&flow))
+                            | (1 << 63),
+                        None,
+                    )
+                }
+                None => (self.editor.shown.clone(), self.editor.key, None),
+            },
             [op] if previewable(op) => {
                 (self.editor.shown.clone(), self.editor.key, Some(op.clone()))
             }
@@ -354,6 +377,10 @@ impl MarblingApp {
             self.rendering
                 .fast_paint
                 .preview_antialias(self.prefs.antialias)
+        } else if stream.is_some() && self.rendering.stream.is_playing() {
+            // A playing stream: one sample per pixel, so frames keep coming; paused, the
+            // frame takes the antialiasing setting.
+            marbling_core::Antialias::None
         } else if self.rendering.video.live_frame().is_some() {
             // Live video: one sample per pixel, so frames keep coming (the 640×480
             // video is coarser than the canvas anyway); *Use this frame* keeps the
@@ -370,9 +397,12 @@ impl MarblingApp {
             origin: [view.origin.x, view.origin.y],
             antialias,
             pending: single,
-            // A gesture's several ops drawn exactly: the design's cache stands in.
+            // A gesture's several ops drawn exactly: the design's cache stands in. A stream
+            // frame is drawn over the last one (no cache holds a stream).
             stand_in: if design_key == self.editor.key {
                 stand_in
+            } else if stream.is_some() {
+                None
             } else {
                 Some(StandIn {
                     key: Some(self.editor.key),
@@ -382,6 +412,7 @@ impl MarblingApp {
             },
             transient: design_key != self.editor.key,
             live: self.rendering.video.live_frame().cloned(),
+            stream,
         };
         self.hooks.requested = Some(request.exact_frame());
         let acting =

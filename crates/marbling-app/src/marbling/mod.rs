@@ -15,6 +15,7 @@ pub(crate) mod playback;
 pub(crate) mod player;
 pub(crate) mod player_drawing;
 pub(crate) mod shown;
+pub(crate) mod stream;
 pub(crate) mod stroke;
 pub(crate) mod tool_panel;
 pub(crate) mod tools;

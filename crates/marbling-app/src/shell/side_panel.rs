@@ -43,6 +43,9 @@ impl MarblingApp {
             }
             Section::Tool => {
                 with_frame!(self, |f| crate::marbling::tool_panel::ui(ui, &mut f));
+                if self.prefs.tool == crate::marbling::tools::ToolKind::Flow {
+                    with_frame!(self, |f| self.rendering.stream.ui(ui, &mut f));
+                }
             }
             Section::Ink => with_frame!(self, |f| self.panels.ink.ui(ui, &mut f)),
             Section::Picture => with_frame!(self, |f| self.panels.pictures.ui(ui, &mut f)),

@@ -61,6 +61,9 @@ pub struct FrameRequest {
     /// A live video frame shown as the design's picture (each new frame is a new exact
     /// frame), or `None` for the design's own background.
     pub live: Option<crate::media::video::LiveFrame>,
+    /// A frame of the design streaming along a curl noise: the shown design ends with
+    /// the frame's flow, walked for each layer's time (src/marbling/stream.rs).
+    pub stream: Option<crate::marbling::stream::StreamFrame>,
 }
 
 /// What shows while the requested design's exact frame is drawn in tiles, when that
@@ -279,6 +282,7 @@ impl CanvasGpu {
                     antialias: req.antialias,
                 },
             );
+            prepared.set_turbulence(queue, req.stream.as_ref().map(|s| s.layers));
         }
         let region = sheet_region(design, req);
         self.refining = Some((req.clone(), Refinement::new(region)));

@@ -53,6 +53,7 @@ fn the_exact_frame_is_drawn_in_tiles_then_the_cache() {
         stand_in: None,
         transient: false,
         live: None,
+        stream: None,
     };
     assert_eq!(sheet_region(&design, &request), [10, 5, 100, 80]);
     let mut callback = CanvasCallback {
