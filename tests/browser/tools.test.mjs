@@ -12,7 +12,7 @@ import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import {
-  linkFragment, MARBLING, READY_MS, SHOTS, clickControl, crop, decode, differing, download, launch, sheet, shootSheet, waitOps,
+  attr, linkFragment, MARBLING, READY_MS, SHOTS, clickControl, crop, decode, differing, download, launch, sheet, shootSheet, waitOps, waitReady,
 } from './harness.mjs';
 
 const SMALL = {
@@ -224,8 +224,8 @@ describe('v3 tools on webgl2', () => {
       ],
     };
     const prefs = JSON.stringify({
-      tool: 'flow', palette: 0, ink: '#1d3557', antialias: 'rgss',
-      settings: { flow_size: 60, flow_octaves: 1, flow_strength: 20, flow_seed: 3 },
+      tool: 'flow', palette: 0, ink: '#1d3557', antialias: 'none',
+      settings: { flow_size: 60, flow_octaves: 1, flow_strength: 10, flow_seed: 3 },
     });
     const context = await browser.newContext({ viewport: { width: 760, height: 480 }, deviceScaleFactor: 1, acceptDownloads: true });
     await context.addInitScript((p) => localStorage.setItem('marbling.prefs.v1', p), prefs);
@@ -237,8 +237,8 @@ describe('v3 tools on webgl2', () => {
     const s = await sheet(page);
     const p = (x, y) => ({ x: s.x + x * s.scale, y: s.y + y * s.scale });
     const before = await shootSheet(page, design.width, design.height);
-    // A 30-px drag at 20 px per unit time: T = 1.5.
-    const t0 = Date.now();
+    // A 30-px drag at 10 px per unit time: T = 3.
+    let t0 = Date.now();
     await page.mouse.move(p(60, 100).x, p(60, 100).y);
     await page.mouse.down();
     for (let i = 1; i <= 6; i++) await page.mouse.move(p(60 + 5 * i, 100).x, p(60 + 5 * i, 100).y);
@@ -254,16 +254,16 @@ describe('v3 tools on webgl2', () => {
     const flow = saved.ops[3];
     assert.deepEqual(
       [flow.type, flow.noise.type, flow.noise.octaves, flow.noise.seed, flow.strength],
-      ['flow', 'perlin', 1, 3, 20],
+      ['flow', 'perlin', 1, 3, 10],
     );
     // The pointer lands on whole CSS pixels: the drag is 30 design px within one pixel.
-    assert.ok(Math.abs(flow.time - 1.5) <= 1 / (20 * s.scale), `time ${flow.time}`);
+    assert.ok(Math.abs(flow.time - 3) <= 1 / (10 * s.scale), `time ${flow.time}`);
     // 1/60 as the f32 the noise crate keeps.
     assert.ok(Math.abs(flow.noise.frequency - 1 / 60) < 1e-8, `frequency ${flow.noise.frequency}`);
     const file = path.join(os.tmpdir(), `marbling-flow-saved-${process.pid}.json`);
     fs.writeFileSync(file, JSON.stringify(saved));
     const out = path.join(os.tmpdir(), `marbling-flow-${process.pid}.png`);
-    execFileSync(MARBLING, ['render', file, '-o', out, '--scale', String(after.scale), '--aa', 'rgss']);
+    execFileSync(MARBLING, ['render', file, '-o', out, '--scale', String(after.scale), '--aa', 'none']);
     const cpu = decode(fs.readFileSync(out));
     const w = Math.min(cpu.width, after.img.width);
     const h = Math.min(cpu.height, after.img.height);
@@ -274,6 +274,42 @@ describe('v3 tools on webgl2', () => {
 
     await page.keyboard.press('Control+z');
     await waitOps(page, 3);
+
+    // Stream: the design flowing along the tool's noise, a looping turbulence; paused,
+    // its frame is the CLI's `render --flow TURB --time t` of the same document.
+    const stream = async () => JSON.parse((await attr(page, 'data-stream')) ?? 'null');
+    assert.equal(await stream(), null);
+    t0 = Date.now();
+    await clickControl(page, 'flow-stream');
+    await page.waitForFunction(() => JSON.parse(document.body.dataset.stream ?? '{"frame":0}').frame >= 2, null, { timeout: READY_MS });
+    await clickControl(page, 'flow-stream');
+    await page.waitForFunction(() => JSON.parse(document.body.dataset.stream).playing === false, null, { timeout: READY_MS });
+    await waitReady(page);
+    const hook = await stream();
+    console.log(`tools: stream, 2 frames and a paused one in ${((Date.now() - t0) / 1000).toFixed(1)} s: ${JSON.stringify(hook)}`);
+    assert.ok(hook.time > 0 && hook.time < hook.period, `time ${hook.time}`);
+    const streamed = await shootSheet(page, design.width, design.height);
+    const turbFile = path.join(os.tmpdir(), `marbling-stream-${process.pid}.json`);
+    fs.writeFileSync(turbFile, JSON.stringify({ noise: hook.noise, strength: hook.strength, period: hook.period }));
+    const designFile = path.join(os.tmpdir(), `marbling-stream-design-${process.pid}.json`);
+    fs.writeFileSync(designFile, JSON.stringify(design));
+    const streamOut = path.join(os.tmpdir(), `marbling-stream-${process.pid}.png`);
+    execFileSync(MARBLING, ['render', designFile, '--flow', turbFile, '--time', String(hook.time), '-o', streamOut, '--scale', String(streamed.scale), '--aa', 'none']);
+    const frame = decode(fs.readFileSync(streamOut));
+    const sw = Math.min(frame.width, streamed.img.width);
+    const sh = Math.min(frame.height, streamed.img.height);
+    const off = differing(crop(frame, sw, sh), crop(streamed.img, sw, sh), 24);
+    const moved = differing(crop(before.img, sw, sh), crop(streamed.img, sw, sh), 24);
+    console.log(`tools: stream frame vs CLI ${(100 * off).toFixed(3)} %, vs the still design ${(100 * moved).toFixed(1)} % of ${sw}×${sh} px differ by > 24/255`);
+    assert.ok(off <= 0.01, `${(100 * off).toFixed(2)} % of pixels differ from the CLI's frame`);
+    assert.ok(moved > 0.05, `the stream moved only ${(100 * moved).toFixed(2)} % of the sheet`);
+    await page.screenshot({ path: path.join(SHOTS, 'flow-stream-webgl2.png'), timeout: READY_MS });
+    // Record films one period (4 at 1 per second) to a WebM.
+    const video = await download(page, 'flow-record');
+    assert.equal(video.name, 'marbling-flow-loop.webm');
+    assert.deepEqual([...video.bytes.subarray(0, 4)], [0x1a, 0x45, 0xdf, 0xa3], 'an EBML (WebM) header');
+    await clickControl(page, 'flow-stream-stop');
+    await page.waitForFunction(() => !document.body.dataset.stream && document.body.dataset.ready === '1', null, { timeout: READY_MS });
     assert.deepEqual(errors, []);
     await context.close();
   });
