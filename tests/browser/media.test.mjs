@@ -1,14 +1,48 @@
-// Pictures and live video as the background, in headless Chromium (WebGL2 on
-// SwiftShader) with its fake camera: a picture dropped on the window is marbled and a
-// broken one leaves the design; the webcam's frames change over time under the design's
-// ink. One browser launch for the file (cheap: small sheets, few frames).
+// Pictures, live video and sound, in headless Chromium (WebGL2 on SwiftShader) with its
+// fake camera and microphone: a picture dropped on the window is marbled and a broken
+// one leaves the design; the webcam's frames change over time under the design's ink;
+// the microphone's test tones light their own bands and its pulses drop ink on the
+// beat. One browser launch for the file (cheap: small sheets, few frames).
 import { after, before, describe, test } from 'node:test';
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
+import os from 'node:os';
 import path from 'node:path';
 import {
-  READY_MS, SHOTS, attr, clickControl, dropFile, launch, linkFragment, openPage, shootSheet, twoColourPng,
+  READY_MS, SHOTS, attr, clickControl, download, dropFile, launch, linkFragment, openPage, shootSheet, twoColourPng,
 } from './harness.mjs';
+
+/**
+ * The fake microphone's sound, a 16-bit mono WAV at 48 kHz that Chromium loops: 440 Hz
+ * (band 2) for 2.5 s, 3520 Hz (band 5) for 2.5 s, then 880 Hz (band 3) pulsed 0.5 s on,
+ * 0.7 s off, five times; each at half of full scale, faded in and out over 20 ms (no
+ * clicks to spill into the other bands).
+ */
+function toneWav() {
+  const rate = 48000;
+  const fade = (t, len) => Math.min(1, t / 0.02, (len - t) / 0.02);
+  const parts = [
+    [440, 2.5, (t) => fade(t, 2.5)],
+    [3520, 2.5, (t) => fade(t, 2.5)],
+    [880, 6, (t) => (t % 1.2 < 0.5 ? fade(t % 1.2, 0.5) : 0)],
+  ];
+  const samples = [];
+  for (const [hz, seconds, envelope] of parts) {
+    for (let i = 0; i < seconds * rate; i++) {
+      const t = i / rate;
+      samples.push(0.5 * envelope(t) * Math.sin(2 * Math.PI * hz * t));
+    }
+  }
+  const data = Buffer.alloc(44 + 2 * samples.length);
+  data.write('RIFF', 0); data.writeUInt32LE(36 + 2 * samples.length, 4); data.write('WAVE', 8);
+  data.write('fmt ', 12); data.writeUInt32LE(16, 16); data.writeUInt16LE(1, 20); data.writeUInt16LE(1, 22);
+  data.writeUInt32LE(rate, 24); data.writeUInt32LE(2 * rate, 28); data.writeUInt16LE(2, 32); data.writeUInt16LE(16, 34);
+  data.write('data', 36); data.writeUInt32LE(2 * samples.length, 40);
+  samples.forEach((v, i) => data.writeInt16LE(Math.round(v * 32767), 44 + 2 * i));
+  const file = path.join(os.tmpdir(), `marbling-tones-${process.pid}.wav`);
+  fs.writeFileSync(file, data);
+  return file;
+}
 
 const INK = [200, 30, 40];
 /** A 160×120 sheet with one big red drop in the middle (the marbling the video shows through). */
@@ -27,7 +61,10 @@ describe('pictures and live video on webgl2', () => {
   let browser;
   let site;
   before(async () => {
-    ({ browser, site } = await launch('webgl2', ['--use-fake-device-for-media-stream', '--use-fake-ui-for-media-stream']));
+    ({ browser, site } = await launch('webgl2', [
+      '--use-fake-device-for-media-stream', '--use-fake-ui-for-media-stream',
+      `--use-file-for-fake-audio-capture=${toneWav()}`, '--autoplay-policy=no-user-gesture-required',
+    ]));
   });
   after(async () => {
     await browser?.close();
@@ -81,6 +118,46 @@ describe('pictures and live video on webgl2', () => {
     assert.ok(!near(pixel(second.img, 0.05, 0.05), [255, 255, 255], 4), `corner ${pixel(second.img, 0.05, 0.05)}`);
     await page.screenshot({ path: path.join(SHOTS, 'video-fake-camera.png'), timeout: READY_MS });
     await clickControl(page, 'video-stop');
+    assert.deepEqual(errors, []);
+    await context.close();
+  });
+
+  test('sound: each tone of the fake microphone leads its band; pulses drop ink on the beat', async () => {
+    // A small window: each beat's drop is an exact render, and the analyser is read once
+    // a frame (on SwiftShader a large canvas's render would hold frames back past beats).
+    const { page, context, errors } = await openPage(browser, site, linkFragment(DESIGN, 'media-sound'), { width: 700, height: 440 });
+    await clickControl(page, 'sound-microphone');
+    // The loop plays 440 Hz, then 3520 Hz: band 2, then band 5 leads the meter.
+    const led = new Set();
+    const t0 = Date.now();
+    while (led.size < 2 && Date.now() - t0 < 40_000) {
+      const levels = ((await attr(page, 'data-audio')) ?? '').split(',').map(Number);
+      if (levels.length === 6) {
+        const top = levels.indexOf(Math.max(...levels));
+        const rest = Math.max(...levels.filter((_, k) => k !== top));
+        if ((top === 1 || top === 4) && levels[top] > 0.6 && rest < 0.3) led.add(top + 1);
+      }
+      await page.waitForTimeout(100);
+    }
+    assert.deepEqual([...led].sort(), [2, 5], `bands seen leading: ${[...led]}`);
+    // Band 3 (the pulsed 880 Hz) drops ink on its beats.
+    await clickControl(page, 'sound-target-3');
+    // The list opens after egui's sizing pass: a few frames on, its options are placed.
+    const frames = Number(await attr(page, 'data-frames'));
+    await page.waitForFunction((n) => Number(document.body.dataset.frames) >= n + 3, frames, { timeout: READY_MS });
+    await clickControl(page, 'sound-target-3-beat');
+    await page.waitForFunction(() => Number(document.body.dataset.ops) >= 3, null, { timeout: READY_MS });
+    await page.screenshot({ path: path.join(SHOTS, 'sound-beats.png'), timeout: READY_MS });
+    await clickControl(page, 'sound-stop');
+    await page.waitForFunction(() => document.body.dataset.audio === undefined && document.body.dataset.ready === '1', null, { timeout: READY_MS });
+    const saved = JSON.parse((await download(page, 'save-json')).bytes.toString('utf8'));
+    const drops = saved.ops.slice(1);
+    assert.ok(drops.length >= 2 && drops.every((op) => op.type === 'drop'), JSON.stringify(drops));
+    // Half the drop tool's radius and more, by the level of the beat.
+    assert.ok(drops.every((d) => d.radius >= 0.5 * 30 && d.radius <= 1.5 * 30 * 1.0001), JSON.stringify(drops.map((d) => d.radius)));
+    const n = saved.ops.length;
+    await page.keyboard.press('Control+z');
+    await page.waitForFunction((k) => Number(document.body.dataset.ops) === k - 1, n, { timeout: READY_MS });
     assert.deepEqual(errors, []);
     await context.close();
   });

@@ -422,7 +422,16 @@ impl eframe::App for MarblingApp {
             stream.map(|f| f.number)
         });
         let now = ctx.input(|i| i.time);
-        with_frame!(self, |f| self.rendering.stream.tick(&ctx, drawn, now, &mut f));
+        with_frame!(self, |f| self.panels.sound.tick(&ctx, now, &mut f));
+        let sound = &self.panels.sound;
+        self.rendering.stream.drive(
+            sound.factor(crate::media::sound::Target::StreamSpeed),
+            sound.factor(crate::media::sound::Target::StreamStrength),
+        );
+        with_frame!(self, |f| self
+            .rendering
+            .stream
+            .tick(&ctx, drawn, now, &mut f));
         with_frame!(self, |f| self.noise.poll_picked_data(&mut f));
         with_frame!(self, |f| self.panels.midi.tick(&ctx, &mut f));
         self.check_fragment();

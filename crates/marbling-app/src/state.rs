@@ -260,6 +260,8 @@ pub struct Panels {
     pub layout: crate::shell::layout::Layout,
     /// MIDI in: notes make drops, controllers move parameters.
     pub midi: crate::media::midi::MidiPanel,
+    /// Sound in: the bands' levels drive drops, the Stream and a stroke's pressure.
+    pub sound: crate::media::sound::SoundPanel,
 }
 
 impl Default for Panels {
@@ -281,6 +283,7 @@ impl Default for Panels {
             rail: Default::default(),
             layout: crate::shell::layout::Layout::Desktop,
             midi: Default::default(),
+            sound: Default::default(),
         }
     }
 }

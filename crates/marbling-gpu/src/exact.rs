@@ -11,8 +11,8 @@ use crate::shaders::{ExactVariant, RENDER_PLAIN_WGSL};
 use crate::surface::SurfaceParams;
 use crate::variants::Variants;
 use marbling_core::ImageFit;
-use marbling_core::turbulence::Layer;
 use marbling_core::image_background::ImagePixels;
+use marbling_core::turbulence::Layer;
 use marbling_core::{Antialias, Design, Op};
 use marbling_noise::wgsl::NoiseKinds;
 use std::sync::Arc;
@@ -584,7 +584,11 @@ impl PreparedDesign {
         let ops: u64 = self.uploaded.iter().map(Op::walk_cost).sum();
         // A turbulence walks twice: the two layers' flow times add up to less than
         // 1.5 periods, the flow's own time being one.
-        let walks = if self.turbulence_flow().is_some() { 2 } else { 1 };
+        let walks = if self.turbulence_flow().is_some() {
+            2
+        } else {
+            1
+        };
         walks * ops + self.surface_cost
     }
 

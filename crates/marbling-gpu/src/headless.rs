@@ -211,7 +211,9 @@ impl GpuRenderer {
         opts: &RenderOptions,
     ) -> Result<RgbaImage, GpuError> {
         let mut flowed = design.clone();
-        flowed.ops.push(Op::Flow(turbulence.flow(turbulence.period)));
+        flowed
+            .ops
+            .push(Op::Flow(turbulence.flow(turbulence.period)));
         let mut prepared = self.prepare(&flowed)?;
         prepared.set_turbulence(&self.ctx.queue, Some(turbulence.layers(t)));
         self.render_prepared(&mut prepared, design, opts, &|_, _| {})

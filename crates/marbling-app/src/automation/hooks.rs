@@ -182,6 +182,7 @@ impl MarblingApp {
                 self.hooks.noise_json.as_ref().map(|(_, j)| j.clone()),
             ),
             ("data-noise-preview", Some(self.noise.preview_hook())),
+            ("data-audio", self.panels.sound.hook()),
             (
                 "data-stream",
                 self.rendering.stream.hook(&self.prefs.settings),

@@ -245,11 +245,17 @@ impl MarblingApp {
         }
         if let Some(active) = &mut self.editor.active {
             if down {
-                let scale = if self.prefs.settings.pressure {
+                let pen = if self.prefs.settings.pressure {
                     crate::marbling::tools::pressure_scale(crate::platform::pointer_pressure())
                 } else {
                     1.0
                 };
+                // Sound may press too (src/media/sound.rs).
+                let sound = self
+                    .panels
+                    .sound
+                    .factor(crate::media::sound::Target::Pressure);
+                let scale = pen * sound.unwrap_or(1.0);
                 if let Some(p) = pos.map(to_design)
                     && active.gesture.end() != p
                 {
@@ -337,9 +343,7 @@ impl MarblingApp {
             .stream
             .frame(&self.prefs.settings)
             .filter(|_| {
-                pending.is_empty()
-                    && self.editor.active.is_none()
-                    && self.editor.playback.is_none()
+                pending.is_empty() && self.editor.active.is_none() && self.editor.playback.is_none()
             });
         let (shown, design_key, single) = match pending.as_slice() {
             [] => match &stream {
@@ -349,8 +353,7 @@ impl MarblingApp {
                     let flow = [Op::Flow(s.flow.clone())];
                     (
                         self.editor.shown.then(&flow),
-                        (self.editor.key.wrapping_mul(1_000_003) ^ fingerprint(&flow))
-                            | (1 << 63),
+                        (self.editor.key.wrapping_mul(1_000_003) ^ fingerprint(&flow)) | (1 << 63),
                         None,
                     )
                 }

@@ -52,6 +52,8 @@ pub(crate) struct FlowStream {
     taken_s: Option<f64>,
     /// A recording and the time it began at.
     recording: Option<(Recorder, f64)>,
+    /// Factors on the speed and the strength (sound drives them; 1: as set).
+    drive: [f64; 2],
 }
 
 impl Default for FlowStream {
@@ -65,14 +67,17 @@ impl Default for FlowStream {
             number: 0,
             taken_s: None,
             recording: None,
+            drive: [1.0; 2],
         }
     }
 }
 
-/// The turbulence of the Flow tool's noise and strength with period `period`, shortened
-/// where a period's flow would need more than [`MAX_FLOW_STEPS`] sub-steps.
-pub fn turbulence(settings: &ToolSettings, period: f64) -> Turbulence {
-    let f = crate::marbling::tools::flow(settings, 0.0);
+/// The turbulence of the Flow tool's noise and strength (× `strength`) with period
+/// `period`, shortened where a period's flow would need more than [`MAX_FLOW_STEPS`]
+/// sub-steps.
+pub fn turbulence(settings: &ToolSettings, period: f64, strength: f64) -> Turbulence {
+    let mut f = crate::marbling::tools::flow(settings, 0.0);
+    f.strength = (f.strength * strength).max(0.01);
     Turbulence {
         period: period.min(longest_period(&f)),
         noise: f.noise,
@@ -86,12 +91,22 @@ fn longest_period(f: &Flow) -> f64 {
 }
 
 impl FlowStream {
+    /// The turbulence shown: the tool's, this period, the strength as sound drives it.
+    fn turbulence(&self, settings: &ToolSettings) -> Turbulence {
+        turbulence(settings, self.period, self.drive[1])
+    }
+
+    /// Sound's factors on the speed and the strength (`None`: as set).
+    pub fn drive(&mut self, speed: Option<f64>, strength: Option<f64>) {
+        self.drive = [speed.unwrap_or(1.0), strength.unwrap_or(1.0)];
+    }
+
     /// The frame the canvas shows, while the stream is on.
     pub fn frame(&self, settings: &ToolSettings) -> Option<StreamFrame> {
         if !self.on {
             return None;
         }
-        let t = turbulence(settings, self.period);
+        let t = self.turbulence(settings);
         Some(StreamFrame {
             number: self.number,
             flow: t.flow(t.period),
@@ -110,7 +125,7 @@ impl FlowStream {
         if !self.on {
             return None;
         }
-        let t = turbulence(settings, self.period);
+        let t = self.turbulence(settings);
         let noise = marbling_noise::NoiseSpec::from_source(marbling_noise::Source::Fbm(t.noise));
         Some(format!(
             r#"{{"noise":{},"strength":{},"period":{},"time":{},"frame":{},"playing":{}}}"#,
@@ -141,9 +156,9 @@ impl FlowStream {
         if drawn != Some(self.number) {
             return;
         }
-        let period = turbulence(&frame.prefs.settings, self.period).period;
+        let period = self.turbulence(&frame.prefs.settings).period;
         let passed = self.taken_s.map_or(0.0, |s| now - s);
-        self.time += passed.max(0.0) * self.speed;
+        self.time += passed.max(0.0) * self.speed * self.drive[0];
         self.number += 1;
         self.taken_s = Some(now);
         if self
@@ -165,11 +180,19 @@ impl FlowStream {
     /// The stream's controls, under the Flow tool's.
     pub fn ui(&mut self, ui: &mut egui::Ui, frame: &mut Frame<'_>) {
         ui.add_space(4.0);
-        ui.label(RichText::new("Stream").strong())
-            .on_hover_text("the design streaming along this curl noise, looping: every frame exact, none blurred");
+        ui.label(RichText::new("Stream").strong()).on_hover_text(
+            "the design streaming along this curl noise, looping: every frame exact, none blurred",
+        );
         ui.horizontal_wrapped(|ui| {
             let play = ui
-                .selectable_label(self.on && self.playing, if self.on && self.playing { "❚❚ Pause" } else { "▶ Stream" })
+                .selectable_label(
+                    self.on && self.playing,
+                    if self.on && self.playing {
+                        "❚❚ Pause"
+                    } else {
+                        "▶ Stream"
+                    },
+                )
                 .on_hover_text("the design flows along the noise above and loops every period");
             frame.control("flow-stream", &play);
             if play.clicked() {
@@ -181,7 +204,9 @@ impl FlowStream {
                 }
             }
             if self.on {
-                let stop = ui.button("■ Stop").on_hover_text("back to the still design");
+                let stop = ui
+                    .button("■ Stop")
+                    .on_hover_text("back to the still design");
                 frame.control("flow-stream-stop", &stop);
                 if stop.clicked() {
                     self.finish_recording(frame);
@@ -194,7 +219,14 @@ impl FlowStream {
             }
             let recording = self.recording.is_some();
             let record = ui
-                .selectable_label(recording, if recording { "⏺ Recording…" } else { "⏺ Record" })
+                .selectable_label(
+                    recording,
+                    if recording {
+                        "⏺ Recording…"
+                    } else {
+                        "⏺ Record"
+                    },
+                )
                 .on_hover_text("films one period of the stream to a WebM (it loops)");
             frame.control("flow-record", &record);
             if record.clicked() {
@@ -213,27 +245,29 @@ impl FlowStream {
             }
         });
         let longest = longest_period(&crate::marbling::tools::flow(&frame.prefs.settings, 0.0));
-        let period = ui.add(
-            Slider::new(&mut self.period, PERIOD)
-                .text("period")
-                .logarithmic(true),
-        )
-        .on_hover_text("flow time after which the stream repeats exactly");
+        let period = ui
+            .add(
+                Slider::new(&mut self.period, PERIOD)
+                    .text("period")
+                    .logarithmic(true),
+            )
+            .on_hover_text("flow time after which the stream repeats exactly");
         frame.control("flow-period", &period);
         if self.period > longest {
             ui.label(format!(
                 "at this strength and noise a period is at most {longest:.2}"
             ));
         }
-        let speed = ui.add(
-            Slider::new(&mut self.speed, SPEED)
-                .text("speed /s")
-                .logarithmic(true),
-        )
-        .on_hover_text("flow time per second");
+        let speed = ui
+            .add(
+                Slider::new(&mut self.speed, SPEED)
+                    .text("speed /s")
+                    .logarithmic(true),
+            )
+            .on_hover_text("flow time per second");
         frame.control("flow-speed", &speed);
         if self.on {
-            let t = turbulence(&frame.prefs.settings, self.period);
+            let t = self.turbulence(&frame.prefs.settings);
             ui.label(
                 RichText::new(format!(
                     "t = {:.2} of {:.2}",
@@ -266,17 +300,21 @@ mod tests {
         assert_eq!(s.frame(&settings()), None);
         (s.on, s.time) = (true, 1.0);
         let f = s.frame(&settings()).expect("on");
-        let t = turbulence(&settings(), 4.0);
+        let t = turbulence(&settings(), 4.0, 1.0);
         assert_eq!(f.flow, t.flow(4.0));
         assert_eq!(f.layers, t.layers(1.0));
         assert_eq!(f.flow.strength, 20.0);
         assert!((f64::from(f.flow.noise.frequency) - 1.0 / 60.0).abs() < 1e-7);
         // The hook is a turbulence document the CLI reads, with the time.
         let hook = s.hook(&settings()).expect("on");
-        let doc = Turbulence::from_json(&hook.replace(r#","time":1,"frame":0,"playing":false"#, ""))
-            .expect("a turbulence document");
+        let doc =
+            Turbulence::from_json(&hook.replace(r#","time":1,"frame":0,"playing":false"#, ""))
+                .expect("a turbulence document");
         assert_eq!(doc, t);
-        assert!(hook.ends_with(r#","time":1,"frame":0,"playing":false}"#), "{hook}");
+        assert!(
+            hook.ends_with(r#","time":1,"frame":0,"playing":false}"#),
+            "{hook}"
+        );
     }
 
     #[test]
@@ -286,9 +324,13 @@ mod tests {
             flow_size: 20.0,
             ..settings()
         };
-        let t = turbulence(&strong, 20.0);
+        let t = turbulence(&strong, 20.0, 1.0);
         assert!(t.period < 20.0, "{}", t.period);
         assert!(t.flow(t.period).sub_steps() <= MAX_FLOW_STEPS);
-        assert_eq!(turbulence(&settings(), 2.0).period, 2.0);
+        assert_eq!(turbulence(&settings(), 2.0, 1.0).period, 2.0);
+        // Sound doubling the strength halves the longest period.
+        let driven = turbulence(&strong, 20.0, 2.0);
+        assert!((driven.period - t.period / 2.0).abs() < 1e-9 * t.period);
+        assert_eq!(driven.strength, 400.0);
     }
 }

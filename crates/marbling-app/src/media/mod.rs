@@ -1,10 +1,12 @@
-//! Pictures, live video, MIDI and the 3D view: backgrounds and input from outside the
-//! program and the design seen on objects.
+//! Pictures, live video, MIDI, sound and the 3D view: backgrounds and input from outside
+//! the program and the design seen on objects.
 
 pub(crate) mod midi;
 pub(crate) mod midi_input;
 pub(crate) mod picture;
 pub(crate) mod recorder;
+pub(crate) mod sound;
+pub(crate) mod sound_input;
 pub(crate) mod video;
 pub(crate) mod video_panel;
 pub(crate) mod view3d;

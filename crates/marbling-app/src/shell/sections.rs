@@ -26,6 +26,8 @@ pub(crate) enum Section {
     Video,
     /// MIDI in: notes make drops.
     Midi,
+    /// Sound in: a meter of six bands, each driving a parameter.
+    Sound,
     /// Undo, redo, the gesture list and the player.
     History,
     /// The designs that New, Open, a link or the gallery replaced.
@@ -55,7 +57,7 @@ const fn row(section: Section, marbling: bool, noise: bool, tab: SheetTab, group
 }
 
 /// Every section, in panel order.
-const ROWS: [Row; 11] = [
+const ROWS: [Row; 12] = [
     row(Section::File, true, true, SheetTab::Files, 0),
     // The noise playground exports its own PNG (one Export PNG per tab).
     row(Section::Export, true, false, SheetTab::Files, 1),
@@ -68,7 +70,8 @@ const ROWS: [Row; 11] = [
     row(Section::History, true, false, SheetTab::History, 5),
     // Below the history: a keyboard player's section, out of the way of the rest.
     row(Section::Midi, true, false, SheetTab::Ink, 6),
-    row(Section::Recent, true, true, SheetTab::Files, 7),
+    row(Section::Sound, true, false, SheetTab::Ink, 7),
+    row(Section::Recent, true, true, SheetTab::Files, 8),
 ];
 
 /// The sections shown in `mode` (only those of `tab` when given: the bottom sheet), in
@@ -110,6 +113,7 @@ mod tests {
                 (Video, false),
                 (History, true),
                 (Midi, true),
+                (Sound, true),
                 (Recent, true),
             ]
         );

@@ -51,6 +51,7 @@ impl MarblingApp {
             Section::Picture => with_frame!(self, |f| self.panels.pictures.ui(ui, &mut f)),
             Section::Video => with_frame!(self, |f| self.rendering.video.ui(ui, &mut f)),
             Section::Midi => with_frame!(self, |f| self.panels.midi.ui(ui, &mut f)),
+            Section::Sound => with_frame!(self, |f| self.panels.sound.ui(ui, &mut f)),
             Section::History => with_frame!(self, |f| self.panels.history.ui(ui, &mut f)),
             Section::Recent => {
                 let recent = &self.session.recent;

@@ -158,7 +158,16 @@ fn the_gpu_draws_the_turbulence_frame_of_the_cpu() {
     let (cpu, gpu) = (dir.join("cpu.png"), dir.join("gpu.png"));
     let run = |backend: &str, out: &Path| {
         std::process::Command::new(env!("CARGO_BIN_EXE_marbling"))
-            .args(["render", d, "--flow", t, "--time", "0.7", "--backend", backend])
+            .args([
+                "render",
+                d,
+                "--flow",
+                t,
+                "--time",
+                "0.7",
+                "--backend",
+                backend,
+            ])
             .arg("-o")
             .arg(out)
             .output()
@@ -179,7 +188,18 @@ fn the_gpu_draws_the_turbulence_frame_of_the_cpu() {
     let anim = dir.join("loop.png");
     let a = anim.to_str().expect("utf-8");
     ok(&[
-        "animate", d, "--flow", t, "--frames", "3", "--width", "60", "--backend", "gpu", "-o", a,
+        "animate",
+        d,
+        "--flow",
+        t,
+        "--frames",
+        "3",
+        "--width",
+        "60",
+        "--backend",
+        "gpu",
+        "-o",
+        a,
     ]);
     let (count, frames) = apng_frames(&std::fs::read(&anim).expect("apng"));
     assert_eq!((count, frames.len()), (3, 3));
