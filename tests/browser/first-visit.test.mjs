@@ -11,7 +11,7 @@ import path from 'node:path';
 import { DIST, READY_MS, attr, launch } from './harness.mjs';
 
 /** What a first visit from a plain static server may download, bytes: the module as
- * `.gz` (2.55 MB with phasor noise, the relief view and MIDI; Chromium's
+ * `.gz` (2.57 MB with phasor noise, the relief view, MIDI, sound and the Stream; Chromium's
  * DecompressionStream has no brotli, and a server that negotiates sends the brotli form
  * instead), the thumbnails (0.40 MB), the page, its script and the icons
  * (docs/BENCHMARKS.md, "The first visit"). */
