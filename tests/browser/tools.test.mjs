@@ -210,6 +210,24 @@ describe('v3 tools on webgl2', () => {
     assert.ok(near(note96.center[0], 270) && near(note96.radius, 300 * (0.25 + 1.5 * 64 / 127)), `C7 after controller 7 at 127: ${JSON.stringify(note96)}`);
     await page.keyboard.press('Control+z');
     await waitOps(page, k + 1);
+
+    // *Draw line*: the next drag on the sheet is the notes' line (C2 at its start, C7 at
+    // its end), and no tool's; the pointer lands on whole CSS pixels.
+    await clickControl(page, 'midi-draw-line');
+    await page.mouse.move(p(40, 170).x, p(40, 170).y);
+    await page.mouse.down();
+    for (let y = 150; y >= 30; y -= 20) await page.mouse.move(p(40, y).x, p(40, y).y);
+    await page.mouse.up();
+    await midi([0xB0, 7, 8]); // the learned controller: radius 1 + 8/127 · 299 → 20
+    await midi([0x90, 36, 64]);
+    await midi([0x90, 96, 64]);
+    await waitOps(page, k + 3);
+    const drawn = JSON.parse((await download(page, 'save-json')).bytes.toString('utf8'));
+    const [low, high] = drawn.ops.slice(-2);
+    const close = (a, [x, y]) => Math.hypot(a[0] - x, a[1] - y) <= 1.5 / s.scale;
+    assert.ok(close(low.center, [40, 170]) && close(high.center, [40, 30]), `notes on the drawn line at ${low.center} and ${high.center}`);
+    assert.ok(Math.abs(low.radius - 20 * (0.25 + 1.5 * 64 / 127)) < 1e-9, `radius ${low.radius}`);
+    await page.screenshot({ path: path.join(SHOTS, 'midi-drawn-line.png'), timeout: READY_MS });
     assert.deepEqual(errors, []);
     await context.close();
   });

@@ -134,6 +134,17 @@ impl MarblingApp {
             }
         } else if self.editor.mode == crate::shell::mode::Mode::Marbling {
             footprint::draw(&painter, rect, &view, self, design_pointer);
+            if let Some(line) = self.panels.midi.shown_line() {
+                // The line MIDI notes fall on: low notes at its start (the dot).
+                let at = |p: Point| {
+                    let [x, y] = view.to_screen(p);
+                    rect.min + egui::vec2(x as f32, y as f32)
+                };
+                let stroke =
+                    egui::Stroke::new(1.5, Color32::from_rgba_unmultiplied(30, 30, 30, 160));
+                painter.line_segment([at(line[0]), at(line[1])], stroke);
+                painter.circle_filled(at(line[0]), 3.0, stroke.color);
+            }
         }
         let overlay_end = FastPaint::mark(ui.ctx(), painter.layer_id());
         self.rendering.fast_paint.overlay(
@@ -216,6 +227,18 @@ impl MarblingApp {
             |p: Pos2| view.to_design([f64::from(p.x - rect.min.x), f64::from(p.y - rect.min.y)]);
         if touches || space {
             self.editor.active = None;
+            return;
+        }
+        if self.panels.midi.drawing_line() {
+            // *Draw line* of the MIDI section: this drag is the notes' line, no tool's.
+            self.editor.active = None;
+            let at = pos
+                .filter(|_| !pressed || response.hovered())
+                .map(to_design);
+            self.panels.midi.draw_line(at, pressed, down);
+            if down {
+                ui.ctx().request_repaint();
+            }
             return;
         }
         if self.editor.playback.is_some() && self.player.explain().on {

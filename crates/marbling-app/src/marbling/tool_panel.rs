@@ -99,7 +99,7 @@ pub(crate) fn ui(ui: &mut egui::Ui, frame: &mut Frame<'_>) {
         ToolKind::Stylus => {
             ui.label("Drag free-hand: the stylus pulls the ink along your path. Several tips make a free-hand comb.");
             ui.add(
-                Slider::new(&mut s.stylus_wake, 0.5..=100.0)
+                Slider::new(&mut s.stylus_wake, crate::marbling::tools::STYLUS_WAKE)
                     .text("wake")
                     .logarithmic(true),
             );
@@ -148,7 +148,7 @@ pub(crate) fn ui(ui: &mut egui::Ui, frame: &mut Frame<'_>) {
             );
             ui.add(Slider::new(&mut s.flow_octaves, 1..=4).text("octaves"));
             ui.add(
-                Slider::new(&mut s.flow_strength, 1.0..=200.0)
+                Slider::new(&mut s.flow_strength, crate::marbling::tools::FLOW_STRENGTH)
                     .text("strength px")
                     .logarithmic(true),
             )
@@ -190,7 +190,7 @@ pub(crate) fn ui(ui: &mut egui::Ui, frame: &mut Frame<'_>) {
             ui.label("Drag: parallel tines along the drag.");
             ui.add(Slider::new(&mut s.comb_tines, 0..=64).text("tines (0 = whole sheet)"));
             ui.add(
-                Slider::new(&mut s.comb_spacing, 2.0..=400.0)
+                Slider::new(&mut s.comb_spacing, crate::marbling::tools::COMB_SPACING)
                     .text("spacing")
                     .logarithmic(true),
             );

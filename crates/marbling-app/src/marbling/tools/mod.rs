@@ -112,6 +112,12 @@ pub const TOOL_KEYS: [egui::Key; 10] = [
 
 /// The drop tool's radius slider, design pixels (MIDI controllers move within it too).
 pub const DROP_RADIUS: std::ops::RangeInclusive<f64> = 1.0..=300.0;
+/// The stylus's wake slider, design pixels (logarithmic; MIDI controllers too).
+pub const STYLUS_WAKE: std::ops::RangeInclusive<f64> = 0.5..=100.0;
+/// The comb's tine spacing slider, design pixels (logarithmic; MIDI controllers too).
+pub const COMB_SPACING: std::ops::RangeInclusive<f64> = 2.0..=400.0;
+/// The flow's strength slider, design pixels per unit time (logarithmic; MIDI too).
+pub const FLOW_STRENGTH: std::ops::RangeInclusive<f64> = 1.0..=200.0;
 
 /// Every tool parameter of the side panel (design pixels unless stated). Stored with
 /// the other preferences (`prefs.rs`); a missing field takes its default.
