@@ -153,7 +153,8 @@ mod imp {
                         .connect_with_audio_node(&analyser)
                         .and_then(|_| analyser.connect_with_audio_node(&context.destination()))
                         .map_err(|e| js_error(&e))?;
-                    source.start().map_err(|e| js_error(&e))?;
+                    let node: &web_sys::AudioScheduledSourceNode = &source;
+                    node.start().map_err(|e| js_error(&e))?;
                     *player.borrow_mut() = Some(source);
                     Ok::<(), String>(())
                 };
@@ -201,7 +202,8 @@ mod imp {
                 }
             }
             if let Some(p) = self.player.borrow_mut().take() {
-                let _ = p.stop();
+                let node: &web_sys::AudioScheduledSourceNode = &p;
+                let _ = node.stop();
             }
             let _ = self.context.close();
         }
