@@ -7,7 +7,9 @@
 //! The next frame is asked for once the canvas shows the last one whole, at the time the
 //! clock has reached by then (t advances by the seconds passed × speed), so a slow GPU
 //! shows fewer frames, never a torn or blended one. *Record* films one period of it to a
-//! WebM.
+//! WebM. While it shows, its controls stay under whichever tool is picked (drawing goes
+//! on: a drag shows the still design with the tool's op, and the stream resumes on the
+//! new design).
 
 use crate::frame::Frame;
 use crate::marbling::tools::ToolSettings;
@@ -112,6 +114,11 @@ impl FlowStream {
             flow: t.flow(t.period),
             layers: t.layers(self.time),
         })
+    }
+
+    /// Whether the stream is on the canvas (playing or paused).
+    pub fn is_on(&self) -> bool {
+        self.on
     }
 
     /// Whether the stream is on the canvas and moving.

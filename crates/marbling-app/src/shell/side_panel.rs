@@ -43,7 +43,10 @@ impl MarblingApp {
             }
             Section::Tool => {
                 with_frame!(self, |f| crate::marbling::tool_panel::ui(ui, &mut f));
-                if self.prefs.tool == crate::marbling::tools::ToolKind::Flow {
+                // Under the Flow tool, and under any other while it shows (its Stop).
+                if self.prefs.tool == crate::marbling::tools::ToolKind::Flow
+                    || self.rendering.stream.is_on()
+                {
                     with_frame!(self, |f| self.rendering.stream.ui(ui, &mut f));
                 }
             }
