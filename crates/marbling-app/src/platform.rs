@@ -32,6 +32,15 @@ mod imp {
         web_sys::window()
     }
 
+    /// What a JavaScript error says: its `message`, or the value as text.
+    pub fn js_error(e: &wasm_bindgen::JsValue) -> String {
+        js_sys::Reflect::get(e, &"message".into())
+            .ok()
+            .and_then(|m| m.as_string())
+            .or_else(|| e.as_string())
+            .unwrap_or_else(|| "unknown error".to_owned())
+    }
+
     /// The page's URL fragment without `#` (e.g. `d=…`).
     pub fn fragment() -> Option<String> {
         let hash = window()?.location().hash().ok()?;

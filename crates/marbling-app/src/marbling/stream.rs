@@ -195,7 +195,7 @@ impl FlowStream {
                 .selectable_label(
                     self.on && self.playing,
                     if self.on && self.playing {
-                        "❚❚ Pause"
+                        "Pause"
                     } else {
                         "▶ Stream"
                     },
@@ -229,9 +229,9 @@ impl FlowStream {
                 .selectable_label(
                     recording,
                     if recording {
-                        "⏺ Recording…"
+                        "Stop recording"
                     } else {
-                        "⏺ Record"
+                        "Record"
                     },
                 )
                 .on_hover_text("films one period of the stream to a WebM (it loops)");

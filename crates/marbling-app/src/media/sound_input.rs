@@ -20,10 +20,10 @@ pub use imp::SoundInput;
 mod imp {
     use super::SoundSource;
     use crate::media::sound::{FFT_SIZE, SMOOTHING};
+    use crate::platform::js_error;
     use std::cell::{Cell, RefCell};
     use std::rc::Rc;
     use wasm_bindgen::JsCast;
-    use wasm_bindgen::prelude::JsValue;
 
     /// Sound playing into the analyser.
     pub struct SoundInput {
@@ -38,14 +38,6 @@ mod imp {
         stream: Rc<RefCell<Option<web_sys::MediaStream>>>,
         /// The file's player.
         player: Rc<RefCell<Option<web_sys::AudioBufferSourceNode>>>,
-    }
-
-    fn js_error(e: &JsValue) -> String {
-        js_sys::Reflect::get(e, &"message".into())
-            .ok()
-            .and_then(|m| m.as_string())
-            .or_else(|| e.as_string())
-            .unwrap_or_else(|| "refused".to_owned())
     }
 
     impl SoundInput {

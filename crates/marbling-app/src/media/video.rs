@@ -99,13 +99,7 @@ mod web {
         pub recording: Option<crate::media::recorder::Recorder>,
     }
 
-    fn js_error(e: &wasm_bindgen::JsValue) -> String {
-        js_sys::Reflect::get(e, &"message".into())
-            .ok()
-            .and_then(|m| m.as_string())
-            .or_else(|| e.as_string())
-            .unwrap_or_else(|| "unknown error".to_owned())
-    }
+    use crate::platform::js_error;
 
     impl LiveVideo {
         /// Starts playing `source`; `ctx` is woken when it starts or fails.
