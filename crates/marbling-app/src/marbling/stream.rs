@@ -56,6 +56,9 @@ pub(crate) struct FlowStream {
     recording: Option<(Recorder, f64)>,
     /// Factors on the speed and the strength (sound drives them; 1: as set).
     drive: [f64; 2],
+    /// The strength factor of the frame asked for (taken from `drive` with each new
+    /// frame, so a frame being drawn is never changed under it).
+    strength: f64,
 }
 
 impl Default for FlowStream {
@@ -70,6 +73,7 @@ impl Default for FlowStream {
             taken_s: None,
             recording: None,
             drive: [1.0; 2],
+            strength: 1.0,
         }
     }
 }
@@ -93,9 +97,10 @@ fn longest_period(f: &Flow) -> f64 {
 }
 
 impl FlowStream {
-    /// The turbulence shown: the tool's, this period, the strength as sound drives it.
+    /// The turbulence shown: the tool's, this period, the strength as sound drove it
+    /// when the frame was taken.
     fn turbulence(&self, settings: &ToolSettings) -> Turbulence {
-        turbulence(settings, self.period, self.drive[1])
+        turbulence(settings, self.period, self.strength)
     }
 
     /// Sound's factors on the speed and the strength (`None`: as set).
@@ -163,11 +168,14 @@ impl FlowStream {
         if drawn != Some(self.number) {
             return;
         }
-        let period = self.turbulence(&frame.prefs.settings).period;
-        let passed = self.taken_s.map_or(0.0, |s| now - s);
-        self.time += passed.max(0.0) * self.speed * self.drive[0];
+        // The clock starts when the first frame is on screen (no frame is asked for twice).
+        let Some(taken) = self.taken_s.replace(now) else {
+            return;
+        };
+        self.time += (now - taken).max(0.0) * self.speed * self.drive[0];
+        self.strength = self.drive[1];
         self.number += 1;
-        self.taken_s = Some(now);
+        let period = self.turbulence(&frame.prefs.settings).period;
         if self
             .recording
             .as_ref()
