@@ -19,6 +19,15 @@ fn png(path: &Path) -> RgbaImage {
     RgbaImage::from_png(&std::fs::read(path).expect("png")).expect("decode")
 }
 
+/// Writes [`DESIGN`] and [`TURBULENCE`] into `dir`: their paths.
+fn design_and_turbulence(dir: &Path) -> (String, String) {
+    let (design, turb) = (dir.join("d.json"), dir.join("turb.json"));
+    std::fs::write(&design, DESIGN).expect("write");
+    std::fs::write(&turb, TURBULENCE).expect("write");
+    let path = |p: PathBuf| p.to_str().expect("utf-8").to_owned();
+    (path(design), path(turb))
+}
+
 const DESIGN: &str = r##"{"version":3,"width":120,"height":90,"background":"#f8f3e6","ops":[
   {"type":"drops","centers":[[30,30],[90,30],[30,65],[90,65],[60,45]],"radius":18,
    "colors":["#1d3557","#e63946","#f1c453","#2a9d8f","#f4a261"]}]}"##;
@@ -28,13 +37,8 @@ const TURBULENCE: &str =
 #[test]
 fn the_turbulence_loops_and_its_layers_are_exact_renders() {
     let dir = scratch();
-    let (design, turb) = (dir.join("d.json"), dir.join("turb.json"));
-    std::fs::write(&design, DESIGN).expect("write");
-    std::fs::write(&turb, TURBULENCE).expect("write");
-    let (d, t) = (
-        design.to_str().expect("utf-8"),
-        turb.to_str().expect("utf-8"),
-    );
+    let (d, t) = design_and_turbulence(&dir);
+    let (d, t) = (d.as_str(), t.as_str());
     let frame = |time: &str, name: &str| {
         let out = dir.join(name);
         let o = out.to_str().expect("utf-8");
@@ -148,13 +152,8 @@ fn the_flow_example_validates_as_version_4() {
 fn the_gpu_draws_the_turbulence_frame_of_the_cpu() {
     let dir = scratch().join("gpu");
     std::fs::create_dir_all(&dir).expect("tmp dir");
-    let (design, turb) = (dir.join("d.json"), dir.join("turb.json"));
-    std::fs::write(&design, DESIGN).expect("write");
-    std::fs::write(&turb, TURBULENCE).expect("write");
-    let (d, t) = (
-        design.to_str().expect("utf-8"),
-        turb.to_str().expect("utf-8"),
-    );
+    let (d, t) = design_and_turbulence(&dir);
+    let (d, t) = (d.as_str(), t.as_str());
     let (cpu, gpu) = (dir.join("cpu.png"), dir.join("gpu.png"));
     let run = |backend: &str, out: &Path| {
         std::process::Command::new(env!("CARGO_BIN_EXE_marbling"))
