@@ -9,7 +9,7 @@ use crate::marbling::tools::{Gesture, ToolKind, ops_for};
 use crate::marbling::view::ViewState;
 use eframe::egui_wgpu;
 use egui::{Color32, PointerButton, Pos2, Rect, Sense, Vec2};
-use marbling_core::{Op, Point, Rgb8};
+use marbling_core::{Op, Point};
 
 /// How much the canvas may change in width or height, points, before a fitted view is
 /// fitted again.
@@ -292,7 +292,7 @@ impl MarblingApp {
             if released || !down {
                 let done = self.editor.active.take();
                 if let Some(a) = done {
-                    let inks = self.inks();
+                    let inks = self.prefs.cycled_inks();
                     let ops = ops_for(a.tool, &self.prefs.settings, &a.gesture, &inks, a.seed);
                     // Cycling colours: the next click starts with the colour after the
                     // last drop's.
@@ -313,25 +313,10 @@ impl MarblingApp {
                 a.tool,
                 &self.prefs.settings,
                 &a.gesture,
-                &self.inks(),
+                &self.prefs.cycled_inks(),
                 a.seed,
             ),
             None => Vec::new(),
-        }
-    }
-
-    /// The ink, then (cycling colours) the rest of the palette after it.
-    pub(crate) fn inks(&self) -> Vec<Rgb8> {
-        let ink = self.prefs.ink;
-        if !self.prefs.settings.cycle_colors {
-            return vec![ink];
-        }
-        let palette = self.prefs.inks();
-        match palette.iter().position(|&c| c == ink) {
-            Some(i) => palette[i..].iter().chain(&palette[..i]).copied().collect(),
-            None => std::iter::once(ink)
-                .chain(palette.iter().copied())
-                .collect(),
         }
     }
 

@@ -15,8 +15,8 @@ use crate::frame::Frame;
 use crate::marbling::tools::ToolSettings;
 use crate::media::recorder::Recorder;
 use egui::{RichText, Slider};
+use marbling_core::Flow;
 use marbling_core::turbulence::{Layer, Turbulence};
-use marbling_core::{FLOW_STEP_PX, Flow, MAX_FLOW_STEPS};
 
 /// Periods offered, units of flow time.
 pub const PERIOD: std::ops::RangeInclusive<f64> = 0.2..=20.0;
@@ -79,21 +79,16 @@ impl Default for FlowStream {
 }
 
 /// The turbulence of the Flow tool's noise and strength (× `strength`) with period
-/// `period`, shortened where a period's flow would need more than [`MAX_FLOW_STEPS`]
+/// `period`, shortened where a period's flow would need more than [`marbling_core::MAX_FLOW_STEPS`]
 /// sub-steps.
 pub fn turbulence(settings: &ToolSettings, period: f64, strength: f64) -> Turbulence {
     let mut f = crate::marbling::tools::flow(settings, 0.0);
     f.strength = (f.strength * strength).max(0.01);
     Turbulence {
-        period: period.min(longest_period(&f)),
+        period: period.min(f.longest_time()),
         noise: f.noise,
         strength: f.strength,
     }
-}
-
-/// The longest period whose flow keeps within [`MAX_FLOW_STEPS`] sub-steps.
-fn longest_period(f: &Flow) -> f64 {
-    0.999 * MAX_FLOW_STEPS as f64 * FLOW_STEP_PX / f.speed_bound().max(f64::MIN_POSITIVE)
 }
 
 impl FlowStream {
@@ -259,7 +254,7 @@ impl FlowStream {
                 }
             }
         });
-        let longest = longest_period(&crate::marbling::tools::flow(&frame.prefs.settings, 0.0));
+        let longest = crate::marbling::tools::flow(&frame.prefs.settings, 0.0).longest_time();
         let period = ui
             .add(
                 Slider::new(&mut self.period, PERIOD)
@@ -341,7 +336,7 @@ mod tests {
         };
         let t = turbulence(&strong, 20.0, 1.0);
         assert!(t.period < 20.0, "{}", t.period);
-        assert!(t.flow(t.period).sub_steps() <= MAX_FLOW_STEPS);
+        assert!(t.flow(t.period).sub_steps() <= marbling_core::MAX_FLOW_STEPS);
         assert_eq!(turbulence(&settings(), 2.0, 1.0).period, 2.0);
         // Sound doubling the strength halves the longest period.
         let driven = turbulence(&strong, 20.0, 2.0);

@@ -20,6 +20,7 @@ use crate::action::Action;
 use crate::frame::Frame;
 use crate::media::sound_input::{SoundInput, SoundSource};
 use egui::{RichText, Slider};
+use marbling_core::synth::SplitMix64;
 use marbling_core::{Drop, Op, Point};
 
 /// Kung's six bands, Hz (lowest and highest frequency of each).
@@ -160,8 +161,8 @@ pub(crate) struct SoundPanel {
     /// The level a beat rises through.
     threshold: f32,
     beats: [Beat; 6],
-    /// State of the drops' positions (SplitMix64).
-    rng: u64,
+    /// Where the drops fall.
+    rng: SplitMix64,
     /// Drops made by beats since start.
     drops: u64,
     pick: crate::platform::PickSlot,
@@ -176,7 +177,7 @@ impl Default for SoundPanel {
             targets: [Target::Nothing; 6],
             threshold: 0.6,
             beats: [Beat::default(); 6],
-            rng: 0x5EED,
+            rng: SplitMix64(0x5EED),
             drops: 0,
             pick: Default::default(),
             spectrum: Vec::new(),
@@ -248,25 +249,13 @@ impl SoundPanel {
     }
 
     /// The drop a beat of level `level` makes: somewhere on the sheet (10–90 % of each
-    /// side), the drop tool's radius × (½ + level), the ink (or the palette in turn
-    /// when the tool cycles colours).
+    /// side), the drop tool's radius × (½ + level), the ink (or the palette in turn from
+    /// it when the tool cycles colours, [`crate::store::prefs::Prefs::cycled_inks`]).
     fn beat_drop(&mut self, level: f32, frame: &Frame<'_>) -> Drop {
         let design = frame.editor.history.design();
-        let mut next = || {
-            self.rng = self.rng.wrapping_add(0x9E37_79B9_7F4A_7C15);
-            let mut z = self.rng;
-            z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-            z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-            ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
-        };
-        let (x, y) = (0.1 + 0.8 * next(), 0.1 + 0.8 * next());
-        let inks = frame.prefs.inks();
-        let color = if frame.prefs.settings.cycle_colors && !inks.is_empty() {
-            let start = inks.iter().position(|&c| c == frame.prefs.ink).unwrap_or(0);
-            inks[(start + self.drops as usize) % inks.len()]
-        } else {
-            frame.prefs.ink
-        };
+        let (x, y) = (self.rng.range(0.1, 0.9), self.rng.range(0.1, 0.9));
+        let inks = frame.prefs.cycled_inks();
+        let color = inks[self.drops as usize % inks.len()];
         self.drops += 1;
         Drop {
             center: Point::new(f64::from(design.width) * x, f64::from(design.height) * y),

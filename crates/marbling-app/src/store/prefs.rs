@@ -64,6 +64,22 @@ impl Prefs {
         }
     }
 
+    /// The inks a tool lays in turn: the ink alone, or (cycling colours) the ink, then
+    /// the rest of the palette after it.
+    pub fn cycled_inks(&self) -> Vec<Rgb8> {
+        let ink = self.ink;
+        if !self.settings.cycle_colors {
+            return vec![ink];
+        }
+        let palette = self.inks();
+        match palette.iter().position(|&c| c == ink) {
+            Some(i) => palette[i..].iter().chain(&palette[..i]).copied().collect(),
+            None => std::iter::once(ink)
+                .chain(palette.iter().copied())
+                .collect(),
+        }
+    }
+
     /// The name of the chosen palette.
     pub fn palette_name(&self) -> &str {
         match (

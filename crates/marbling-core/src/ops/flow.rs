@@ -72,6 +72,12 @@ impl Flow {
         self.factor().abs() * Fbm64::new(&self.fbm()).gradient_bound()
     }
 
+    /// The longest |T| whose sub-steps stay within [`MAX_FLOW_STEPS`], less 0.1 % so
+    /// that rounding never pushes a flow of that time over (∞ when U is 0).
+    pub fn longest_time(&self) -> f64 {
+        0.999 * MAX_FLOW_STEPS as f64 * FLOW_STEP_PX / self.speed_bound()
+    }
+
     /// N: the least count with [`Flow::speed_bound`]·|T|/N ≤ [`FLOW_STEP_PX`] (0 when T
     /// or U is 0; saturating for values no valid flow holds).
     pub fn sub_steps(&self) -> usize {

@@ -406,9 +406,7 @@ pub fn flow(s: &ToolSettings, length: f64) -> Flow {
         strength: s.flow_strength.max(0.01),
         time: 0.0,
     };
-    let longest = marbling_core::MAX_FLOW_STEPS as f64 * marbling_core::FLOW_STEP_PX
-        / f.speed_bound().max(f64::MIN_POSITIVE);
-    f.time = (length / f.strength).min(0.999 * longest);
+    f.time = (length / f.strength).min(f.longest_time());
     f
 }
 
