@@ -5,6 +5,9 @@
 // (frequency, amplitude/σ) pairs, then the header a = (kind, U/(2πf), Δt, N),
 // b = (octaves, basis: 0 Perlin, 1 value, seed's high 16 bits, low 16 bits).
 
+// This variant walks flows (flow_off.wgsl: false), so render.wgsl keeps its turbulence.
+const FLOW_ENABLED: bool = true;
+
 // Newton steps per sub-step, from the explicit guess (the error this leaves is measured
 // by tests/it/gpu_vs_cpu_v4.rs).
 const FLOW_NEWTON: u32 = 2u;

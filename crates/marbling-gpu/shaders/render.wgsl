@@ -55,9 +55,11 @@ struct Hit {
 // Walks design point `p0` back through every op: the colour it shows as
 // (linear r, g, b, packed sRGB; for a v2 surface, packed is the ink's or the plain
 // background's, used only to decide refinement). With a turbulence, the two layers'
-// colours blended in linear light (packed is −1 where they differ).
+// colours blended in linear light (packed is −1 where they differ). Only variants with
+// a flow have a turbulence (its flow is the design's last op): elsewhere
+// `FLOW_ENABLED` is a false constant and the per-sample walk is the plain one.
 fn trace(p0: vec2<f32>) -> vec4<f32> {
-    if params.layers[0].w == 0.0 {
+    if !FLOW_ENABLED || params.layers[0].w == 0.0 {
         return trace_from(p0, p0);
     }
     var acc = vec3<f32>(0.0);
