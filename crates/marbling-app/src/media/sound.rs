@@ -313,8 +313,9 @@ impl SoundPanel {
                 }
             }
         });
-        for (k, &(lo, hi)) in BANDS.iter().enumerate() {
-            ui.horizontal(|ui| {
+        // One row a band: the meter, the band, what it drives (the lists line up).
+        egui::Grid::new("sound-bands").show(ui, |ui| {
+            for (k, &(lo, hi)) in BANDS.iter().enumerate() {
                 let (rect, _) =
                     ui.allocate_exact_size(egui::vec2(60.0, 12.0), egui::Sense::hover());
                 let painter = ui.painter();
@@ -344,8 +345,9 @@ impl SoundPanel {
                         }
                     });
                 frame.control(format!("sound-target-{}", k + 1), &combo.response);
-            });
-        }
+                ui.end_row();
+            }
+        });
         let r = ui.add(Slider::new(&mut self.threshold, 0.05..=0.95).text("beat threshold"));
         frame.control("sound-threshold", &r);
         if self.drops > 0 {
