@@ -6,12 +6,12 @@
 
 use crate::backend::{Backend, gpu_renderer};
 use crate::input::{read_design, read_turbulence};
+use crate::loop_file::{Format, write_loop};
 use anyhow::{Context, Result, bail};
 use clap::Args;
 use indicatif::{ProgressBar, ProgressStyle};
 use marbling_core::making::design_at;
 use marbling_core::{Antialias, RenderOptions, RgbaImage, output_size, render};
-use std::io::Write;
 
 /// Most frames one animation may have.
 pub const MAX_FRAMES: usize = 3_600;
@@ -70,23 +70,9 @@ pub fn loop_order(made: usize, reverse: bool) -> Vec<usize> {
     }
 }
 
-/// The output format, from the file name.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Format {
-    Apng,
-    Gif,
-}
-
 /// Renders the frames and writes the animation.
 pub fn run(args: &AnimateArgs) -> Result<()> {
-    let format = match args.output.rsplit('.').next().map(str::to_ascii_lowercase) {
-        Some(e) if e == "png" => Format::Apng,
-        Some(e) if e == "gif" => Format::Gif,
-        _ => bail!(
-            "-o must name a .png (animated PNG) or .gif file, got '{}'",
-            args.output
-        ),
-    };
+    let format = Format::from_path(&args.output)?;
     if !(1..=60).contains(&args.fps) {
         bail!("--fps must be 1 to 60, got {}", args.fps);
     }
@@ -120,9 +106,7 @@ pub fn run(args: &AnimateArgs) -> Result<()> {
     }
     let scale = f64::from(args.width) / f64::from(design.width);
     let (w, h) = output_size(&design, scale)?;
-    if format == Format::Gif && (w > u32::from(u16::MAX) || h > u32::from(u16::MAX)) {
-        bail!("a GIF is at most 65535 px a side, this one would be {w}×{h}");
-    }
+    format.check_size(w, h)?;
     let opts = RenderOptions {
         scale,
         antialias: args.aa,
@@ -183,38 +167,15 @@ pub fn run(args: &AnimateArgs) -> Result<()> {
             (1, args.fps as u16)
         }
     };
-    let mut out = std::io::BufWriter::new(file);
-    match format {
-        Format::Apng => {
-            let mut enc = png::Encoder::new(&mut out, w, h);
-            enc.set_color(png::ColorType::Rgba);
-            enc.set_depth(png::BitDepth::Eight);
-            enc.set_compression(png::Compression::Fast);
-            enc.set_animated(frames as u32, 0)?;
-            enc.set_frame_delay(1, args.fps as u16)?;
-            let mut writer = enc.write_header()?;
-            for &i in &order {
-                let (num, den) = delay(i);
-                writer.set_frame_delay(num, den)?;
-                writer.write_image_data(&frame(i)?.pixels)?;
-            }
-            writer.finish()?;
-        }
-        Format::Gif => {
-            let mut enc = gif::Encoder::new(&mut out, w as u16, h as u16, &[])?;
-            enc.set_repeat(gif::Repeat::Infinite)?;
-            for &i in &order {
-                let mut pixels = frame(i)?.pixels;
-                let mut f = gif::Frame::from_rgba_speed(w as u16, h as u16, &mut pixels, 10);
-                // Centiseconds.
-                let (num, den) = delay(i);
-                f.delay = (u32::from(num) * 100 / u32::from(den)).max(1) as u16;
-                enc.write_frame(&f)?;
-            }
-        }
-    }
-    out.flush()
-        .with_context(|| format!("cannot write '{}'", args.output))?;
+    write_loop(
+        file,
+        &args.output,
+        format,
+        (w, h),
+        frames,
+        |k| delay(order[k]),
+        |k| frame(order[k]),
+    )?;
     bar.finish_and_clear();
     let seconds_taken = start.elapsed().as_secs_f64();
     eprintln!(

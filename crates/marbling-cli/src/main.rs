@@ -7,6 +7,7 @@ mod bench_gpu;
 mod bench_svg;
 mod input;
 mod link;
+mod loop_file;
 mod noise;
 mod palette;
 mod pattern;

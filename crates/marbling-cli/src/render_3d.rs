@@ -1,8 +1,11 @@
 //! `marbling render-3d`: the design on a 3D object, every sample walked back through
-//! every op (or, with `--texture`, sampled from a baked raster for comparison).
+//! every op (or, with `--texture`, sampled from a baked raster for comparison). With
+//! `--turn`, a loop of the object turning (the camera orbiting about the vertical axis)
+//! as an animated PNG or GIF.
 
 use crate::backend::{Backend, gpu_renderer};
 use crate::input::read_design;
+use crate::loop_file::{Format, write_loop};
 use crate::size::Size;
 use anyhow::{Context, Result, bail};
 use clap::Args;
@@ -15,7 +18,7 @@ use std::time::Instant;
 pub struct Render3dArgs {
     /// Design document (JSON); `-` reads standard input.
     design: String,
-    /// Output PNG.
+    /// Output PNG; with --turn a `.png` (animated PNG) or `.gif` loop.
     #[arg(short, long)]
     output: String,
     /// The object: sphere, vase, cylinder, book or plane.
@@ -37,6 +40,25 @@ pub struct Render3dArgs {
     /// Camera elevation, degrees (−90 to 90, exclusive).
     #[arg(long, allow_negative_numbers = true)]
     pitch: Option<f64>,
+    /// Camera distance as a share of the framing distance (0.7 to 5): below 1 the
+    /// camera moves in, the object looks larger and its perspective stronger.
+    #[arg(long, default_value_t = 1.0)]
+    dolly: f64,
+    /// Write a loop of the camera turning this many degrees about the vertical axis
+    /// (360: once round; negative: the other way), frame k at yaw + DEG·k/N.
+    #[arg(
+        long,
+        value_name = "DEG",
+        allow_negative_numbers = true,
+        conflicts_with = "repeat"
+    )]
+    turn: Option<f64>,
+    /// Frames N of the --turn loop.
+    #[arg(long, default_value_t = 36, requires = "turn")]
+    frames: usize,
+    /// Frames per second of the --turn loop.
+    #[arg(long, default_value_t = 24, requires = "turn")]
+    fps: u32,
     /// Antialiasing: none, rgss, grid4, quincunx, rooks8, adaptive.
     #[arg(long, default_value = "rgss")]
     aa: Antialias,
@@ -81,6 +103,7 @@ pub fn run(args: &Render3dArgs) -> Result<()> {
             pitch: args.pitch,
             zoom: args.zoom,
             look_at: args.look_at,
+            dolly: args.dolly,
         },
         width: args.size.width,
         height: args.size.height,
@@ -89,6 +112,9 @@ pub fn run(args: &Render3dArgs) -> Result<()> {
     };
     if let Err(e) = view.check(&design) {
         bail!("{e}");
+    }
+    if let Some(turn) = args.turn {
+        return write_turn(args, &design, &view, turn);
     }
     let mut out = std::fs::File::create(&args.output)
         .with_context(|| format!("cannot write '{}'", args.output))?;
@@ -136,6 +162,68 @@ pub fn run(args: &Render3dArgs) -> Result<()> {
         } else {
             String::new()
         }
+    );
+    Ok(())
+}
+
+/// Most frames of a `--turn` loop.
+const MAX_TURN_FRAMES: usize = crate::animate::MAX_FRAMES;
+
+/// Writes the loop of `view` turning `turn` degrees over `args.frames` frames.
+fn write_turn(
+    args: &Render3dArgs,
+    design: &marbling_core::Design,
+    view: &View3d,
+    turn: f64,
+) -> Result<()> {
+    let format = Format::from_path(&args.output)?;
+    if !(turn.is_finite() && turn.abs() <= 3600.0) {
+        bail!("--turn must be a number of degrees from -3600 to 3600, got {turn}");
+    }
+    if !(2..=MAX_TURN_FRAMES).contains(&args.frames) {
+        bail!(
+            "--frames must be 2 to {MAX_TURN_FRAMES}, got {}",
+            args.frames
+        );
+    }
+    if !(1..=60).contains(&args.fps) {
+        bail!("--fps must be 1 to 60, got {}", args.fps);
+    }
+    format.check_size(view.width, view.height)?;
+    let file = std::fs::File::create(&args.output)
+        .with_context(|| format!("cannot write '{}'", args.output))?;
+    let gpu = match args.backend {
+        Backend::Cpu => None,
+        Backend::Gpu => Some(gpu_renderer()?),
+        Backend::Vector => bail!("render-3d draws with --backend cpu or gpu"),
+    };
+    let n = args.frames;
+    let start = Instant::now();
+    write_loop(
+        file,
+        &args.output,
+        format,
+        (view.width, view.height),
+        n,
+        |_| (1, args.fps as u16),
+        |k| {
+            let frame = view.turned(design, turn * k as f64 / n as f64);
+            Ok(match &gpu {
+                None => render_3d(design, &frame)?,
+                Some(gpu) => gpu.render_3d(design, &frame)?,
+            })
+        },
+    )?;
+    let seconds = start.elapsed().as_secs_f64();
+    println!(
+        "{}: {n} frames of a {} turning {turn}° at {} fps, {} px, backend {}, rendered and \
+         encoded in {seconds:.3} s ({:.2} frames/s)",
+        args.output,
+        args.surface.name(),
+        args.fps,
+        args.size,
+        args.backend.name(),
+        n as f64 / seconds
     );
     Ok(())
 }

@@ -227,6 +227,7 @@ impl ReliefView {
                 pitch: Some(self.pitch),
                 zoom: 1.0,
                 look_at: None,
+                dolly: 1.0,
             },
             width: VIEW[0],
             height: VIEW[1],

@@ -153,3 +153,72 @@ fn a_picture_too_large_for_a_link_is_refused_or_downscaled() {
     let p = back.background_image.expect("the picture is in the link");
     assert!(p.pixels().width < 300 && p.source().starts_with("data:image/jpeg"));
 }
+
+#[test]
+fn render_3d_turn_writes_a_loop_of_the_turned_views() {
+    let dir = workdir("turn");
+    let d = random_design(29, 160, 120, 40, Mix::Mixed);
+    let design = path(&dir, "design.json");
+    std::fs::write(&design, d.to_value().to_string()).expect("design");
+    let common = ["--surface", "sphere", "--size", "48x36", "--dolly", "1.5"];
+    let apng = path(&dir, "turn.png");
+    let mut args = vec!["render-3d", &design, "-o", &apng, "--yaw", "10"];
+    args.extend(common);
+    args.extend(["--turn", "360", "--frames", "4"]);
+    let summary = ok(&args);
+    assert!(
+        summary.contains("4 frames of a sphere turning 360°"),
+        "{summary}"
+    );
+    let (declared, frames) =
+        crate::making_cli::apng_frames(&std::fs::read(&apng).expect("written"));
+    assert_eq!((declared, frames.len()), (4, 4));
+    // Frame k is the still render at yaw 10 + 90k, byte for byte.
+    for (k, frame) in frames.iter().enumerate() {
+        let still = path(&dir, &format!("still-{k}.png"));
+        let yaw = (10 + 90 * k).to_string();
+        let mut args = vec!["render-3d", &design, "-o", &still, "--yaw", &yaw];
+        args.extend(common);
+        ok(&args);
+        assert_eq!(read_png(&still).pixels, frame.pixels, "frame {k}");
+    }
+    assert_ne!(frames[0].pixels, frames[1].pixels, "the frames turn");
+    // A GIF of the same loop.
+    let gif_path = path(&dir, "turn.gif");
+    let mut args = vec!["render-3d", &design, "-o", &gif_path];
+    args.extend(common);
+    args.extend(["--turn", "-90", "--frames", "3", "--fps", "10"]);
+    ok(&args);
+    let mut decoder = gif::DecodeOptions::new()
+        .read_info(std::fs::File::open(&gif_path).expect("gif"))
+        .expect("a gif");
+    let mut n = 0;
+    while let Some(f) = decoder.read_next_frame().expect("frame") {
+        assert_eq!((f.width, f.height, f.delay), (48, 36, 10));
+        n += 1;
+    }
+    assert_eq!(n, 3);
+    for (args, expected) in [
+        (
+            vec!["--turn", "360", "--frames", "1"],
+            "--frames must be 2 to",
+        ),
+        (vec!["--turn", "inf"], "--turn must be a number of degrees"),
+        (
+            vec!["--dolly", "0.2"],
+            "dolly must be a number from 0.7 to 5",
+        ),
+        (vec!["--frames", "3"], "--turn"),
+    ] {
+        let out = path(&dir, "bad.png");
+        let mut all = vec!["render-3d", design.as_str(), "-o", out.as_str()];
+        all.extend(args.iter().copied());
+        let o = marbling(&all, None);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert!(!o.status.success(), "{args:?}");
+        assert!(err.contains(expected), "{args:?}: {err}");
+    }
+    let mp4 = path(&dir, "turn.mp4");
+    let o = marbling(&["render-3d", &design, "-o", &mp4, "--turn", "90"], None);
+    assert!(String::from_utf8_lossy(&o.stderr).contains("-o must name a .png"));
+}

@@ -44,6 +44,12 @@ pub const AMBIENT: f64 = 0.25;
 pub const FIT_MARGIN: f64 = 1.12;
 /// Largest zoom.
 pub const MAX_ZOOM: f64 = 100_000.0;
+/// Nearest [`Camera::dolly`]: 0.7 of the framing distance keeps the camera outside
+/// every object wherever it aims (it is 3b + 1 from its target, b the object's bound,
+/// and 0.7·(3b + 1) > 2b).
+pub const MIN_DOLLY: f64 = 0.7;
+/// Farthest [`Camera::dolly`].
+pub const MAX_DOLLY: f64 = 5.0;
 /// Largest output side of a 3D render, pixels.
 pub const MAX_VIEW_SIDE: u32 = 8192;
 /// Largest baked texture side for [`View3d::texture`] (the image-background limit).
@@ -67,6 +73,10 @@ pub struct Camera {
     pub zoom: f64,
     /// Design point the camera centres on (its point on the object's surface).
     pub look_at: Option<Point>,
+    /// Camera distance as a share of the framing distance [`View3d::distance`], in
+    /// [`MIN_DOLLY`, `MAX_DOLLY`]: below 1 the camera moves in (the object looks larger, its
+    /// perspective stronger), above 1 out; the lens stays as `zoom` sets it.
+    pub dolly: f64,
 }
 
 impl Default for Camera {
@@ -76,6 +86,7 @@ impl Default for Camera {
             pitch: None,
             zoom: 1.0,
             look_at: None,
+            dolly: 1.0,
         }
     }
 }
@@ -107,6 +118,9 @@ pub enum View3dError {
     /// Zoom out of range.
     #[error("zoom must be a number from 0.01 to {MAX_ZOOM}, got {0}")]
     Zoom(f64),
+    /// Dolly out of range.
+    #[error("dolly must be a number from {MIN_DOLLY} to {MAX_DOLLY}, got {0}")]
+    Dolly(f64),
     /// Angles out of range.
     #[error("yaw must be finite and pitch within (-90, 90) degrees")]
     Angles,
@@ -169,6 +183,10 @@ impl View3d {
         if !(z.is_finite() && (0.01..=MAX_ZOOM).contains(&z)) {
             return Err(View3dError::Zoom(z));
         }
+        let d = self.camera.dolly;
+        if !(d.is_finite() && (MIN_DOLLY..=MAX_DOLLY).contains(&d)) {
+            return Err(View3dError::Dolly(d));
+        }
         let yaw_ok = self.camera.yaw.is_none_or(f64::is_finite);
         let pitch_ok = self.camera.pitch.is_none_or(|p| p.abs() < 90.0);
         if !yaw_ok || !pitch_ok {
@@ -194,21 +212,36 @@ impl View3d {
 
     /// The camera for `design`.
     pub fn rig(&self, design: &Design) -> Rig {
-        let look_at = self.camera.look_at.map(|p| {
+        self.rig_for(&self.object(design), self.surface_look_at(design))
+    }
+
+    /// This view with the camera turned `degrees` further about the vertical axis (a
+    /// frame of a turn: yaw and pitch resolved for `design` first, so a camera facing
+    /// its look-at point turns from there).
+    pub fn turned(&self, design: &Design, degrees: f64) -> View3d {
+        let object = self.object(design);
+        let (yaw, pitch) = self.angles(&object, self.surface_look_at(design));
+        let mut view = *self;
+        view.camera.yaw = Some(yaw.to_degrees() + degrees);
+        view.camera.pitch = Some(pitch.to_degrees());
+        view
+    }
+
+    /// The look-at point as texture coordinates (u, v in [0, 1]).
+    fn surface_look_at(&self, design: &Design) -> Option<(f64, f64)> {
+        self.camera.look_at.map(|p| {
             (
                 p.x / f64::from(design.width),
                 p.y / f64::from(design.height),
             )
-        });
-        self.rig_for(&self.object(design), look_at)
+        })
     }
 
-    /// The camera for `object`, centred on texture coordinates `look_at` (u, v in
-    /// [0, 1]) or on the object's centre.
-    pub fn rig_for(&self, object: &Object, look_at: Option<(f64, f64)>) -> Rig {
-        let (target, normal) = match look_at {
-            Some((u, v)) => object.surface_point(u, v),
-            None => (Vec3::default(), Vec3::new(0.0, 0.0, 1.0)),
+    /// Yaw and pitch in radians: the camera's, or facing the look-at point's normal.
+    fn angles(&self, object: &Object, look_at: Option<(f64, f64)>) -> (f64, f64) {
+        let normal = match look_at {
+            Some((u, v)) => object.surface_point(u, v).1,
+            None => Vec3::new(0.0, 0.0, 1.0),
         };
         let yaw = self
             .camera
@@ -219,13 +252,24 @@ impl View3d {
             .pitch
             .map_or(normal.y.clamp(-1.0, 1.0).asin(), f64::to_radians)
             .clamp(-1.55, 1.55);
+        (yaw, pitch)
+    }
+
+    /// The camera for `object`, centred on texture coordinates `look_at` (u, v in
+    /// [0, 1]) or on the object's centre.
+    pub fn rig_for(&self, object: &Object, look_at: Option<(f64, f64)>) -> Rig {
+        let target = match look_at {
+            Some((u, v)) => object.surface_point(u, v).0,
+            None => Vec3::default(),
+        };
+        let (yaw, pitch) = self.angles(object, look_at);
         let dir = Vec3::new(
             yaw.sin() * pitch.cos(),
             pitch.sin(),
             yaw.cos() * pitch.cos(),
         );
         let distance = Self::distance(object);
-        let origin = target + dir * distance;
+        let origin = target + dir * (distance * self.camera.dolly);
         let forward = -dir;
         let right = forward.cross(Vec3::new(0.0, 1.0, 0.0)).normalized();
         let up = right.cross(forward);

@@ -168,6 +168,7 @@ mod tests {
                 pitch: Some(pitch),
                 zoom: 1.0,
                 look_at: None,
+                dolly: 1.0,
             },
             width: 64,
             height: 48,

@@ -145,3 +145,85 @@ fn every_shape_draws_the_design_and_its_own_faces() {
         assert!(inky > 20, "{}: only {inky} ink pixels", shape.name());
     }
 }
+
+/// Width in pixels of a red sphere on row `y` (red even where the headlight grazes it,
+/// unlike the grey backdrop).
+fn red_width(img: &RgbaImage, y: u32) -> usize {
+    (0..img.width)
+        .filter(|&x| {
+            let p = img.pixel(x, y);
+            p[0] > 80 && p[1] < 50 && p[2] < 50
+        })
+        .count()
+}
+
+#[test]
+fn a_dolly_moves_the_camera_along_its_line_and_a_turn_adds_to_the_yaw() {
+    // An all-red sphere: its silhouette's half-angle θ at camera distance c from the
+    // centre has tan θ = r/√(c² − r²), r = 1, and the frame's tan(fov/2) stays as zoom 1
+    // sets it, so the width on screen scales with tan θ.
+    let mut d = Design::new(200, 100, Rgb8::new(200, 20, 20));
+    d.ops.clear();
+    let size = (240, 240);
+    let width = |dolly: f64| {
+        let camera = Camera {
+            yaw: Some(0.0),
+            pitch: Some(0.0),
+            // Zoomed out, so the sphere fits the frame at the nearest dolly too.
+            zoom: 0.5,
+            dolly,
+            ..Camera::default()
+        };
+        let img = render_3d(&d, &view(Shape::Sphere, camera, size)).expect("render");
+        red_width(&img, 120) as f64
+    };
+    let base = View3d::distance(&view(Shape::Sphere, Camera::default(), size).object(&d));
+    let tan = |c: f64| 1.0 / (c * c - 1.0).sqrt();
+    let (w1, w2, w07) = (width(1.0), width(2.0), width(0.7));
+    for (dolly, w) in [(2.0, w2), (0.7, w07)] {
+        let expected = w1 * tan(base * dolly) / tan(base);
+        println!("dolly {dolly}: {w} px wide, expected {expected:.1} (dolly 1: {w1})");
+        assert!(
+            (w - expected).abs() <= 2.0,
+            "dolly {dolly}: {w} vs {expected}"
+        );
+    }
+    // Out of range: a message naming the dolly.
+    let mut v = view(Shape::Sphere, Camera::default(), size);
+    v.camera.dolly = 0.5;
+    let e = render_3d(&d, &v).expect_err("too close").to_string();
+    assert!(e.contains("dolly must be a number from 0.7 to 5"), "{e}");
+
+    // A turn resolves the camera facing its look-at point first, then adds degrees.
+    d = one_drop(200, 100, (100.0, 50.0), 6.0);
+    d.ops.push(Op::Drop(Drop {
+        center: Point::new(150.0, 50.0),
+        radius: 6.0,
+        color: Rgb8::new(200, 20, 20),
+    }));
+    let facing = view(
+        Shape::Sphere,
+        Camera {
+            look_at: Some(Point::new(100.0, 50.0)),
+            ..Camera::default()
+        },
+        (64, 64),
+    );
+    let unturned = render_3d(&d, &facing).expect("facing");
+    let same = render_3d(&d, &facing.turned(&d, 0.0)).expect("turned 0");
+    assert_eq!(
+        unturned.pixels, same.pixels,
+        "a turn of 0° is the view itself"
+    );
+    let yaw = facing.turned(&d, 90.0).camera.yaw.expect("resolved");
+    assert!((yaw - 90.0).abs() < 1e-9, "yaw {yaw}");
+    // About the centre (no look-at point), a quarter turn shows u = ¾.
+    let mut centred = facing;
+    centred.camera.look_at = None;
+    let quarter = centred.turned(&d, 90.0);
+    let c = render_3d(&d, &quarter).expect("turned 90").pixel(32, 32);
+    assert!(
+        c[0] > 150 && c[2] < 60,
+        "a quarter turn faces the red drop: {c:?}"
+    );
+}

@@ -20,6 +20,7 @@ fn view(shape: Shape, yaw: f64, texture: Option<u32>) -> View3d {
             pitch: Some(15.0),
             zoom: 1.0,
             look_at: None,
+            dolly: 1.0,
         },
         width: 96,
         height: 64,
@@ -36,11 +37,17 @@ fn every_shape_matches_the_cpu() {
     let d = random_design(23, 160, 120, 40, Mix::DropHeavy);
     for (i, shape) in Shape::ALL.into_iter().enumerate() {
         let texture = (i == 1).then_some(256);
-        let v = view(shape, 20.0 + 30.0 * i as f64, texture);
+        let mut v = view(shape, 20.0 + 30.0 * i as f64, texture);
+        // Every other shape with the camera dollied in or out.
+        v.camera.dolly = [1.0, 0.7, 1.0, 2.5, 1.0][i % 5];
         let c = render_3d(&d, &v).expect("CPU");
         let g = gpu.render_3d(&d, &v).expect("GPU");
         let r = compare(&c, &g, THRESHOLD).expect("same size");
-        println!("{} (texture {texture:?}): {r:?}", shape.name());
+        println!(
+            "{} (texture {texture:?}, dolly {}): {r:?}",
+            shape.name(),
+            v.camera.dolly
+        );
         assert!(r.fraction() <= BUDGET, "{}: {r:?}", shape.name());
     }
     // A close-up with adaptive antialiasing.
