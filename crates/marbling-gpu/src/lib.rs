@@ -91,7 +91,7 @@ pub use preview::{CACHE_FACTOR, CACHE_FORMAT, PreviewCache, PreviewRenderer};
 pub use preview_kind::PreviewKind;
 #[cfg(not(target_arch = "wasm32"))]
 pub use target::read_buffer;
-pub use target::{RenderTarget, copy_to_buffer};
+pub use target::{PendingRead, RenderTarget, copy_to_buffer};
 pub use tiles::tile_grid;
 pub use view3d::{View3dParams, View3dRenderer};
 /// The wgpu this crate is built on (so callers use the same version).

@@ -1,8 +1,9 @@
 //! Offscreen render targets and reading their pixels back (the blocking read is
-//! native only).
+//! native only; [`PendingRead`] waits for the map between frames, everywhere).
 
 #[cfg(not(target_arch = "wasm32"))]
-use crate::{GpuContext, GpuError};
+use crate::GpuContext;
+use crate::GpuError;
 
 /// Bytes per row of a texture-to-buffer copy must be a multiple of this.
 const ROW_ALIGN: u32 = wgpu::COPY_BYTES_PER_ROW_ALIGNMENT;
@@ -186,4 +187,69 @@ pub fn read_buffer(
     }
     buffer.unmap();
     Ok(())
+}
+
+/// A target's pixels on their way back without blocking (the browser maps buffers
+/// between frames): [`PendingRead::start`] copies and asks for the map; call
+/// [`PendingRead::rows`] once per frame until it answers.
+pub struct PendingRead {
+    buffer: wgpu::Buffer,
+    padded: u32,
+    mapped: MapSlot,
+}
+
+/// Where a buffer's map callback leaves its outcome.
+type MapSlot = std::sync::Arc<std::sync::Mutex<Option<Result<(), wgpu::BufferAsyncError>>>>;
+
+impl PendingRead {
+    /// Copies `target` (RGBA8) at the end of `encoder`, submits it and asks for the map.
+    pub fn start(
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        mut encoder: wgpu::CommandEncoder,
+        target: &RenderTarget,
+    ) -> Self {
+        let (buffer, padded) = copy_to_buffer(device, &mut encoder, target);
+        queue.submit([encoder.finish()]);
+        let mapped = MapSlot::default();
+        let slot = std::sync::Arc::clone(&mapped);
+        buffer.map_async(wgpu::MapMode::Read, .., move |r| {
+            if let Ok(mut s) = slot.lock() {
+                *s = Some(r);
+            }
+        });
+        Self {
+            buffer,
+            padded,
+            mapped,
+        }
+    }
+
+    /// `None` while the map is pending; then hands each unpadded row (`width × 4`
+    /// bytes, top to bottom) to `row(y, bytes)`, once. Native backends deliver the map
+    /// from `device.poll`, which the caller runs.
+    pub fn rows(
+        &self,
+        width: u32,
+        height: u32,
+        mut row: impl FnMut(u32, &[u8]),
+    ) -> Option<Result<(), GpuError>> {
+        let outcome = self.mapped.lock().ok().and_then(|mut m| m.take())?;
+        let read = || -> Result<(), GpuError> {
+            outcome.map_err(|e| GpuError::Readback(e.to_string()))?;
+            {
+                let data = self
+                    .buffer
+                    .get_mapped_range(..)
+                    .map_err(|e| GpuError::Readback(e.to_string()))?;
+                for y in 0..height {
+                    let start = (y * self.padded) as usize;
+                    row(y, &data[start..start + (width * 4) as usize]);
+                }
+            }
+            self.buffer.unmap();
+            Ok(())
+        };
+        Some(read())
+    }
 }

@@ -151,6 +151,7 @@ impl MarblingApp {
                     .open
                     .then(|| self.panels.view3d.frames.to_string()),
             ),
+            ("data-view3d", self.panels.view3d.hook()),
             ("data-preview-ready", preview_ready.then(|| "1".to_owned())),
             ("data-qr", self.panels.qr.hook()),
             (

@@ -1,7 +1,14 @@
-//! *Record*: the step player filmed to a WebM by the browser's MediaRecorder on the
-//! page's canvas (what the window shows: the sheet, the tool moving and the captions),
-//! downloaded when the player reaches the end or the recording is stopped. Outside the
-//! browser, `marbling animate` writes the making instead.
+//! *Record*: a WebM made by the browser's MediaRecorder, downloaded when the recording
+//! stops. The step player films the page's canvas (what the window shows: the sheet, the
+//! tool moving and the captions); the 3D view's turn films frames handed to it one by
+//! one ([`Recorder::start_frames`], [`Recorder::push_frame`]) on a canvas of its own.
+//! Outside the browser, `marbling animate` and `marbling render-3d --turn` write loops
+//! instead.
+
+/// Why there is no recording outside the browser.
+#[cfg(not(target_arch = "wasm32"))]
+const NEEDS_THE_WEB: &str = "recording a video needs the web app; `marbling animate` and \
+     `marbling render-3d --turn` write loops as animated PNG or GIF";
 
 /// A recording in progress.
 pub struct Recorder {
@@ -14,25 +21,55 @@ impl Recorder {
     pub fn start(fps: f64) -> Result<Self, String> {
         #[cfg(target_arch = "wasm32")]
         {
-            web::Recording::start(fps).map(|imp| Self { imp })
+            web::Recording::start(None, fps).map(|imp| Self { imp })
         }
         #[cfg(not(target_arch = "wasm32"))]
         {
             let _ = fps;
-            Err(
-                "recording a video needs the web app; `marbling animate` writes the making \
-                 as an animated PNG or GIF"
-                    .into(),
-            )
+            Err(NEEDS_THE_WEB.into())
+        }
+    }
+
+    /// Starts filming frames of `width` × `height` pixels handed to
+    /// [`Recorder::push_frame`], sampled `fps` times a second (a frame stays on until
+    /// the next arrives).
+    pub fn start_frames(width: u32, height: u32, fps: f64) -> Result<Self, String> {
+        #[cfg(target_arch = "wasm32")]
+        {
+            web::Recording::start(Some((width, height)), fps).map(|imp| Self { imp })
+        }
+        #[cfg(not(target_arch = "wasm32"))]
+        {
+            let _ = (width, height, fps);
+            Err(NEEDS_THE_WEB.into())
+        }
+    }
+
+    /// Shows the next frame (`width` × `height` RGBA8, sRGB) of a recording of frames.
+    pub fn push_frame(&self, width: u32, height: u32, rgba: &[u8]) -> Result<(), String> {
+        #[cfg(target_arch = "wasm32")]
+        {
+            self.imp.push_frame(width, height, rgba)
+        }
+        #[cfg(not(target_arch = "wasm32"))]
+        {
+            let _ = (width, height, rgba);
+            Err(NEEDS_THE_WEB.into())
         }
     }
 
     /// Stops; the video downloads as `name` once the browser has it.
     pub fn finish(self, name: &str) {
         #[cfg(target_arch = "wasm32")]
-        self.imp.finish(name);
+        self.imp.finish(Some(name));
         #[cfg(not(target_arch = "wasm32"))]
         let _ = name;
+    }
+
+    /// Stops without saving anything.
+    pub fn discard(self) {
+        #[cfg(target_arch = "wasm32")]
+        self.imp.finish(None);
     }
 }
 
@@ -44,19 +81,41 @@ mod web {
     use wasm_bindgen::closure::Closure;
 
     pub struct Recording {
+        /// The canvas frames are drawn on, for a recording of frames.
+        painter: Option<web_sys::CanvasRenderingContext2d>,
         recorder: web_sys::MediaRecorder,
         chunks: Rc<RefCell<Vec<web_sys::Blob>>>,
         _on_data: Closure<dyn FnMut(web_sys::BlobEvent)>,
     }
 
     impl Recording {
-        pub fn start(fps: f64) -> Result<Self, String> {
+        /// Films the page's canvas, or with `frames` a new canvas of that size.
+        pub fn start(frames: Option<(u32, u32)>, fps: f64) -> Result<Self, String> {
             let fail = |what: &str| format!("cannot record a video: {what}");
-            let canvas: web_sys::HtmlCanvasElement = web_sys::window()
+            let document = web_sys::window()
                 .and_then(|w| w.document())
-                .and_then(|d| d.get_element_by_id(crate::platform::CANVAS_ID))
+                .ok_or_else(|| fail("no document"))?;
+            let element = match frames {
+                None => document.get_element_by_id(crate::platform::CANVAS_ID),
+                Some(_) => document.create_element("canvas").ok(),
+            };
+            let canvas: web_sys::HtmlCanvasElement = element
                 .and_then(|e| e.dyn_into().ok())
                 .ok_or_else(|| fail("no canvas"))?;
+            let painter = match frames {
+                None => None,
+                Some((w, h)) => {
+                    canvas.set_width(w);
+                    canvas.set_height(h);
+                    let context = canvas
+                        .get_context("2d")
+                        .ok()
+                        .flatten()
+                        .and_then(|c| c.dyn_into().ok())
+                        .ok_or_else(|| fail("no 2D canvas"))?;
+                    Some(context)
+                }
+            };
             let stream = canvas
                 .capture_stream_with_frame_request_rate(fps)
                 .map_err(|_| fail("the canvas cannot be captured"))?;
@@ -80,19 +139,43 @@ mod web {
                 .start_with_time_slice(500)
                 .map_err(|_| fail("the recorder did not start"))?;
             Ok(Self {
+                painter,
                 recorder,
                 chunks,
                 _on_data: on_data,
             })
         }
 
-        pub fn finish(self, name: &str) {
+        pub fn push_frame(&self, width: u32, height: u32, rgba: &[u8]) -> Result<(), String> {
+            let painter = self
+                .painter
+                .as_ref()
+                .ok_or("this recording films the page, not frames")?;
+            let image = web_sys::ImageData::new_with_u8_clamped_array_and_sh(
+                wasm_bindgen::Clamped(rgba),
+                width,
+                height,
+            )
+            .map_err(|e| format!("a recorded frame: {}", crate::platform::js_error(&e)))?;
+            painter
+                .put_image_data(&image, 0.0, 0.0)
+                .map_err(|e| format!("a recorded frame: {}", crate::platform::js_error(&e)))
+        }
+
+        /// Stops; with `name` the video downloads as it.
+        pub fn finish(self, name: Option<&str>) {
             let Self {
+                painter: _,
                 recorder,
                 chunks,
                 _on_data,
             } = self;
-            let name = name.to_owned();
+            let Some(name) = name.map(str::to_owned) else {
+                // Nothing calls the handler once it is gone.
+                recorder.set_ondataavailable(None);
+                let _ = recorder.stop();
+                return;
+            };
             let on_stop = Closure::once_into_js(move |_: web_sys::Event| {
                 // The last chunk arrived before `stop`.
                 drop(_on_data);

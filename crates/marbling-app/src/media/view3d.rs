@@ -5,12 +5,16 @@
 //! sharp edges on the left at any zoom, blur on the right in close-up (Lu et al. 2012,
 //! figures 6–7). Frames are drawn only when the design, camera or size change; while
 //! the camera moves they take one sample per pixel, then antialiased once it stops.
+//! *Turn* spins the camera about the object at a chosen speed, *dolly* moves it in or
+//! out, and *Record* films one whole turn of the pane (antialiased frames, read back and
+//! handed to the recorder as they are drawn) to `marbling-3d-turn.webm`.
 
 use crate::gpu::canvas_gpu::CANVAS_FORMAT;
+use crate::media::recorder::Recorder;
 use eframe::egui_wgpu;
-use marbling_core::view3d::{Camera, MAX_ZOOM, Shape, View3d};
+use marbling_core::view3d::{Camera, MAX_DOLLY, MAX_ZOOM, MIN_DOLLY, Shape, View3d};
 use marbling_core::{Antialias, Design};
-use marbling_gpu::{ExactRenderer, PreparedDesign, RenderTarget, View3dRenderer};
+use marbling_gpu::{ExactRenderer, PendingRead, PreparedDesign, RenderTarget, View3dRenderer};
 
 /// Side of the baked texture of the comparison, pixels (the paper's figure 6).
 pub const COMPARE_TEXTURE: u32 = 2048;
@@ -18,6 +22,29 @@ pub const COMPARE_TEXTURE: u32 = 2048;
 const TURN_PER_POINT: f64 = 0.4;
 /// Largest zoom the window offers (close enough to see a texel of an 8000² texture).
 const WINDOW_MAX_ZOOM: f64 = 2000.0;
+/// Fastest turn offered, degrees per second either way.
+pub const MAX_TURN_SPEED: f64 = 180.0;
+/// Turn speed at the start, degrees per second.
+const DEFAULT_TURN_SPEED: f64 = 30.0;
+/// Longest step of a turn between two frames, seconds (a stalled frame does not jump).
+const MAX_TURN_STEP_S: f64 = 0.25;
+/// Frames per second a turn is filmed at.
+const RECORD_FPS: f64 = 30.0;
+/// The file a recorded turn downloads as.
+pub const TURN_VIDEO: &str = "marbling-3d-turn.webm";
+
+/// A turn being filmed.
+struct TurnRecording {
+    recorder: Recorder,
+    /// Pane size the video has, pixels.
+    size: [u32; 2],
+    /// Degrees turned since it began (one whole turn ends it).
+    turned: f64,
+    /// Frames handed to the recorder.
+    frames: u32,
+    /// The last frame drawn, on its way back from the GPU.
+    reading: Option<PendingRead>,
+}
 
 /// What one frame was drawn for (a new frame is drawn when it changes).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -54,6 +81,17 @@ pub struct View3dWindow {
     pub compare: bool,
     /// The design point the camera centres on (set by a click), or the object's centre.
     pub look_at: Option<marbling_core::Point>,
+    /// Camera distance as a share of the framing distance ([`Camera::dolly`]).
+    pub dolly: f64,
+    /// Whether the camera turns about the object by itself.
+    pub turning: bool,
+    /// Turn speed, degrees per second (negative: the other way).
+    pub turn_speed: f64,
+    /// UI clock of the last step of the turn, ms.
+    last_turn_ms: Option<f64>,
+    recording: Option<TurnRecording>,
+    /// What the last recording left (shown under the panes).
+    note: Option<String>,
     panes: Option<Panes>,
     drawn: Option<Drawn>,
     /// Frames drawn since the window opened (read by automation).
@@ -72,6 +110,12 @@ impl Default for View3dWindow {
             zoom: 1.0,
             compare: false,
             look_at: None,
+            dolly: 1.0,
+            turning: false,
+            turn_speed: DEFAULT_TURN_SPEED,
+            last_turn_ms: None,
+            recording: None,
+            note: None,
             panes: None,
             drawn: None,
             frames: 0,
@@ -84,7 +128,123 @@ impl View3dWindow {
     /// Puts the camera back where it starts.
     pub fn reset_camera(&mut self) {
         let d = Self::default();
-        (self.yaw, self.pitch, self.zoom, self.look_at) = (d.yaw, d.pitch, d.zoom, d.look_at);
+        (self.yaw, self.pitch, self.zoom, self.look_at, self.dolly) =
+            (d.yaw, d.pitch, d.zoom, d.look_at, d.dolly);
+    }
+
+    /// The `data-view3d` hook: the camera and the turn, as JSON.
+    pub fn hook(&self) -> Option<String> {
+        self.open.then(|| {
+            serde_json::json!({
+                "shape": self.shape.name(),
+                "yaw": self.yaw,
+                "pitch": self.pitch,
+                "zoom": self.zoom,
+                "dolly": self.dolly,
+                "turning": self.turning,
+                "speed": self.turn_speed,
+                "recording": self.recording.as_ref().map(|r| {
+                    serde_json::json!({"turned": r.turned, "frames": r.frames})
+                }),
+            })
+            .to_string()
+        })
+    }
+
+    /// Turns the camera by the time passed since the last frame (at most
+    /// [`MAX_TURN_STEP_S`]); true while it turns.
+    fn step_turn(&mut self, ctx: &egui::Context) -> bool {
+        if !self.turning {
+            self.last_turn_ms = None;
+            return false;
+        }
+        let now = crate::platform::now_ms();
+        let dt = self.last_turn_ms.map_or(0.0, |last| {
+            ((now - last) / 1000.0).clamp(0.0, MAX_TURN_STEP_S)
+        });
+        self.last_turn_ms = Some(now);
+        let step = self.turn_speed * dt;
+        self.yaw = (self.yaw + step).rem_euclid(360.0);
+        if let Some(r) = &mut self.recording {
+            r.turned += step.abs();
+        }
+        ctx.request_repaint();
+        true
+    }
+
+    /// Starts filming one turn of the pane of `size` pixels (turning it if it stands).
+    fn start_recording(&mut self, size: [u32; 2]) {
+        match Recorder::start_frames(size[0], size[1], RECORD_FPS) {
+            Ok(recorder) => {
+                if self.turn_speed == 0.0 {
+                    self.turn_speed = DEFAULT_TURN_SPEED;
+                }
+                self.turning = true;
+                self.note = None;
+                self.recording = Some(TurnRecording {
+                    recorder,
+                    size,
+                    turned: 0.0,
+                    frames: 0,
+                    reading: None,
+                });
+            }
+            Err(e) => self.error = Some(e),
+        }
+    }
+
+    /// Ends the recording; its video downloads (`whole`: after one whole turn), with a
+    /// note saying so, unless no frame came back in time.
+    fn finish_recording(&mut self, whole: bool) {
+        let Some(r) = self.recording.take() else {
+            return;
+        };
+        if r.frames == 0 {
+            r.recorder.discard();
+            self.note = Some(
+                "the recording ended before a frame came back from the GPU: nothing to save"
+                    .to_owned(),
+            );
+            return;
+        }
+        r.recorder.finish(TURN_VIDEO);
+        self.note = Some(if whole {
+            format!("recorded one turn: {TURN_VIDEO}")
+        } else {
+            format!("recording stopped after {:.0}°: {TURN_VIDEO}", r.turned)
+        });
+    }
+
+    /// Hands the recording a frame that came back from the GPU, and ends it after one
+    /// whole turn.
+    fn feed_recording(&mut self, device: &wgpu::Device) {
+        let Some(r) = &mut self.recording else {
+            return;
+        };
+        // Native backends deliver the map from `poll`; on the web it is a no-op.
+        let _ = device.poll(wgpu::PollType::Poll);
+        if let Some(reading) = &r.reading {
+            let [w, h] = r.size;
+            let mut rgba = Vec::with_capacity((w * h * 4) as usize);
+            match reading.rows(w, h, |_, row| rgba.extend_from_slice(row)) {
+                None => {}
+                Some(outcome) => {
+                    r.reading = None;
+                    let pushed = outcome
+                        .map_err(|e| e.to_string())
+                        .and_then(|()| r.recorder.push_frame(w, h, &rgba));
+                    if let Err(e) = pushed {
+                        self.error = Some(format!("recording the turn failed: {e}"));
+                        self.finish_recording(false);
+                        return;
+                    }
+                    r.frames += 1;
+                }
+            }
+        }
+        if r.turned >= 360.0 {
+            self.finish_recording(true);
+        }
     }
 
     /// The 3D view of a pane of `size` pixels.
@@ -96,6 +256,7 @@ impl View3dWindow {
                 pitch: Some(self.pitch),
                 zoom: self.zoom,
                 look_at: self.look_at,
+                dolly: self.dolly,
             },
             width: size[0],
             height: size[1],
@@ -120,19 +281,34 @@ impl View3dWindow {
         let mut open = self.open;
         // It opens at the window's top right, over the canvas: the panel's controls
         // (Save, Export, the history) stay in reach.
-        let corner = ctx.content_rect().right_top() + egui::vec2(-8.0, 8.0);
-        egui::Window::new("3D view")
+        let screen = ctx.content_rect();
+        let corner = screen.right_top() + egui::vec2(-8.0, 8.0);
+        // On a phone it fits the screen's width.
+        let widest = (screen.width() - 16.0).max(200.0);
+        let mut window = egui::Window::new("3D view")
             .open(&mut open)
             .pivot(egui::Align2::RIGHT_TOP)
             .default_pos(corner)
-            .default_width(560.0)
+            .default_width(560.0_f32.min(widest))
+            .max_width(widest)
             .resizable(true)
-            .show(ctx, |ui| {
-                self.contents(ui, frame, design, design_key, controls)
-            });
+            .constrain(true);
+        if screen.width() < 600.0 {
+            // A phone: pinned across the top of the screen, as wide as it.
+            window = window
+                .anchor(egui::Align2::RIGHT_TOP, egui::vec2(-8.0, 8.0))
+                .resizable(false)
+                .min_width(widest)
+                .max_width(widest);
+        }
+        window.show(ctx, |ui| {
+            self.contents(ui, frame, design, design_key, controls)
+        });
         self.open = open;
         if !self.open {
             // Frees the GPU memory of the panes.
+            self.finish_recording(false);
+            self.turning = false;
             self.panes = None;
             self.drawn = None;
         }
@@ -170,8 +346,59 @@ impl View3dWindow {
                 self.reset_camera();
             }
         });
-        ui.label(
-            "Drag to turn · click to centre a spot · wheel or pinch to zoom · double-click to reset",
+        let mut record = false;
+        ui.horizontal_wrapped(|ui| {
+            let r = ui
+                .toggle_value(&mut self.turning, "Turn")
+                .on_hover_text("Spin the camera about the object at the speed beside it");
+            controls.push(("view3d-turn".into(), r.rect));
+            let r = ui
+                .add(
+                    egui::Slider::new(&mut self.turn_speed, -MAX_TURN_SPEED..=MAX_TURN_SPEED)
+                        .suffix("°/s")
+                        .text("speed"),
+                )
+                .on_hover_text("Degrees a second; below 0 it turns the other way");
+            controls.push(("view3d-turn-speed".into(), r.rect));
+            let label = if self.recording.is_some() {
+                "■ Stop recording"
+            } else {
+                "Record a turn"
+            };
+            let r = ui
+                .add_enabled(
+                    cfg!(target_arch = "wasm32") || self.recording.is_some(),
+                    egui::Button::new(label),
+                )
+                .on_hover_text(format!(
+                    "Films one whole turn of the object to {TURN_VIDEO}"
+                ))
+                .on_disabled_hover_text(
+                    "Recording needs the web app; `marbling render-3d --turn 360` writes a loop",
+                );
+            controls.push(("view3d-record".into(), r.rect));
+            record = r.clicked();
+        });
+        // Its own row: a phone's width holds one slider beside a button, not two.
+        ui.horizontal_wrapped(|ui| {
+            let r = ui
+                .add(
+                    egui::Slider::new(&mut self.dolly, MIN_DOLLY..=MAX_DOLLY)
+                        .logarithmic(true)
+                        .text("dolly"),
+                )
+                .on_hover_text(
+                    "Moves the camera in (below 1) or out: the object grows or shrinks and \
+                     its perspective changes, unlike zoom",
+                );
+            controls.push(("view3d-dolly".into(), r.rect));
+        });
+        ui.add(
+            egui::Label::new(
+                "Drag to turn · click to centre a spot · wheel or pinch to zoom · \
+                 double-click to reset",
+            )
+            .wrap(),
         );
         let Some(rs) = frame.wgpu_render_state() else {
             ui.label("The 3D view needs the GPU renderer.");
@@ -181,14 +408,27 @@ impl View3dWindow {
         let avail = ui.available_size();
         let panes = if self.compare { 2.0 } else { 1.0 };
         let gap = 6.0;
-        let width = ((avail.x - gap * (panes - 1.0)) / panes).clamp(120.0, 1400.0);
+        // Never wider than the screen (a window sized by its content would keep growing).
+        let room = avail.x.min(ui.ctx().content_rect().width() - 40.0);
+        let width = ((room - gap * (panes - 1.0)) / panes).clamp(120.0, 1400.0);
         let height = (width * 0.75).min(avail.y.max(160.0)).max(100.0);
         let size_pt = egui::vec2(width, height);
         let size_px = [
             (size_pt.x * ppp).round().max(16.0) as u32,
             (size_pt.y * ppp).round().max(16.0) as u32,
         ];
-        let mut interacting = false;
+        if record {
+            if self.recording.is_some() {
+                self.finish_recording(false);
+            } else {
+                self.start_recording(size_px);
+            }
+        }
+        if self.recording.as_ref().is_some_and(|r| r.size != size_px) {
+            self.error = Some("the pane changed size: the recording stopped".to_owned());
+            self.finish_recording(false);
+        }
+        let mut interacting = self.step_turn(ui.ctx());
         let textures = self.ensure_panes(rs, size_px);
         ui.horizontal(|ui| {
             for (i, tex) in textures.iter().take(panes as usize).enumerate() {
@@ -201,11 +441,16 @@ impl View3dWindow {
         if let Some(e) = &self.error {
             ui.colored_label(egui::Color32::from_rgb(230, 90, 80), e);
         }
-        let antialias = if interacting {
+        if let Some(note) = &self.note {
+            ui.label(note);
+        }
+        // A recording takes antialiased frames; a moving camera one sample per pixel.
+        let antialias = if interacting && self.recording.is_none() {
             Antialias::None
         } else {
             Antialias::Rgss
         };
+        self.feed_recording(&rs.device);
         self.draw(rs, design, design_key, size_px, antialias);
     }
 
@@ -368,7 +613,20 @@ impl View3dWindow {
                 let mut pass = panes.targets[i].begin_pass(&mut encoder);
                 panes.renderers[i].draw(device, &mut pass, &prepared);
             }
-            queue.submit([encoder.finish()]);
+            // The exact pane's frame goes to a recording that has none on its way.
+            match &mut self.recording {
+                Some(r) if i == 0 && r.reading.is_none() => {
+                    r.reading = Some(PendingRead::start(
+                        device,
+                        queue,
+                        encoder,
+                        &panes.targets[0],
+                    ));
+                }
+                _ => {
+                    queue.submit([encoder.finish()]);
+                }
+            }
         }
         panes.prepared = Some((design_key, prepared));
         self.drawn = Some(now);

@@ -14,8 +14,7 @@ use crate::platform;
 use crate::shell::mode::Mode;
 use marbling_core::print::Print;
 use marbling_core::{Antialias, Design, RgbaImage, Window, output_size};
-use marbling_gpu::{ExactRenderer, PreparedDesign, RenderTarget, View, copy_to_buffer, tile_grid};
-use std::sync::{Arc, Mutex};
+use marbling_gpu::{ExactRenderer, PendingRead, PreparedDesign, RenderTarget, View, tile_grid};
 
 /// Format of the export tiles: the shader sRGB-encodes into it itself, like the CPU.
 const EXPORT_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8Unorm;
@@ -91,14 +90,10 @@ pub enum ExportStep {
 type Tile = (u32, u32, u32, u32);
 
 /// The outcome of a tile's buffer mapping, filled in by wgpu's callback.
-type MapSlot = Arc<Mutex<Option<Result<(), wgpu::BufferAsyncError>>>>;
-
 /// A tile drawn and copied, waiting for its buffer to map.
 struct InFlight {
     tile: Tile,
-    buffer: wgpu::Buffer,
-    padded: u32,
-    mapped: MapSlot,
+    read: PendingRead,
 }
 
 /// Longest side of an export in the app, pixels (the CLI streams any size).
@@ -240,14 +235,18 @@ impl PngExport {
         // Native backends deliver map callbacks from `poll`; on the web it is a no-op.
         let _ = device.poll(wgpu::PollType::Poll);
         if let Some(flight) = &self.in_flight {
-            let outcome = flight.mapped.lock().ok().and_then(|mut m| m.take());
+            let image = self.image.as_mut().ok_or("export state lost")?;
+            let (x0, y0, w, h) = flight.tile;
+            let row_bytes = image.width as usize * 4;
+            // Each row of the tile into its place in the image.
+            let outcome = flight.read.rows(w, h, |y, row| {
+                let dst = (y0 + y) as usize * row_bytes + x0 as usize * 4;
+                image.pixels[dst..dst + row.len()].copy_from_slice(row);
+            });
             match outcome {
                 None => return Ok(self.progress()),
                 Some(Err(e)) => return Err(format!("reading the export back failed: {e}")),
-                Some(Ok(())) => {
-                    let flight = self.in_flight.take().ok_or("export state lost")?;
-                    self.collect(&flight)?;
-                }
+                Some(Ok(())) => self.in_flight = None,
             }
         }
         if self.drawing.is_none() && self.next < self.tiles.len() {
@@ -316,43 +315,9 @@ impl PngExport {
             return;
         }
         let tile = *tile;
-        let (buffer, padded) = copy_to_buffer(device, &mut encoder, target);
-        queue.submit([encoder.finish()]);
+        let read = PendingRead::start(device, queue, encoder, target);
         self.drawing = None;
-        let mapped: MapSlot = Arc::default();
-        let slot = mapped.clone();
-        buffer.map_async(wgpu::MapMode::Read, .., move |r| {
-            if let Ok(mut s) = slot.lock() {
-                *s = Some(r);
-            }
-        });
-        self.in_flight = Some(InFlight {
-            tile,
-            buffer,
-            padded,
-            mapped,
-        });
-    }
-
-    /// Copies a mapped tile into the image.
-    fn collect(&mut self, flight: &InFlight) -> Result<(), String> {
-        let image = self.image.as_mut().ok_or("export state lost")?;
-        let (x0, y0, w, h) = flight.tile;
-        {
-            let data = flight
-                .buffer
-                .get_mapped_range(..)
-                .map_err(|e| format!("reading the export back failed: {e}"))?;
-            let row_bytes = image.width as usize * 4;
-            for y in 0..h as usize {
-                let src = y * flight.padded as usize;
-                let dst = (y0 as usize + y) * row_bytes + x0 as usize * 4;
-                let n = w as usize * 4;
-                image.pixels[dst..dst + n].copy_from_slice(&data[src..src + n]);
-            }
-        }
-        flight.buffer.unmap();
-        Ok(())
+        self.in_flight = Some(InFlight { tile, read });
     }
 }
 
