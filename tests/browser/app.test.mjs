@@ -64,57 +64,61 @@ for (const backend of Object.keys(BACKENDS)) {
 
     test('the 3D view shows the design on a vase, every pixel walked by the GPU', async () => {
       const { page, context, errors } = await open();
-      await clickControl(page, 'view3d');
-      await page.waitForFunction(() => Number(document.body.dataset.view3dFrames) >= 1, null, { timeout: READY_MS });
-      await page.mouse.move(2, 2);
-      await page.waitForTimeout(300);
-      const pane = (await controls(page))['view3d-pane-0'];
-      assert.ok(pane, 'no 3D pane');
-      const img = decode(await page.screenshot({ clip: { x: pane.x, y: pane.y, width: pane.w, height: pane.h }, timeout: READY_MS }));
-      const at = (fx, fy) => {
-        const i = (Math.floor(fy * img.height) * img.width + Math.floor(fx * img.width)) * 4;
-        return [img.data[i], img.data[i + 1], img.data[i + 2]];
-      };
-      // The corners are the backdrop (dark grey, r ≈ g ≈ b); the vase in the middle
-      // carries the stone design's colours: not a blank pane.
-      const corner = at(0.02, 0.02);
-      assert.ok(corner[0] < 90 && Math.abs(corner[0] - corner[2]) < 12, `corner ${corner}`);
-      const colours = new Set();
-      for (let y = 0.2; y < 0.8; y += 0.02) for (let x = 0.42; x < 0.58; x += 0.02) colours.add(at(x, y).join());
-      assert.ok(colours.size > 8, `only ${colours.size} colours on the vase`);
-      if (backend === 'webgpu') await page.screenshot({ path: path.join(SHOTS, 'view3d-vase.png'), timeout: READY_MS });
+      // Closed whatever happens: a turning view left open would starve the next tests.
+      try {
+        await clickControl(page, 'view3d');
+        await page.waitForFunction(() => Number(document.body.dataset.view3dFrames) >= 1, null, { timeout: READY_MS });
+        await page.mouse.move(2, 2);
+        await page.waitForTimeout(300);
+        const pane = (await controls(page))['view3d-pane-0'];
+        assert.ok(pane, 'no 3D pane');
+        const img = decode(await page.screenshot({ clip: { x: pane.x, y: pane.y, width: pane.w, height: pane.h }, timeout: READY_MS }));
+        const at = (fx, fy) => {
+          const i = (Math.floor(fy * img.height) * img.width + Math.floor(fx * img.width)) * 4;
+          return [img.data[i], img.data[i + 1], img.data[i + 2]];
+        };
+        // The corners are the backdrop (dark grey, r ≈ g ≈ b); the vase in the middle
+        // carries the stone design's colours: not a blank pane.
+        const corner = at(0.02, 0.02);
+        assert.ok(corner[0] < 90 && Math.abs(corner[0] - corner[2]) < 12, `corner ${corner}`);
+        const colours = new Set();
+        for (let y = 0.2; y < 0.8; y += 0.02) for (let x = 0.42; x < 0.58; x += 0.02) colours.add(at(x, y).join());
+        assert.ok(colours.size > 8, `only ${colours.size} colours on the vase`);
+        if (backend === 'webgpu') await page.screenshot({ path: path.join(SHOTS, 'view3d-vase.png'), timeout: READY_MS });
 
-      // Turn: the camera spins by itself, and the pane changes with it.
-      const view3d = async () => JSON.parse(await attr(page, 'data-view3d'));
-      const still = await view3d();
-      assert.equal(still.turning, false);
-      await clickControl(page, 'view3d-turn');
-      await page.waitForFunction((y) => {
-        const v = JSON.parse(document.body.dataset.view3d);
-        return v.turning && Math.abs(v.yaw - y) > 5;
-      }, still.yaw, { timeout: READY_MS });
-      const turned = decode(await page.screenshot({ clip: { x: pane.x, y: pane.y, width: pane.w, height: pane.h }, timeout: READY_MS }));
-      assert.ok(differing(img, turned, 24) > 0.02, 'the turning vase looks the same');
-      if (backend === 'webgpu') {
-        // The speed slider's rail at its right end: nearly the fastest turn. Record
-        // films the turning pane; Stop ends it early (after 2 frames came back from the
-        // GPU) and the video downloads.
-        const speed = (await controls(page))['view3d-turn-speed'];
-        await page.mouse.click(speed.x + 96, speed.y + speed.h / 2);
-        await page.waitForFunction(() => JSON.parse(document.body.dataset.view3d).speed > 120, null, { timeout: READY_MS });
-        const t0 = Date.now();
-        await clickControl(page, 'view3d-record');
-        await page.waitForFunction(() => JSON.parse(document.body.dataset.view3d).recording?.frames >= 2, null, { timeout: READY_MS });
-        const video = await download(page, 'view3d-record');
-        assert.equal(video.name, 'marbling-3d-turn.webm');
-        assert.deepEqual([...video.bytes.subarray(0, 4)], [0x1a, 0x45, 0xdf, 0xa3], 'an EBML (WebM) header');
-        console.log(`3D view: ${((Date.now() - t0) / 1000).toFixed(1)} s of a turn at ${(await view3d()).speed.toFixed(0)}°/s recorded, ${video.bytes.length} bytes`);
-        assert.ok(video.bytes.length > 1000, `a ${video.bytes.length}-byte video`);
-        assert.equal((await view3d()).recording, null);
+        // Turn: the camera spins by itself, and the pane changes with it.
+        const view3d = async () => JSON.parse(await attr(page, 'data-view3d'));
+        const still = await view3d();
+        assert.equal(still.turning, false);
+        await clickControl(page, 'view3d-turn');
+        await page.waitForFunction((y) => {
+          const v = JSON.parse(document.body.dataset.view3d);
+          return v.turning && Math.abs(v.yaw - y) > 5;
+        }, still.yaw, { timeout: READY_MS });
+        const turned = decode(await page.screenshot({ clip: { x: pane.x, y: pane.y, width: pane.w, height: pane.h }, timeout: READY_MS }));
+        assert.ok(differing(img, turned, 24) > 0.02, 'the turning vase looks the same');
+        if (backend === 'webgpu') {
+          // The speed slider's rail at its right end: nearly the fastest turn. Record
+          // films the turning pane; Stop ends it early (after 2 frames came back from the
+          // GPU) and the video downloads.
+          const speed = (await controls(page))['view3d-turn-speed'];
+          await page.mouse.click(speed.x + 96, speed.y + speed.h / 2);
+          await page.waitForFunction(() => JSON.parse(document.body.dataset.view3d).speed > 120, null, { timeout: READY_MS });
+          const t0 = Date.now();
+          await clickControl(page, 'view3d-record');
+          await page.waitForFunction(() => JSON.parse(document.body.dataset.view3d).recording?.frames >= 2, null, { timeout: READY_MS });
+          const video = await download(page, 'view3d-record');
+          assert.equal(video.name, 'marbling-3d-turn.webm');
+          assert.deepEqual([...video.bytes.subarray(0, 4)], [0x1a, 0x45, 0xdf, 0xa3], 'an EBML (WebM) header');
+          console.log(`3D view: ${((Date.now() - t0) / 1000).toFixed(1)} s of a turn at ${(await view3d()).speed.toFixed(0)}°/s recorded, ${video.bytes.length} bytes`);
+          assert.ok(video.bytes.length > 1000, `a ${video.bytes.length}-byte video`);
+          assert.equal((await view3d()).recording, null);
+        }
+        assert.equal(await attr(page, 'data-error'), null);
+        assert.deepEqual(errors, []);
+      } finally {
+        await context.close();
       }
-      assert.equal(await attr(page, 'data-error'), null);
-      assert.deepEqual(errors, []);
-      await context.close();
     });
 
     test('a drop click, a rake drag and undo change and restore the pixels', async () => {

@@ -31,16 +31,16 @@ impl Recorder {
     }
 
     /// Starts filming frames of `width` × `height` pixels handed to
-    /// [`Recorder::push_frame`], sampled `fps` times a second (a frame stays on until
-    /// the next arrives).
-    pub fn start_frames(width: u32, height: u32, fps: f64) -> Result<Self, String> {
+    /// [`Recorder::push_frame`]: each is one frame of the video, shown until the next
+    /// arrives (the video runs at the pace they come).
+    pub fn start_frames(width: u32, height: u32) -> Result<Self, String> {
         #[cfg(target_arch = "wasm32")]
         {
-            web::Recording::start(Some((width, height)), fps).map(|imp| Self { imp })
+            web::Recording::start(Some((width, height)), 0.0).map(|imp| Self { imp })
         }
         #[cfg(not(target_arch = "wasm32"))]
         {
-            let _ = (width, height, fps);
+            let _ = (width, height);
             Err(NEEDS_THE_WEB.into())
         }
     }
@@ -81,15 +81,20 @@ mod web {
     use wasm_bindgen::closure::Closure;
 
     pub struct Recording {
-        /// The canvas frames are drawn on, for a recording of frames.
-        painter: Option<web_sys::CanvasRenderingContext2d>,
+        /// The canvas frames are drawn on and its captured track (each frame is asked
+        /// for by hand), for a recording of frames.
+        painter: Option<(
+            web_sys::CanvasRenderingContext2d,
+            web_sys::CanvasCaptureMediaStreamTrack,
+        )>,
         recorder: web_sys::MediaRecorder,
         chunks: Rc<RefCell<Vec<web_sys::Blob>>>,
         _on_data: Closure<dyn FnMut(web_sys::BlobEvent)>,
     }
 
     impl Recording {
-        /// Films the page's canvas, or with `frames` a new canvas of that size.
+        /// Films the page's canvas `fps` times a second, or with `frames` a new canvas
+        /// of that size, a frame each time one is pushed (`fps` 0).
         pub fn start(frames: Option<(u32, u32)>, fps: f64) -> Result<Self, String> {
             let fail = |what: &str| format!("cannot record a video: {what}");
             let document = web_sys::window()
@@ -97,11 +102,28 @@ mod web {
                 .ok_or_else(|| fail("no document"))?;
             let element = match frames {
                 None => document.get_element_by_id(crate::platform::CANVAS_ID),
-                Some(_) => document.create_element("canvas").ok(),
+                Some(_) => {
+                    // In the page (the browser captures only a canvas it renders), unseen.
+                    let canvas = document.create_element("canvas").ok();
+                    if let (Some(c), Some(body)) = (&canvas, document.body()) {
+                        let _ = c.set_attribute(
+                            "style",
+                            "position:fixed;left:0;top:0;width:1px;height:1px;opacity:0;\
+                             pointer-events:none;z-index:-1",
+                        );
+                        let _ = body.append_child(c);
+                    }
+                    canvas
+                }
             };
             let canvas: web_sys::HtmlCanvasElement = element
                 .and_then(|e| e.dyn_into().ok())
                 .ok_or_else(|| fail("no canvas"))?;
+            // The page's canvas is sampled `fps` times a second; a canvas of frames
+            // gives a video frame exactly when one is drawn (rate 0: by hand).
+            let stream = canvas
+                .capture_stream_with_frame_request_rate(fps)
+                .map_err(|_| fail("the canvas cannot be captured"))?;
             let painter = match frames {
                 None => None,
                 Some((w, h)) => {
@@ -113,12 +135,14 @@ mod web {
                         .flatten()
                         .and_then(|c| c.dyn_into().ok())
                         .ok_or_else(|| fail("no 2D canvas"))?;
-                    Some(context)
+                    let track = stream
+                        .get_video_tracks()
+                        .get(0)
+                        .dyn_into()
+                        .map_err(|_| fail("the canvas gave no video track"))?;
+                    Some((context, track))
                 }
             };
-            let stream = canvas
-                .capture_stream_with_frame_request_rate(fps)
-                .map_err(|_| fail("the canvas cannot be captured"))?;
             let options = web_sys::MediaRecorderOptions::new();
             options.set_mime_type("video/webm");
             let recorder =
@@ -147,7 +171,7 @@ mod web {
         }
 
         pub fn push_frame(&self, width: u32, height: u32, rgba: &[u8]) -> Result<(), String> {
-            let painter = self
+            let (painter, track) = self
                 .painter
                 .as_ref()
                 .ok_or("this recording films the page, not frames")?;
@@ -159,26 +183,36 @@ mod web {
             .map_err(|e| format!("a recorded frame: {}", crate::platform::js_error(&e)))?;
             painter
                 .put_image_data(&image, 0.0, 0.0)
-                .map_err(|e| format!("a recorded frame: {}", crate::platform::js_error(&e)))
+                .map_err(|e| format!("a recorded frame: {}", crate::platform::js_error(&e)))?;
+            track.request_frame();
+            Ok(())
         }
 
         /// Stops; with `name` the video downloads as it.
         pub fn finish(self, name: Option<&str>) {
             let Self {
-                painter: _,
+                painter,
                 recorder,
                 chunks,
                 _on_data,
             } = self;
+            // The canvas of frames leaves the page once the recorder has stopped.
+            let canvas = painter.and_then(|(context, _)| context.canvas());
             let Some(name) = name.map(str::to_owned) else {
                 // Nothing calls the handler once it is gone.
                 recorder.set_ondataavailable(None);
                 let _ = recorder.stop();
+                if let Some(c) = canvas {
+                    c.remove();
+                }
                 return;
             };
             let on_stop = Closure::once_into_js(move |_: web_sys::Event| {
                 // The last chunk arrived before `stop`.
                 drop(_on_data);
+                if let Some(c) = canvas {
+                    c.remove();
+                }
                 let parts = js_sys::Array::new();
                 for b in chunks.borrow().iter() {
                     parts.push(b);

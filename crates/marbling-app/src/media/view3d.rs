@@ -28,8 +28,6 @@ pub const MAX_TURN_SPEED: f64 = 180.0;
 const DEFAULT_TURN_SPEED: f64 = 30.0;
 /// Longest step of a turn between two frames, seconds (a stalled frame does not jump).
 const MAX_TURN_STEP_S: f64 = 0.25;
-/// Frames per second a turn is filmed at.
-const RECORD_FPS: f64 = 30.0;
 /// The file a recorded turn downloads as.
 pub const TURN_VIDEO: &str = "marbling-3d-turn.webm";
 
@@ -174,7 +172,7 @@ impl View3dWindow {
 
     /// Starts filming one turn of the pane of `size` pixels (turning it if it stands).
     fn start_recording(&mut self, size: [u32; 2]) {
-        match Recorder::start_frames(size[0], size[1], RECORD_FPS) {
+        match Recorder::start_frames(size[0], size[1]) {
             Ok(recorder) => {
                 if self.turn_speed == 0.0 {
                     self.turn_speed = DEFAULT_TURN_SPEED;
