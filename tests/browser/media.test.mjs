@@ -130,8 +130,10 @@ describe('pictures and live video on webgl2', () => {
     // The loop plays 440 Hz, then 3520 Hz: band 2, then band 5 leads the meter.
     const led = new Set();
     const t0 = Date.now();
-    while (led.size < 2 && Date.now() - t0 < 40_000) {
-      const levels = ((await attr(page, 'data-audio')) ?? '').split(',').map(Number);
+    let heard = null;
+    while (led.size < 2 && Date.now() - t0 < 60_000) {
+      heard = await attr(page, 'data-audio');
+      const levels = (heard ?? '').split(',').map(Number);
       if (levels.length === 6) {
         const top = levels.indexOf(Math.max(...levels));
         const rest = Math.max(...levels.filter((_, k) => k !== top));
@@ -139,7 +141,7 @@ describe('pictures and live video on webgl2', () => {
       }
       await page.waitForTimeout(100);
     }
-    assert.deepEqual([...led].sort(), [2, 5], `bands seen leading: ${[...led]}`);
+    assert.deepEqual([...led].sort(), [2, 5], `bands seen leading: ${[...led]}; last levels ${heard}; error ${await attr(page, 'data-error')}`);
     // Band 3 (the pulsed 880 Hz) drops ink on its beats.
     await clickControl(page, 'sound-target-3');
     // The list opens after egui's sizing pass: a few frames on, its options are placed.
