@@ -114,13 +114,18 @@ fn render_3d_and_image_errors_name_the_problem() {
         (vec!["--look-at", "ten,10"], "design point like"),
         (vec!["--size", "0x5"], "expected a size"),
     ] {
-        let mut all = vec!["render-3d", design.as_str(), "-o", out.as_str()];
-        all.extend(args.iter().copied());
-        let o = marbling(&all, None);
-        let err = String::from_utf8_lossy(&o.stderr);
-        assert!(!o.status.success(), "{args:?}");
-        assert!(err.contains(expected), "{args:?}: {err}");
+        render_3d_fails(&design, &out, &args, expected);
     }
+}
+
+/// `marbling render-3d DESIGN -o OUT ARGS` fails with a message containing `expected`.
+fn render_3d_fails(design: &str, out: &str, args: &[&str], expected: &str) {
+    let mut all = vec!["render-3d", design, "-o", out];
+    all.extend(args.iter().copied());
+    let o = marbling(&all, None);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(!o.status.success(), "{args:?}");
+    assert!(err.contains(expected), "{args:?}: {err}");
 }
 
 #[test]
@@ -210,15 +215,8 @@ fn render_3d_turn_writes_a_loop_of_the_turned_views() {
         ),
         (vec!["--frames", "3"], "--turn"),
     ] {
-        let out = path(&dir, "bad.png");
-        let mut all = vec!["render-3d", design.as_str(), "-o", out.as_str()];
-        all.extend(args.iter().copied());
-        let o = marbling(&all, None);
-        let err = String::from_utf8_lossy(&o.stderr);
-        assert!(!o.status.success(), "{args:?}");
-        assert!(err.contains(expected), "{args:?}: {err}");
+        render_3d_fails(&design, &path(&dir, "bad.png"), &args, expected);
     }
     let mp4 = path(&dir, "turn.mp4");
-    let o = marbling(&["render-3d", &design, "-o", &mp4, "--turn", "90"], None);
-    assert!(String::from_utf8_lossy(&o.stderr).contains("-o must name a .png"));
+    render_3d_fails(&design, &mp4, &["--turn", "90"], "-o must name a .png");
 }
