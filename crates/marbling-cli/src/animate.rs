@@ -6,15 +6,12 @@
 
 use crate::backend::{Backend, gpu_renderer};
 use crate::input::{read_design, read_turbulence};
-use crate::loop_file::{Format, write_loop};
+use crate::loop_file::{Format, MAX_FRAMES, check_fps, check_frames, write_loop};
 use anyhow::{Context, Result, bail};
 use clap::Args;
 use indicatif::{ProgressBar, ProgressStyle};
 use marbling_core::making::design_at;
 use marbling_core::{Antialias, RenderOptions, RgbaImage, output_size, render};
-
-/// Most frames one animation may have.
-pub const MAX_FRAMES: usize = 3_600;
 
 /// Arguments of `marbling animate`.
 #[derive(Args)]
@@ -73,9 +70,7 @@ pub fn loop_order(made: usize, reverse: bool) -> Vec<usize> {
 /// Renders the frames and writes the animation.
 pub fn run(args: &AnimateArgs) -> Result<()> {
     let format = Format::from_path(&args.output)?;
-    if !(1..=60).contains(&args.fps) {
-        bail!("--fps must be 1 to 60, got {}", args.fps);
-    }
+    check_fps(args.fps)?;
     if args.width == 0 {
         bail!("--width must be at least 1");
     }
@@ -84,8 +79,8 @@ pub fn run(args: &AnimateArgs) -> Result<()> {
     }
     let design = read_design(&args.design)?;
     let turbulence = args.flow.as_deref().map(read_turbulence).transpose()?;
-    if turbulence.is_some() && !(2..=MAX_FRAMES).contains(&args.frames) {
-        bail!("--frames must be 2 to {MAX_FRAMES}, got {}", args.frames);
+    if turbulence.is_some() {
+        check_frames(args.frames)?;
     }
     let steps = design.gesture_sizes().len();
     let seconds = args.seconds.unwrap_or((steps as f64).max(2.0));

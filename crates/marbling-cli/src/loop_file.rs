@@ -6,6 +6,25 @@ use anyhow::{Context, Result, bail};
 use marbling_core::RgbaImage;
 use std::io::Write;
 
+/// Most frames one loop may have.
+pub const MAX_FRAMES: usize = 3_600;
+
+/// Refuses a frame count outside 2 to [`MAX_FRAMES`] (`--frames`).
+pub fn check_frames(frames: usize) -> Result<()> {
+    if !(2..=MAX_FRAMES).contains(&frames) {
+        bail!("--frames must be 2 to {MAX_FRAMES}, got {frames}");
+    }
+    Ok(())
+}
+
+/// Refuses a frame rate outside 1 to 60 frames per second (`--fps`).
+pub fn check_fps(fps: u32) -> Result<()> {
+    if !(1..=60).contains(&fps) {
+        bail!("--fps must be 1 to 60, got {fps}");
+    }
+    Ok(())
+}
+
 /// The file format, chosen by the output's extension.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Format {

@@ -5,7 +5,7 @@
 
 use crate::backend::{Backend, gpu_renderer};
 use crate::input::read_design;
-use crate::loop_file::{Format, write_loop};
+use crate::loop_file::{Format, check_fps, check_frames, write_loop};
 use crate::size::Size;
 use anyhow::{Context, Result, bail};
 use clap::Args;
@@ -93,6 +93,15 @@ fn parse_point(s: &str) -> Result<Point, String> {
     Ok(Point::new(x, y))
 }
 
+/// The GPU renderer for `--backend gpu`, none for the CPU.
+fn renderer(backend: Backend) -> Result<Option<marbling_gpu::GpuRenderer>> {
+    match backend {
+        Backend::Cpu => Ok(None),
+        Backend::Gpu => Ok(Some(gpu_renderer()?)),
+        Backend::Vector => bail!("render-3d draws with --backend cpu or gpu"),
+    }
+}
+
 /// Renders the view and writes the PNG.
 pub fn run(args: &Render3dArgs) -> Result<()> {
     let design = read_design(&args.design)?;
@@ -118,11 +127,7 @@ pub fn run(args: &Render3dArgs) -> Result<()> {
     }
     let mut out = std::fs::File::create(&args.output)
         .with_context(|| format!("cannot write '{}'", args.output))?;
-    let gpu = match args.backend {
-        Backend::Cpu => None,
-        Backend::Gpu => Some(gpu_renderer()?),
-        Backend::Vector => bail!("render-3d draws with --backend cpu or gpu"),
-    };
+    let gpu = renderer(args.backend)?;
     let mut times = Vec::new();
     let mut image = None;
     for _ in 0..args.repeat.max(1) {
@@ -166,9 +171,6 @@ pub fn run(args: &Render3dArgs) -> Result<()> {
     Ok(())
 }
 
-/// Most frames of a `--turn` loop.
-const MAX_TURN_FRAMES: usize = crate::animate::MAX_FRAMES;
-
 /// Writes the loop of `view` turning `turn` degrees over `args.frames` frames.
 fn write_turn(
     args: &Render3dArgs,
@@ -180,23 +182,12 @@ fn write_turn(
     if !(turn.is_finite() && turn.abs() <= 3600.0) {
         bail!("--turn must be a number of degrees from -3600 to 3600, got {turn}");
     }
-    if !(2..=MAX_TURN_FRAMES).contains(&args.frames) {
-        bail!(
-            "--frames must be 2 to {MAX_TURN_FRAMES}, got {}",
-            args.frames
-        );
-    }
-    if !(1..=60).contains(&args.fps) {
-        bail!("--fps must be 1 to 60, got {}", args.fps);
-    }
+    check_frames(args.frames)?;
+    check_fps(args.fps)?;
     format.check_size(view.width, view.height)?;
     let file = std::fs::File::create(&args.output)
         .with_context(|| format!("cannot write '{}'", args.output))?;
-    let gpu = match args.backend {
-        Backend::Cpu => None,
-        Backend::Gpu => Some(gpu_renderer()?),
-        Backend::Vector => bail!("render-3d draws with --backend cpu or gpu"),
-    };
+    let gpu = renderer(args.backend)?;
     let n = args.frames;
     let start = Instant::now();
     write_loop(

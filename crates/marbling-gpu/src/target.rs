@@ -195,6 +195,8 @@ pub fn read_buffer(
 pub struct PendingRead {
     buffer: wgpu::Buffer,
     padded: u32,
+    /// The target's size, pixels.
+    size: (u32, u32),
     mapped: MapSlot,
 }
 
@@ -221,6 +223,7 @@ impl PendingRead {
         Self {
             buffer,
             padded,
+            size: (target.width, target.height),
             mapped,
         }
     }
@@ -228,12 +231,8 @@ impl PendingRead {
     /// `None` while the map is pending; then hands each unpadded row (`width × 4`
     /// bytes, top to bottom) to `row(y, bytes)`, once. Native backends deliver the map
     /// from `device.poll`, which the caller runs.
-    pub fn rows(
-        &self,
-        width: u32,
-        height: u32,
-        mut row: impl FnMut(u32, &[u8]),
-    ) -> Option<Result<(), GpuError>> {
+    pub fn rows(&self, mut row: impl FnMut(u32, &[u8])) -> Option<Result<(), GpuError>> {
+        let (width, height) = self.size;
         let outcome = self.mapped.lock().ok().and_then(|mut m| m.take())?;
         let read = || -> Result<(), GpuError> {
             outcome.map_err(|e| GpuError::Readback(e.to_string()))?;

@@ -223,8 +223,8 @@ impl View3dWindow {
         let _ = device.poll(wgpu::PollType::Poll);
         if let Some(reading) = &r.reading {
             let [w, h] = r.size;
-            let mut rgba = Vec::with_capacity((w * h * 4) as usize);
-            match reading.rows(w, h, |_, row| rgba.extend_from_slice(row)) {
+            let mut rgba = Vec::new();
+            match reading.rows(|_, row| rgba.extend_from_slice(row)) {
                 None => {}
                 Some(outcome) => {
                     r.reading = None;
@@ -296,8 +296,7 @@ impl View3dWindow {
             window = window
                 .anchor(egui::Align2::RIGHT_TOP, egui::vec2(-8.0, 8.0))
                 .resizable(false)
-                .min_width(widest)
-                .max_width(widest);
+                .min_width(widest);
         }
         window.show(ctx, |ui| {
             self.contents(ui, frame, design, design_key, controls)

@@ -89,7 +89,6 @@ pub enum ExportStep {
 /// A tile of the output: x, y, width, height (pixels).
 type Tile = (u32, u32, u32, u32);
 
-/// The outcome of a tile's buffer mapping, filled in by wgpu's callback.
 /// A tile drawn and copied, waiting for its buffer to map.
 struct InFlight {
     tile: Tile,
@@ -236,10 +235,10 @@ impl PngExport {
         let _ = device.poll(wgpu::PollType::Poll);
         if let Some(flight) = &self.in_flight {
             let image = self.image.as_mut().ok_or("export state lost")?;
-            let (x0, y0, w, h) = flight.tile;
+            let (x0, y0, _, _) = flight.tile;
             let row_bytes = image.width as usize * 4;
             // Each row of the tile into its place in the image.
-            let outcome = flight.read.rows(w, h, |y, row| {
+            let outcome = flight.read.rows(|y, row| {
                 let dst = (y0 + y) as usize * row_bytes + x0 as usize * 4;
                 image.pixels[dst..dst + row.len()].copy_from_slice(row);
             });
