@@ -45,6 +45,7 @@ for (const backend of Object.keys(BACKENDS)) {
 
     const open = (hash = '') => openPage(browser, site, hash);
     const webgpuOnly = backend === 'webgpu' ? {} : { skip: 'the tile schedule does not depend on the backend' };
+    const webgl2Only = backend === 'webgl2' ? {} : { skip: 'storage and links do not touch the GPU: tested on webgl2' };
 
     test('loads without console errors on the expected backend', async () => {
       const { page, context, errors } = await open();
@@ -241,7 +242,7 @@ for (const backend of Object.keys(BACKENDS)) {
       await context.close();
     });
 
-    test('autosave survives a reload', async () => {
+    test('autosave survives a reload', webgl2Only, async () => {
       const { page, context } = await open();
       const s = await sheet(page);
       await page.mouse.click(s.x + 100, s.y + 100);
@@ -254,7 +255,7 @@ for (const backend of Object.keys(BACKENDS)) {
       await context.close();
     });
 
-    test('a malformed link shows an error and keeps the page usable', async () => {
+    test('a malformed link shows an error and keeps the page usable', webgl2Only, async () => {
       const { page, context } = await open('#d=this-is-not-a-design');
       const error = await attr(page, 'data-error');
       assert.match(error ?? '', /^share link: /);
