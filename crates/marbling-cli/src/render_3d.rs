@@ -9,7 +9,7 @@ use crate::loop_file::{Format, check_fps, check_frames, write_loop};
 use crate::size::Size;
 use anyhow::{Context, Result, bail};
 use clap::Args;
-use marbling_core::view3d::{Camera, Shape, View3d, render_3d};
+use marbling_core::view3d::{Camera, Displace, Shape, View3d, render_3d};
 use marbling_core::{Antialias, Point};
 use std::time::Instant;
 
@@ -44,6 +44,12 @@ pub struct Render3dArgs {
     /// camera moves in, the object looks larger and its perspective stronger.
     #[arg(long, default_value_t = 1.0)]
     dolly: f64,
+    /// Perlin displacement `S,F[,OCTAVES,LACUNARITY,PERSISTENCE]` (Kung 2019, ch. 3):
+    /// each surface point moves along its normal by S·fbm(F·p), S in object units (the
+    /// sphere's radius is 1; 0 to 0.5), F lattice cells per unit (0 to 12); one octave
+    /// unless given (lacunarity 2, persistence 0.5).
+    #[arg(long, value_name = "S,F", value_parser = parse_displace)]
+    displace: Option<Displace>,
     /// Write a loop of the camera turning this many degrees about the vertical axis
     /// (360: once round; negative: the other way), frame k at yaw + DEG·k/N.
     #[arg(
@@ -85,6 +91,27 @@ fn parse_shape(s: &str) -> Result<Shape, String> {
     })
 }
 
+fn parse_displace(s: &str) -> Result<Displace, String> {
+    let bad =
+        || format!("expected --displace S,F or S,F,OCTAVES,LACUNARITY,PERSISTENCE, got {s:?}");
+    let parts: Vec<&str> = s.split(',').map(str::trim).collect();
+    if parts.len() != 2 && parts.len() != 5 {
+        return Err(bad());
+    }
+    let number = |i: usize| -> Result<f64, String> { parts[i].parse().map_err(|_| bad()) };
+    let mut d = Displace {
+        amount: number(0)?,
+        frequency: number(1)?,
+        ..Displace::default()
+    };
+    if parts.len() == 5 {
+        d.octaves = parts[2].parse().map_err(|_| bad())?;
+        d.lacunarity = number(3)?;
+        d.persistence = number(4)?;
+    }
+    d.problem().map_or(Ok(d), Err)
+}
+
 fn parse_point(s: &str) -> Result<Point, String> {
     let bad = || format!("expected a design point like 512,384, got {s:?}");
     let (x, y) = s.split_once(',').ok_or_else(bad)?;
@@ -118,9 +145,13 @@ pub fn run(args: &Render3dArgs) -> Result<()> {
         height: args.size.height,
         antialias: args.aa,
         texture: args.texture,
+        displace: args.displace.unwrap_or_default(),
     };
     if let Err(e) = view.check(&design) {
         bail!("{e}");
+    }
+    if view.displace.is_active() && args.backend == Backend::Gpu {
+        bail!("--displace is drawn by the CPU backend only (leave out --backend gpu)");
     }
     if let Some(turn) = args.turn {
         return write_turn(args, &design, &view, turn);

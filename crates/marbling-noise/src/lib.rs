@@ -30,6 +30,7 @@ mod layer;
 mod maps;
 pub mod noise_gpu;
 mod perlin;
+mod perlin3;
 mod phasor;
 mod ramp;
 pub mod ranges;
@@ -65,6 +66,7 @@ pub use perlin::{
     GRADIENTS, PERLIN_DERIVATIVE_VARIANCE, PERLIN_GRADIENT_BOUND, PERLIN_VARIANCE, fade, perlin2,
     perlin2_periodic, perlin2_with_gradient,
 };
+pub use perlin3::{GRADIENTS3, PERLIN3_BOUND, PRIME_Z, fbm3, perlin3};
 pub use phasor::PhasorProfile;
 pub use ramp::{ColorRamp, PALETTES, Rgb, parse_hex};
 pub use render::{

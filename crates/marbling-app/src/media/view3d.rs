@@ -260,6 +260,7 @@ impl View3dWindow {
             height: size[1],
             antialias,
             texture,
+            displace: marbling_core::view3d::Displace::default(),
         }
     }
 

@@ -233,6 +233,7 @@ impl ReliefView {
             height: VIEW[1],
             antialias: Antialias::None,
             texture: None,
+            displace: marbling_core::view3d::Displace::default(),
         }
     }
 }

@@ -18,11 +18,15 @@
 //!   linear light, so a plane facing the camera shows the design's own colours.
 //! - Antialiasing: the design renderer's sample patterns and adaptive refinement
 //!   (where first-pass samples come from different sources), averaged in linear light.
+//! - Displacement: [`View3d::displace`] moves the design faces along their normals by
+//!   Perlin fBm (module `displace`).
 
+pub mod displace;
 mod relief;
 mod shapes;
 mod vec3;
 
+pub use displace::Displace;
 pub use relief::{Light, ReliefMap, render_relief};
 pub use shapes::{
     BOOK_DEPTH, Hit, Material, Object, PAGES, Shape, VASE_BISECTIONS, VASE_BOUND, VASE_STEPS,
@@ -107,6 +111,8 @@ pub struct View3d {
     /// `Some(n)`: sample the design baked into a raster of longest side n (bilinear)
     /// instead of walking every sample — the blur the exact view avoids.
     pub texture: Option<u32>,
+    /// Perlin displacement of the object's design faces.
+    pub displace: Displace,
 }
 
 /// Why a 3D view cannot be made.
@@ -130,6 +136,9 @@ pub enum View3dError {
     /// Texture size out of range.
     #[error("texture side must be 16 to {MAX_TEXTURE_SIDE}, got {0}")]
     Texture(u32),
+    /// Displacement out of range (the message names the field).
+    #[error("{0}")]
+    Displace(String),
     /// Baking the texture failed.
     #[error("cannot bake the texture: {0}")]
     Render(#[from] RenderError),
@@ -165,6 +174,7 @@ impl View3d {
         Object {
             shape: self.shape,
             aspect: f64::from(design.width) / f64::from(design.height),
+            displace: self.displace,
         }
     }
 
@@ -206,6 +216,9 @@ impl View3d {
             && !(16..=MAX_TEXTURE_SIDE).contains(&n)
         {
             return Err(View3dError::Texture(n));
+        }
+        if let Some(problem) = self.displace.problem() {
+            return Err(View3dError::Displace(problem));
         }
         Ok(())
     }

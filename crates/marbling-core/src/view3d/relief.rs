@@ -115,6 +115,7 @@ pub fn render_relief(map: &ReliefMap, light: Light, view: &View3d) -> RgbaImage 
     let object = Object {
         shape: Shape::Plane,
         aspect: 1.0,
+        displace: super::Displace::default(),
     };
     let rig = view.rig_for(&object, None);
     let to_light = light.direction();
@@ -174,6 +175,7 @@ mod tests {
             height: 48,
             antialias: Antialias::None,
             texture: None,
+            displace: crate::view3d::Displace::default(),
         }
     }
 

@@ -14,6 +14,7 @@
 //!   cover and (mirrored, as a wrap-around cover) on the back, pages on three sides
 //!   and a spine on the left.
 
+use super::displace::Displace;
 use super::vec3::Vec3;
 use std::f64::consts::PI;
 
@@ -124,9 +125,12 @@ pub struct Object {
     pub shape: Shape,
     /// Design width / height.
     pub aspect: f64,
+    /// The Perlin displacement of its design faces (none by default).
+    pub displace: Displace,
 }
 
-fn around(p: Vec3) -> f64 {
+/// The texture coordinate u of a point about the vertical axis.
+pub(super) fn around(p: Vec3) -> f64 {
     0.5 + p.x.atan2(p.z) / (2.0 * PI)
 }
 
@@ -148,6 +152,7 @@ impl Object {
     }
 
     /// Radius of a sphere about the origin holding the object.
+    /// (The undisplaced object's: a displacement adds [`Displace::reach`].)
     pub fn bound(&self) -> f64 {
         let (ex, ey) = self.extent();
         (ex * ex + ey * ey + BOOK_DEPTH * BOOK_DEPTH)
@@ -193,6 +198,7 @@ impl Object {
     /// The first hit of the ray from `o` along unit `d`, if any.
     pub fn hit(&self, o: Vec3, d: Vec3) -> Option<Hit> {
         let hit = match self.shape {
+            _ if self.displace.is_active() => self.displaced_hit(o, d),
             Shape::Plane => self.plane(o, d),
             Shape::Sphere => sphere(o, d),
             Shape::Cylinder => self.cylinder(o, d),

@@ -14,3 +14,4 @@ mod snapshots;
 mod snapshots_v2;
 mod snapshots_v3;
 mod view3d;
+mod view3d_displace;

@@ -25,6 +25,7 @@ fn view(shape: Shape, camera: Camera, size: (u32, u32)) -> View3d {
         height: size.1,
         antialias: Antialias::Rgss,
         texture: None,
+        displace: marbling_core::view3d::Displace::default(),
     }
 }
 

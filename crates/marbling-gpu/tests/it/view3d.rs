@@ -26,6 +26,7 @@ fn view(shape: Shape, yaw: f64, texture: Option<u32>) -> View3d {
         height: 64,
         antialias: Antialias::Rgss,
         texture,
+        displace: marbling_core::view3d::Displace::default(),
     }
 }
 

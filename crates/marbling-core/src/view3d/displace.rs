@@ -1,0 +1,382 @@
+//! Perlin displacement of the 3D view's objects (Kung 2019, ch. 3): every surface point p
+//! moves along its normal n to p′ = p + s·noise((p + o)·f)·n, the noise Perlin fBm
+//! ([`marbling_noise::fbm3`]), and the displaced surface's normal comes from finite
+//! differences as in the paper: displace p + ε·t and p + ε·b the same way and take
+//! n′ = normalize((P_t − P) × (P_b − P)). The design stays attached to the surface: a
+//! sample's design point is the texture coordinate of its undisplaced p.
+//!
+//! A ray meets the displaced object by a march: the object is a solid g(x) ≤ 0 whose
+//! design faces are moved out by the height h = s·noise at their foot point (for the
+//! vase, whose side is not a height field along the radius, the radial gap times the
+//! profile's cosine: the distance to first order in the slope), marched in
+//! [`DISPLACE_STEPS`] steps through its bounding sphere grown by s·[`PERLIN3_BOUND`]
+//! and refined by bisection. Features thinner than a step (1/192 of the sphere's
+//! diameter) can be missed. The plane, a sheet with no inside, is met where z − h
+//! changes sign over it. Keep in sync with `view3d.wgsl` in marbling-gpu.
+
+use super::shapes::{BOOK_DEPTH, Hit, Material, Object, Shape, around, vase_radius};
+use super::vec3::Vec3;
+use marbling_noise::{PERLIN3_BOUND, fbm3};
+use std::f64::consts::PI;
+use std::ops::RangeInclusive;
+
+/// Range of the amplitude s, object units (the sphere's radius is 1; the paper sweeps
+/// 0–0.5).
+pub const AMOUNT: RangeInclusive<f64> = 0.0..=0.5;
+/// Range of the frequency f, lattice cells per object unit (the paper sweeps 0–6).
+pub const FREQUENCY: RangeInclusive<f64> = 0.0..=12.0;
+/// Range of the fBm's octaves (the paper: one).
+pub const OCTAVES: RangeInclusive<u32> = 1..=6;
+/// Range of the fBm's lacunarity (frequency ratio of successive octaves).
+pub const LACUNARITY: RangeInclusive<f64> = 1.0..=4.0;
+/// Range of the fBm's persistence (amplitude ratio of successive octaves).
+pub const PERSISTENCE: RangeInclusive<f64> = 0.0..=1.0;
+/// Seed of the displacement noise.
+pub const SEED: u32 = 3;
+/// Steps of the march through the grown bounding sphere.
+pub const DISPLACE_STEPS: u32 = 192;
+/// Bisection steps refining a displaced hit.
+pub const DISPLACE_BISECTIONS: u32 = 24;
+/// The finite-difference step ε of the displaced normal, object units (the paper's
+/// 0.01 on its unit objects; a tenth of it for our higher frequencies).
+pub const NORMAL_STEP: f64 = 1e-3;
+
+/// A Perlin displacement; amount or frequency 0 leaves the object as it is.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Displace {
+    /// Amplitude s, object units, in [`AMOUNT`].
+    pub amount: f64,
+    /// Frequency f, lattice cells per object unit, in [`FREQUENCY`].
+    pub frequency: f64,
+    /// Octaves of the fBm, in [`OCTAVES`].
+    pub octaves: u32,
+    /// Lacunarity of the fBm, in [`LACUNARITY`].
+    pub lacunarity: f64,
+    /// Persistence of the fBm, in [`PERSISTENCE`].
+    pub persistence: f64,
+    /// Offset o added before scaling (animating it makes the surface flow), object units.
+    pub offset: [f64; 3],
+}
+
+impl Default for Displace {
+    fn default() -> Self {
+        Self {
+            amount: 0.0,
+            frequency: 2.0,
+            octaves: 1,
+            lacunarity: 2.0,
+            persistence: 0.5,
+            offset: [0.0; 3],
+        }
+    }
+}
+
+impl Displace {
+    /// True when the surface moves (amount and frequency both non-zero).
+    pub fn is_active(&self) -> bool {
+        self.amount != 0.0 && self.frequency != 0.0
+    }
+
+    /// What is out of range, as a message naming the field, or `None`.
+    pub fn problem(&self) -> Option<String> {
+        let in_range = |v: f64, r: &RangeInclusive<f64>| v.is_finite() && r.contains(&v);
+        if !in_range(self.amount, &AMOUNT) {
+            return Some(format!(
+                "displace amount must be a number from {} to {}, got {}",
+                AMOUNT.start(),
+                AMOUNT.end(),
+                self.amount
+            ));
+        }
+        if !in_range(self.frequency, &FREQUENCY) {
+            return Some(format!(
+                "displace frequency must be a number from {} to {}, got {}",
+                FREQUENCY.start(),
+                FREQUENCY.end(),
+                self.frequency
+            ));
+        }
+        if !OCTAVES.contains(&self.octaves) {
+            return Some(format!(
+                "displace octaves must be {} to {}, got {}",
+                OCTAVES.start(),
+                OCTAVES.end(),
+                self.octaves
+            ));
+        }
+        if !in_range(self.lacunarity, &LACUNARITY) {
+            return Some(format!(
+                "displace lacunarity must be a number from {} to {}, got {}",
+                LACUNARITY.start(),
+                LACUNARITY.end(),
+                self.lacunarity
+            ));
+        }
+        if !in_range(self.persistence, &PERSISTENCE) {
+            return Some(format!(
+                "displace persistence must be a number from {} to {}, got {}",
+                PERSISTENCE.start(),
+                PERSISTENCE.end(),
+                self.persistence
+            ));
+        }
+        if !self.offset.iter().all(|c| c.is_finite() && c.abs() <= 1e6) {
+            return Some("displace offset must be finite (at most 1e6)".to_owned());
+        }
+        None
+    }
+
+    /// The height h(p) = s·fbm((p + o)·f) of surface point p, object units;
+    /// |h| ≤ s·[`PERLIN3_BOUND`].
+    pub fn height(&self, p: Vec3) -> f64 {
+        let f = self.frequency;
+        let q = [
+            ((p.x + self.offset[0]) * f) as f32,
+            ((p.y + self.offset[1]) * f) as f32,
+            ((p.z + self.offset[2]) * f) as f32,
+        ];
+        let n = fbm3(
+            q,
+            self.octaves,
+            self.lacunarity as f32,
+            self.persistence as f32,
+            SEED,
+        );
+        self.amount * f64::from(n)
+    }
+
+    /// The farthest any point moves: s·[`PERLIN3_BOUND`].
+    pub fn reach(&self) -> f64 {
+        self.amount.abs() * f64::from(PERLIN3_BOUND)
+    }
+
+    /// The displaced point p + h(p)·n and the paper's finite-difference normal there.
+    pub fn moved(&self, p: Vec3, n: Vec3) -> (Vec3, Vec3) {
+        let t = {
+            let t = n.cross(Vec3::new(0.0, 1.0, 0.0));
+            if t.length() < 1e-6 {
+                Vec3::new(1.0, 0.0, 0.0)
+            } else {
+                t.normalized()
+            }
+        };
+        let b = n.cross(t);
+        let at = |q: Vec3| q + n * self.height(q);
+        let p0 = at(p);
+        let pt = at(p + t * NORMAL_STEP);
+        let pb = at(p + b * NORMAL_STEP);
+        let m = (pt - p0).cross(pb - p0).normalized();
+        (p0, if m.dot(n) < 0.0 { -m } else { m })
+    }
+}
+
+/// Which face of a displaced solid is nearest the surface at a point.
+#[derive(Clone, Copy, Debug)]
+enum Face {
+    /// A design face: its undisplaced foot point, unit normal and texture coordinates.
+    Design {
+        foot: Vec3,
+        normal: Vec3,
+        uv: (f64, f64),
+    },
+    /// A face left flat (caps, pages, spine): its material and normal.
+    Flat(Material, Vec3),
+}
+
+/// The larger of two (gap, face) pairs: the face of an intersection of solids.
+fn outer(a: (f64, Face), b: (f64, Face)) -> (f64, Face) {
+    if b.0 > a.0 { b } else { a }
+}
+
+/// A lathe's side at x: the radial foot at height y on radius `radius`, and its normal.
+fn lathe(x: Vec3, radius: f64, slope: f64) -> (f64, Vec3, Vec3) {
+    let rho = (x.x * x.x + x.z * x.z).sqrt();
+    let (sx, sz) = if rho > 1e-12 {
+        (x.x / rho, x.z / rho)
+    } else {
+        (0.0, 1.0)
+    };
+    let foot = Vec3::new(radius * sx, x.y, radius * sz);
+    let normal = Vec3::new(sx, -slope, sz).normalized();
+    (rho - radius, foot, normal)
+}
+
+impl Object {
+    /// The displaced solid's gap at x (≤ 0 inside, about a distance near the surface)
+    /// and the face it belongs to. Not for the plane.
+    fn displaced_gap(&self, x: Vec3) -> (f64, Face) {
+        let d = &self.displace;
+        let a = self.aspect;
+        match self.shape {
+            Shape::Sphere => {
+                let r = x.length().max(1e-12);
+                let foot = x * (1.0 / r);
+                let uv = (around(foot), foot.y.clamp(-1.0, 1.0).acos() / PI);
+                let face = Face::Design {
+                    foot,
+                    normal: foot,
+                    uv,
+                };
+                (r - 1.0 - d.height(foot), face)
+            }
+            Shape::Cylinder => {
+                let h = self.cylinder_half_height();
+                let (gap, foot, normal) = lathe(x, 1.0, 0.0);
+                let uv = (around(foot), (h - foot.y) / (2.0 * h));
+                let side = (gap - d.height(foot), Face::Design { foot, normal, uv });
+                let cap = Face::Flat(Material::Paper, Vec3::new(0.0, x.y.signum(), 0.0));
+                outer(side, (x.y.abs() - h, cap))
+            }
+            Shape::Vase => {
+                let y = x.y.clamp(-1.0, 1.0);
+                let slope = (vase_radius(y + 1e-4) - vase_radius(y - 1e-4)) / 2e-4;
+                let (gap, foot, normal) = lathe(x, vase_radius(y), slope);
+                let cosine = 1.0 / (1.0 + slope * slope).sqrt();
+                let uv = (around(foot), (1.0 - y) / 2.0);
+                let side = (
+                    gap * cosine - d.height(foot),
+                    Face::Design { foot, normal, uv },
+                );
+                let (material, up) = if x.y > 0.0 {
+                    (Material::Inside, 1.0)
+                } else {
+                    (Material::Paper, -1.0)
+                };
+                outer(
+                    side,
+                    (
+                        x.y.abs() - 1.0,
+                        Face::Flat(material, Vec3::new(0.0, up, 0.0)),
+                    ),
+                )
+            }
+            // The plane is a sheet, met by `sheet_hit`; as a solid it would be this book.
+            Shape::Book | Shape::Plane => {
+                let v = (1.0 - x.y) / 2.0;
+                let front = Vec3::new(x.x, x.y, BOOK_DEPTH);
+                let back = Vec3::new(x.x, x.y, -BOOK_DEPTH);
+                let covers = outer(
+                    (
+                        x.z - BOOK_DEPTH - d.height(front),
+                        Face::Design {
+                            foot: front,
+                            normal: Vec3::new(0.0, 0.0, 1.0),
+                            uv: ((x.x + a) / (2.0 * a), v),
+                        },
+                    ),
+                    (
+                        -x.z - BOOK_DEPTH - d.height(back),
+                        Face::Design {
+                            foot: back,
+                            normal: Vec3::new(0.0, 0.0, -1.0),
+                            uv: ((a - x.x) / (2.0 * a), v),
+                        },
+                    ),
+                );
+                let edge = if x.x < 0.0 {
+                    Material::Spine
+                } else {
+                    Material::Pages
+                };
+                let sides = outer(
+                    (
+                        x.x.abs() - a,
+                        Face::Flat(edge, Vec3::new(x.x.signum(), 0.0, 0.0)),
+                    ),
+                    (
+                        x.y.abs() - 1.0,
+                        Face::Flat(Material::Pages, Vec3::new(0.0, x.y.signum(), 0.0)),
+                    ),
+                );
+                outer(covers, sides)
+            }
+        }
+    }
+
+    /// The displaced sheet at x: z − h over the rectangle (`None` off it), the foot.
+    fn displaced_sheet(&self, x: Vec3) -> Option<(f64, Vec3)> {
+        let foot = Vec3::new(x.x, x.y, 0.0);
+        (x.x.abs() <= self.aspect && x.y.abs() <= 1.0)
+            .then(|| (x.z - self.displace.height(foot), foot))
+    }
+
+    /// The first hit of the ray from `o` along unit `d` on the displaced object.
+    pub(super) fn displaced_hit(&self, o: Vec3, d: Vec3) -> Option<Hit> {
+        let reach = self.displace.reach();
+        let radius = self.bound() + reach;
+        let b = o.dot(d);
+        let disc = b * b - (o.dot(o) - radius * radius);
+        if disc < 0.0 {
+            return None;
+        }
+        let (t0, t1) = ((-b - disc.sqrt()).max(0.0), -b + disc.sqrt());
+        if t1 <= t0 {
+            return None;
+        }
+        let step = (t1 - t0) / f64::from(DISPLACE_STEPS);
+        if self.shape == Shape::Plane {
+            return self.sheet_hit(o, d, t0, step);
+        }
+        let mut prev = t0;
+        for i in 1..=DISPLACE_STEPS {
+            let t = t0 + step * f64::from(i);
+            if self.displaced_gap(o + d * t).0 <= 0.0 {
+                let (mut lo, mut hi) = (prev, t);
+                for _ in 0..DISPLACE_BISECTIONS {
+                    let mid = 0.5 * (lo + hi);
+                    if self.displaced_gap(o + d * mid).0 > 0.0 {
+                        lo = mid;
+                    } else {
+                        hi = mid;
+                    }
+                }
+                return Some(match self.displaced_gap(o + d * hi).1 {
+                    Face::Design { foot, normal, uv } => Hit {
+                        t: hi,
+                        normal: self.displace.moved(foot, normal).1,
+                        material: Material::Design(uv.0, uv.1),
+                    },
+                    Face::Flat(material, normal) => Hit {
+                        t: hi,
+                        normal,
+                        material,
+                    },
+                });
+            }
+            prev = t;
+        }
+        None
+    }
+
+    fn sheet_hit(&self, o: Vec3, d: Vec3, t0: f64, step: f64) -> Option<Hit> {
+        let mut prev = self.displaced_sheet(o + d * t0).map(|(z, _)| (t0, z));
+        for i in 1..=DISPLACE_STEPS {
+            let t = t0 + step * f64::from(i);
+            let now = self.displaced_sheet(o + d * t).map(|(z, _)| (t, z));
+            if let (Some((lo, z0)), Some((hi, z1))) = (prev, now)
+                && (z0 > 0.0) != (z1 > 0.0)
+            {
+                let (mut lo, mut hi) = (lo, hi);
+                for _ in 0..DISPLACE_BISECTIONS {
+                    let mid = 0.5 * (lo + hi);
+                    let above = self.displaced_sheet(o + d * mid).is_some_and(|s| s.0 > 0.0);
+                    if above == (z0 > 0.0) {
+                        lo = mid;
+                    } else {
+                        hi = mid;
+                    }
+                }
+                let (_, foot) = self.displaced_sheet(o + d * hi)?;
+                let a = self.aspect;
+                let normal = self.displace.moved(foot, Vec3::new(0.0, 0.0, 1.0)).1;
+                return Some(Hit {
+                    t: hi,
+                    normal,
+                    material: Material::Design((foot.x + a) / (2.0 * a), (1.0 - foot.y) / 2.0),
+                });
+            }
+            prev = now;
+        }
+        None
+    }
+}
