@@ -150,9 +150,6 @@ pub fn run(args: &Render3dArgs) -> Result<()> {
     if let Err(e) = view.check(&design) {
         bail!("{e}");
     }
-    if view.displace.is_active() && args.backend == Backend::Gpu {
-        bail!("--displace is drawn by the CPU backend only (leave out --backend gpu)");
-    }
     if let Some(turn) = args.turn {
         return write_turn(args, &design, &view, turn);
     }

@@ -24,6 +24,13 @@ struct View3dParams {
     shading: vec4<f32>,
     // Vase bound radius, march steps, bisection steps, cylinder half-height.
     shape: vec4<f32>,
+    // Displacement: amplitude s (0: none), frequency f, octaves, lacunarity.
+    displace: vec4<f32>,
+    // Persistence, offset o (x, y, z).
+    displace_fbm: vec4<f32>,
+    // Radius of the march's bounding sphere (the object's plus s·bound), march steps,
+    // bisection steps, the normal's finite-difference step.
+    displace_march: vec4<f32>,
 }
 
 @group(1) @binding(0) var<uniform> view3d: View3dParams;
@@ -36,6 +43,8 @@ const MAT_PAPER: u32 = 1u;
 const MAT_PAGES: u32 = 2u;
 const MAT_SPINE: u32 = 3u;
 const MAT_INSIDE: u32 = 4u;
+// Seed of the displacement noise (marbling-core's view3d::displace::SEED).
+const DISPLACE_SEED: u32 = 3u;
 
 // A ray's hit: t < 0 for none.
 struct Hit3 {
@@ -230,9 +239,193 @@ fn hit_book(o: vec3<f32>, d: vec3<f32>) -> Hit3 {
     return Hit3(near, vec3<f32>(0.0, sign(p.y), 0.0), vec2<f32>(0.0), MAT_PAGES);
 }
 
+// The height s·fbm((p + o)·f) of surface point p.
+fn displace_height(p: vec3<f32>) -> f32 {
+    let q = (p + view3d.displace_fbm.yzw) * view3d.displace.y;
+    return view3d.displace.x * fbm3(q, u32(view3d.displace.z), view3d.displace.w, view3d.displace_fbm.x, DISPLACE_SEED);
+}
+
+// The displaced surface's normal at foot p (undisplaced normal n): displace p, p + ε·t
+// and p + ε·b the same way and cross (Kung 2019). One call of the noise, in a loop.
+fn displaced_normal(p: vec3<f32>, n: vec3<f32>) -> vec3<f32> {
+    var t = cross(n, vec3<f32>(0.0, 1.0, 0.0));
+    if length(t) < 1e-6 {
+        t = vec3<f32>(1.0, 0.0, 0.0);
+    } else {
+        t = normalize(t);
+    }
+    let b = cross(n, t);
+    let e = view3d.displace_march.w;
+    var moved: array<vec3<f32>, 3>;
+    for (var k = 0u; k < 3u; k++) {
+        var q = p;
+        if k == 1u {
+            q = p + t * e;
+        } else if k == 2u {
+            q = p + b * e;
+        }
+        moved[k] = q + n * displace_height(q);
+    }
+    let m = normalize(cross(moved[1] - moved[0], moved[2] - moved[0]));
+    if dot(m, n) < 0.0 {
+        return -m;
+    }
+    return m;
+}
+
+// A displaced object's gap at a point (≤ 0 inside; the plane's: z − h, 3e38 off its
+// rectangle) and the face nearest there: a design face (foot point, normal, uv) or a
+// flat one (material, normal).
+struct Gap {
+    g: f32,
+    material: u32,
+    foot: vec3<f32>,
+    normal: vec3<f32>,
+    uv: vec2<f32>,
+}
+
+fn outer(a: Gap, b: Gap) -> Gap {
+    if b.g > a.g {
+        return b;
+    }
+    return a;
+}
+
+fn flat_gap(g: f32, material: u32, normal: vec3<f32>) -> Gap {
+    return Gap(g, material, vec3<f32>(0.0), normal, vec2<f32>(0.0));
+}
+
+// The design face before the displacement, intersected with `flat` below.
+fn displaced_gap(x: vec3<f32>) -> Gap {
+    let shape = u32(view3d.lens.z);
+    let a = view3d.lens.y;
+    var side = Gap(0.0, MAT_DESIGN, vec3<f32>(x.x, x.y, 0.0), vec3<f32>(0.0, 0.0, 1.0), vec2<f32>((x.x + a) / (2.0 * a), (1.0 - x.y) / 2.0));
+    var flat = flat_gap(-3.0e38, MAT_PAPER, vec3<f32>(0.0));
+    if shape == 0u {
+        let r = max(length(x), 1e-12);
+        let foot = x / r;
+        side = Gap(r - 1.0, MAT_DESIGN, foot, foot, vec2<f32>(around(foot), acos(clamp(foot.y, -1.0, 1.0)) / PI));
+    } else if shape == 1u || shape == 2u {
+        var radius = 1.0;
+        var slope = 0.0;
+        var v = 0.0;
+        let y = clamp(x.y, -1.0, 1.0);
+        if shape == 1u {
+            radius = vase_radius(y);
+            slope = (vase_radius(y + 1e-3) - vase_radius(y - 1e-3)) / 2e-3;
+            v = (1.0 - y) / 2.0;
+            flat = flat_gap(abs(x.y) - 1.0, MAT_PAPER, vec3<f32>(0.0, -1.0, 0.0));
+            if x.y > 0.0 {
+                flat = flat_gap(abs(x.y) - 1.0, MAT_INSIDE, vec3<f32>(0.0, 1.0, 0.0));
+            }
+        } else {
+            let h = view3d.shape.w;
+            v = (h - x.y) / (2.0 * h);
+            flat = flat_gap(abs(x.y) - h, MAT_PAPER, vec3<f32>(0.0, sign(x.y), 0.0));
+        }
+        let rho = length(x.xz);
+        var s = vec2<f32>(0.0, 1.0);
+        if rho > 1e-12 {
+            s = x.xz / rho;
+        }
+        let foot = vec3<f32>(radius * s.x, x.y, radius * s.y);
+        let normal = normalize(vec3<f32>(s.x, -slope, s.y));
+        side = Gap((rho - radius) / sqrt(1.0 + slope * slope), MAT_DESIGN, foot, normal, vec2<f32>(around(foot), v));
+    } else if shape == 3u {
+        let depth = view3d.shading.w;
+        var face = 1.0;
+        if x.z < 0.0 {
+            face = -1.0;
+        }
+        // The back cover shows the design mirrored (a wrap-around cover).
+        side = Gap(face * x.z - depth, MAT_DESIGN, vec3<f32>(x.x, x.y, face * depth), vec3<f32>(0.0, 0.0, face), vec2<f32>((face * x.x + a) / (2.0 * a), (1.0 - x.y) / 2.0));
+        var edge = MAT_PAGES;
+        if x.x < 0.0 {
+            edge = MAT_SPINE;
+        }
+        flat = outer(
+            flat_gap(abs(x.x) - a, edge, vec3<f32>(sign(x.x), 0.0, 0.0)),
+            flat_gap(abs(x.y) - 1.0, MAT_PAGES, vec3<f32>(0.0, sign(x.y), 0.0)),
+        );
+    } else {
+        if abs(x.x) > a || abs(x.y) > 1.0 {
+            return flat_gap(3.0e38, MAT_DESIGN, vec3<f32>(0.0));
+        }
+        side.g = x.z;
+    }
+    side.g -= displace_height(side.foot);
+    return outer(side, flat);
+}
+
+// The first hit on the displaced object (see marbling-core's view3d::displace): the
+// first sign change of the gap along the march, refined by bisection, in one loop with
+// one call of `displaced_gap`.
+fn hit_displaced(o: vec3<f32>, d: vec3<f32>) -> Hit3 {
+    let radius = view3d.displace_march.x;
+    let b = dot(o, d);
+    let disc = b * b - (dot(o, o) - radius * radius);
+    if disc < 0.0 {
+        return no_hit();
+    }
+    let t0 = max(-b - sqrt(disc), 0.0);
+    let t1 = -b + sqrt(disc);
+    if t1 <= t0 {
+        return no_hit();
+    }
+    let steps = u32(view3d.displace_march.y);
+    let bisections = u32(view3d.displace_march.z);
+    let step = (t1 - t0) / f32(steps);
+    var prev = 0.0;
+    var found = false;
+    var lo = t0;
+    var hi = t0;
+    var at_hi = flat_gap(0.0, MAT_PAPER, vec3<f32>(0.0));
+    var halvings = 0u;
+    for (var i = 0u; i <= steps + bisections; i++) {
+        var t = t0 + step * f32(i);
+        if found {
+            t = 0.5 * (lo + hi);
+        }
+        let g = displaced_gap(o + d * t);
+        if found {
+            if g.g < 1.0e38 && (g.g > 0.0) == (prev > 0.0) {
+                lo = t;
+            } else {
+                hi = t;
+                at_hi = g;
+            }
+            halvings++;
+            if halvings == bisections {
+                break;
+            }
+        } else if i > 0u && prev < 1.0e38 && g.g < 1.0e38 && (prev > 0.0) != (g.g > 0.0) {
+            found = true;
+            lo = t - step;
+            hi = t;
+            at_hi = g;
+        } else {
+            prev = g.g;
+            if i == steps {
+                return no_hit();
+            }
+        }
+    }
+    if at_hi.material == MAT_DESIGN {
+        return Hit3(hi, displaced_normal(at_hi.foot, at_hi.normal), at_hi.uv, MAT_DESIGN);
+    }
+    return Hit3(hi, at_hi.normal, vec2<f32>(0.0), at_hi.material);
+}
+
 fn hit_object(o: vec3<f32>, d: vec3<f32>) -> Hit3 {
     let shape = u32(view3d.lens.z);
     var h: Hit3;
+    if view3d.displace.x != 0.0 && view3d.displace.y != 0.0 {
+        h = hit_displaced(o, d);
+        if dot(h.normal, d) > 0.0 {
+            h.normal = -h.normal;
+        }
+        return h;
+    }
     switch shape {
         case 0u: { h = hit_sphere(o, d); }
         case 1u: { h = hit_vase(o, d); }

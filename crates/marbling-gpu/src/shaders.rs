@@ -130,6 +130,12 @@ impl ExactVariant {
         }
     }
 
+    /// True when [`ExactVariant::render_wgsl`] holds marbling-noise's lattice files
+    /// (hash, perlin, value: the flow's or the surface's).
+    pub fn has_noise_lattice(self) -> bool {
+        self.surface() || (self.v3 && self.flow)
+    }
+
     /// The render module (vertex and fragment entry points).
     pub fn render_wgsl(self) -> String {
         if !self.surface() && !self.v3 {

@@ -11,7 +11,7 @@ use crate::target::RenderTarget;
 use crate::variants::Variants;
 use marbling_core::view3d::{
     AMBIENT, BACKDROP, BOOK_DEPTH, INSIDE_SHADE, PAGES, SPINE_SHADE, VASE_BISECTIONS, VASE_BOUND,
-    VASE_STEPS, Vec3, View3d,
+    VASE_STEPS, Vec3, View3d, displace,
 };
 use marbling_core::{Design, Rgb8};
 
@@ -19,8 +19,16 @@ use marbling_core::{Design, Rgb8};
 pub const VIEW3D: &str = include_str!("../shaders/view3d.wgsl");
 
 /// The 3D module of an exact-renderer variant.
+/// The render module holds the noise lattice (hash, Perlin) or gets it here for the
+/// displacement's 3D Perlin noise.
 pub fn view3d_wgsl(variant: ExactVariant) -> String {
-    [variant.render_wgsl(), VIEW3D.to_owned()].join("\n")
+    let noise3 = if variant.has_noise_lattice() {
+        marbling_noise::wgsl::PERLIN3.to_owned()
+    } else {
+        marbling_noise::wgsl::module("perlin3")
+            .unwrap_or_else(|| unreachable!("marbling-noise always provides perlin3"))
+    };
+    [variant.render_wgsl(), noise3, VIEW3D.to_owned()].join("\n")
 }
 
 /// The camera and object of one frame. Keep in sync with `struct View3dParams` in
@@ -53,6 +61,13 @@ pub struct View3dParams {
     pub shading: [f32; 4],
     /// Vase bound radius, march steps, bisection steps, cylinder half-height.
     pub shape: [f32; 4],
+    /// Displacement: amplitude s (0: none), frequency f, octaves, lacunarity.
+    pub displace: [f32; 4],
+    /// Displacement: persistence, offset o (x, y, z).
+    pub displace_fbm: [f32; 4],
+    /// The displaced march: bounding radius (the object's plus s·bound), steps,
+    /// bisection steps, the normal's finite-difference step.
+    pub displace_march: [f32; 4],
 }
 
 fn v4(v: Vec3) -> [f32; 4] {
@@ -69,6 +84,7 @@ impl View3dParams {
     pub fn new(design: &Design, view: &View3d, source: u32) -> Self {
         let rig = view.rig(design);
         let object = view.object(design);
+        let d = view.displace;
         Self {
             origin: v4(rig.origin),
             forward: v4(rig.forward),
@@ -96,6 +112,24 @@ impl View3dParams {
                 VASE_STEPS as f32,
                 VASE_BISECTIONS as f32,
                 object.cylinder_half_height() as f32,
+            ],
+            displace: [
+                d.amount as f32,
+                d.frequency as f32,
+                d.octaves as f32,
+                d.lacunarity as f32,
+            ],
+            displace_fbm: [
+                d.persistence as f32,
+                d.offset[0] as f32,
+                d.offset[1] as f32,
+                d.offset[2] as f32,
+            ],
+            displace_march: [
+                (object.bound() + d.reach()) as f32,
+                displace::DISPLACE_STEPS as f32,
+                displace::DISPLACE_BISECTIONS as f32,
+                displace::NORMAL_STEP as f32,
             ],
         }
     }

@@ -7,6 +7,8 @@
 pub const HASH: &str = include_str!("../shaders/hash.wgsl");
 /// `perlin.wgsl`: fade, perlin2, perlin2_periodic, perlin2_with_gradient.
 pub const PERLIN: &str = include_str!("../shaders/perlin.wgsl");
+/// `perlin3.wgsl`: perlin3, fbm3 (3D Perlin and its fBm).
+pub const PERLIN3: &str = include_str!("../shaders/perlin3.wgsl");
 /// `value.wgsl`: value2, value2_periodic.
 pub const VALUE: &str = include_str!("../shaders/value.wgsl");
 /// `fbm.wgsl`: FbmParams, fbm, fbm_with_gradient.
@@ -33,6 +35,7 @@ pub const LAYERS: &str = include_str!("../shaders/layers.wgsl");
 pub const FILES: &[(&str, &str)] = &[
     ("hash", HASH),
     ("perlin", PERLIN),
+    ("perlin3", PERLIN3),
     ("value", VALUE),
     ("fbm", FBM),
     ("worley", WORLEY),
@@ -51,6 +54,7 @@ pub fn dependencies(name: &str) -> Option<&'static [&'static str]> {
     Some(match name {
         "hash" => &["hash"],
         "perlin" => &["hash", "perlin"],
+        "perlin3" => &["hash", "perlin", "perlin3"],
         "value" => &["hash", "perlin", "value"],
         "fbm" => &["hash", "perlin", "value", "fbm"],
         "worley" => &["hash", "worley"],

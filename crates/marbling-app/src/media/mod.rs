@@ -10,3 +10,4 @@ pub(crate) mod sound_input;
 pub(crate) mod video;
 pub(crate) mod video_panel;
 pub(crate) mod view3d;
+pub(crate) mod view3d_displace;

@@ -7,10 +7,12 @@
 //! the camera moves they take one sample per pixel, then antialiased once it stops.
 //! *Turn* spins the camera about the object at a chosen speed, *dolly* moves it in or
 //! out, and *Record* films one whole turn of the pane (antialiased frames, read back and
-//! handed to the recorder as they are drawn) to `marbling-3d-turn.webm`.
+//! handed to the recorder as they are drawn) to `marbling-3d-turn.webm`. *Displace*
+//! moves the surface by Perlin noise ([`super::view3d_displace`]).
 
 use crate::gpu::canvas_gpu::CANVAS_FORMAT;
 use crate::media::recorder::Recorder;
+use crate::media::view3d_displace::DisplaceControls;
 use eframe::egui_wgpu;
 use marbling_core::view3d::{Camera, MAX_DOLLY, MAX_ZOOM, MIN_DOLLY, Shape, View3d};
 use marbling_core::{Antialias, Design};
@@ -87,6 +89,8 @@ pub struct View3dWindow {
     pub turn_speed: f64,
     /// UI clock of the last step of the turn, ms.
     last_turn_ms: Option<f64>,
+    /// The surface's displacement and its flow.
+    pub displace: DisplaceControls,
     recording: Option<TurnRecording>,
     /// What the last recording left (shown under the panes).
     note: Option<String>,
@@ -112,6 +116,7 @@ impl Default for View3dWindow {
             turning: false,
             turn_speed: DEFAULT_TURN_SPEED,
             last_turn_ms: None,
+            displace: DisplaceControls::default(),
             recording: None,
             note: None,
             panes: None,
@@ -141,6 +146,7 @@ impl View3dWindow {
                 "dolly": self.dolly,
                 "turning": self.turning,
                 "speed": self.turn_speed,
+                "displace": self.displace.hook(),
                 "recording": self.recording.as_ref().map(|r| {
                     serde_json::json!({"turned": r.turned, "frames": r.frames})
                 }),
@@ -260,7 +266,7 @@ impl View3dWindow {
             height: size[1],
             antialias,
             texture,
-            displace: marbling_core::view3d::Displace::default(),
+            displace: self.displace.displace,
         }
     }
 
@@ -307,6 +313,7 @@ impl View3dWindow {
             // Frees the GPU memory of the panes.
             self.finish_recording(false);
             self.turning = false;
+            self.displace.flowing = false;
             self.panes = None;
             self.drawn = None;
         }
@@ -391,6 +398,7 @@ impl View3dWindow {
                 );
             controls.push(("view3d-dolly".into(), r.rect));
         });
+        self.displace.ui(ui, controls);
         ui.add(
             egui::Label::new(
                 "Drag to turn · click to centre a spot · wheel or pinch to zoom · \
@@ -427,6 +435,7 @@ impl View3dWindow {
             self.finish_recording(false);
         }
         let mut interacting = self.step_turn(ui.ctx());
+        interacting |= self.displace.step(ui.ctx());
         let textures = self.ensure_panes(rs, size_px);
         ui.horizontal(|ui| {
             for (i, tex) in textures.iter().take(panes as usize).enumerate() {

@@ -220,3 +220,49 @@ fn render_3d_turn_writes_a_loop_of_the_turned_views() {
     let mp4 = path(&dir, "turn.mp4");
     render_3d_fails(&design, &mp4, &["--turn", "90"], "-o must name a .png");
 }
+
+#[test]
+fn render_3d_displace_moves_the_surface_and_refuses_bad_numbers() {
+    let dir = workdir("displace");
+    let d = random_design(31, 160, 120, 30, Mix::DropHeavy);
+    let design = path(&dir, "design.json");
+    std::fs::write(&design, d.to_value().to_string()).expect("design");
+    let common = ["--surface", "sphere", "--size", "48x36"];
+    let render = |name: &str, extra: &[&str]| {
+        let out = path(&dir, name);
+        let mut args = vec!["render-3d", &design, "-o", &out];
+        args.extend(common);
+        args.extend(extra.iter().copied());
+        ok(&args);
+        read_png(&out)
+    };
+    let flat = render("flat.png", &[]);
+    // Frequency 0: the noise is 0 everywhere (Perlin is 0 on its lattice).
+    assert_eq!(
+        render("f0.png", &["--displace", "0.3,0"]).pixels,
+        flat.pixels
+    );
+    let bumpy = render("bumpy.png", &["--displace", "0.2,3"]);
+    let fbm = render("fbm.png", &["--displace", "0.2,3,4,2,0.6"]);
+    assert_ne!(bumpy.pixels, flat.pixels, "the surface moved");
+    assert_ne!(fbm.pixels, bumpy.pixels, "octaves add detail");
+    for (value, expected) in [
+        (
+            "0.9,1",
+            "displace amount must be a number from 0 to 0.5, got 0.9",
+        ),
+        (
+            "0.1,x",
+            "expected --displace S,F or S,F,OCTAVES,LACUNARITY,PERSISTENCE",
+        ),
+        ("0.1", "expected --displace S,F"),
+        ("0.1,2,9,2,0.5", "displace octaves must be 1 to 6, got 9"),
+    ] {
+        render_3d_fails(
+            &design,
+            &path(&dir, "bad.png"),
+            &["--displace", value],
+            expected,
+        );
+    }
+}

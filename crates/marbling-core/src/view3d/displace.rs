@@ -12,7 +12,9 @@
 //! [`DISPLACE_STEPS`] steps through its bounding sphere grown by s·[`PERLIN3_BOUND`]
 //! and refined by bisection. Features thinner than a step (1/192 of the sphere's
 //! diameter) can be missed. The plane, a sheet with no inside, is met where z − h
-//! changes sign over it. Keep in sync with `view3d.wgsl` in marbling-gpu.
+//! changes sign over it; the book's gap is that of the cover on the point's side of
+//! the book. The height is read once per march sample, so the WGSL twin stays one call
+//! of the noise per loop (its compile time on software GPUs grows with the calls). Keep in sync with `view3d.wgsl` in marbling-gpu.
 
 use super::shapes::{BOOK_DEPTH, Hit, Material, Object, Shape, around, vase_radius};
 use super::vec3::Vec3;
@@ -188,7 +190,14 @@ fn outer(a: (f64, Face), b: (f64, Face)) -> (f64, Face) {
     if b.0 > a.0 { b } else { a }
 }
 
-/// A lathe's side at x: the radial foot at height y on radius `radius`, and its normal.
+/// True where the gap changes sign between two samples, both on the object's span
+/// (the plane's gap is infinite off its rectangle).
+fn crossing(a: f64, b: f64) -> bool {
+    a.is_finite() && b.is_finite() && (a > 0.0) != (b > 0.0)
+}
+
+/// A lathe's side at x: the radial gap, the radial foot on `radius` at x's height, and
+/// the normal of a profile of `slope`.
 fn lathe(x: Vec3, radius: f64, slope: f64) -> (f64, Vec3, Vec3) {
     let rho = (x.x * x.x + x.z * x.z).sqrt();
     let (sx, sz) = if rho > 1e-12 {
@@ -202,108 +211,86 @@ fn lathe(x: Vec3, radius: f64, slope: f64) -> (f64, Vec3, Vec3) {
 }
 
 impl Object {
-    /// The displaced solid's gap at x (≤ 0 inside, about a distance near the surface)
-    /// and the face it belongs to. Not for the plane.
+    /// The displaced object's gap at x (≤ 0 inside, about a distance near the surface;
+    /// for the plane, z − h over its rectangle and +∞ off it) and the face it belongs
+    /// to. The design face's height is read once: the book shows the cover on x's side.
     fn displaced_gap(&self, x: Vec3) -> (f64, Face) {
-        let d = &self.displace;
         let a = self.aspect;
-        match self.shape {
+        let (y_axis, z_axis) = (Vec3::new(0.0, 1.0, 0.0), Vec3::new(0.0, 0.0, 1.0));
+        // The design face before the displacement: (gap, foot, normal, uv), and the
+        // flat faces it is intersected with.
+        let (gap, foot, normal, uv, flat) = match self.shape {
             Shape::Sphere => {
                 let r = x.length().max(1e-12);
                 let foot = x * (1.0 / r);
                 let uv = (around(foot), foot.y.clamp(-1.0, 1.0).acos() / PI);
-                let face = Face::Design {
-                    foot,
-                    normal: foot,
-                    uv,
-                };
-                (r - 1.0 - d.height(foot), face)
+                (r - 1.0, foot, foot, uv, None)
             }
             Shape::Cylinder => {
                 let h = self.cylinder_half_height();
                 let (gap, foot, normal) = lathe(x, 1.0, 0.0);
                 let uv = (around(foot), (h - foot.y) / (2.0 * h));
-                let side = (gap - d.height(foot), Face::Design { foot, normal, uv });
-                let cap = Face::Flat(Material::Paper, Vec3::new(0.0, x.y.signum(), 0.0));
-                outer(side, (x.y.abs() - h, cap))
+                let cap = Face::Flat(Material::Paper, y_axis * x.y.signum());
+                (gap, foot, normal, uv, Some((x.y.abs() - h, cap)))
             }
             Shape::Vase => {
                 let y = x.y.clamp(-1.0, 1.0);
                 let slope = (vase_radius(y + 1e-4) - vase_radius(y - 1e-4)) / 2e-4;
                 let (gap, foot, normal) = lathe(x, vase_radius(y), slope);
                 let cosine = 1.0 / (1.0 + slope * slope).sqrt();
-                let uv = (around(foot), (1.0 - y) / 2.0);
-                let side = (
-                    gap * cosine - d.height(foot),
-                    Face::Design { foot, normal, uv },
-                );
-                let (material, up) = if x.y > 0.0 {
-                    (Material::Inside, 1.0)
+                let lid = if x.y > 0.0 {
+                    Face::Flat(Material::Inside, y_axis)
                 } else {
-                    (Material::Paper, -1.0)
+                    Face::Flat(Material::Paper, -y_axis)
                 };
-                outer(
-                    side,
-                    (
-                        x.y.abs() - 1.0,
-                        Face::Flat(material, Vec3::new(0.0, up, 0.0)),
-                    ),
-                )
+                let uv = (around(foot), (1.0 - y) / 2.0);
+                (gap * cosine, foot, normal, uv, Some((x.y.abs() - 1.0, lid)))
             }
-            // The plane is a sheet, met by `sheet_hit`; as a solid it would be this book.
-            Shape::Book | Shape::Plane => {
-                let v = (1.0 - x.y) / 2.0;
-                let front = Vec3::new(x.x, x.y, BOOK_DEPTH);
-                let back = Vec3::new(x.x, x.y, -BOOK_DEPTH);
-                let covers = outer(
-                    (
-                        x.z - BOOK_DEPTH - d.height(front),
-                        Face::Design {
-                            foot: front,
-                            normal: Vec3::new(0.0, 0.0, 1.0),
-                            uv: ((x.x + a) / (2.0 * a), v),
-                        },
-                    ),
-                    (
-                        -x.z - BOOK_DEPTH - d.height(back),
-                        Face::Design {
-                            foot: back,
-                            normal: Vec3::new(0.0, 0.0, -1.0),
-                            uv: ((a - x.x) / (2.0 * a), v),
-                        },
-                    ),
-                );
+            Shape::Book => {
+                let side = if x.z >= 0.0 { 1.0 } else { -1.0 };
+                let foot = Vec3::new(x.x, x.y, side * BOOK_DEPTH);
+                // The back cover shows the design mirrored (a wrap-around cover).
+                let u = (side * x.x + a) / (2.0 * a);
                 let edge = if x.x < 0.0 {
                     Material::Spine
                 } else {
                     Material::Pages
                 };
-                let sides = outer(
+                let flat = outer(
                     (
                         x.x.abs() - a,
                         Face::Flat(edge, Vec3::new(x.x.signum(), 0.0, 0.0)),
                     ),
                     (
                         x.y.abs() - 1.0,
-                        Face::Flat(Material::Pages, Vec3::new(0.0, x.y.signum(), 0.0)),
+                        Face::Flat(Material::Pages, y_axis * x.y.signum()),
                     ),
                 );
-                outer(covers, sides)
+                let uv = (u, (1.0 - x.y) / 2.0);
+                (side * x.z - BOOK_DEPTH, foot, z_axis * side, uv, Some(flat))
             }
+            Shape::Plane => {
+                let foot = Vec3::new(x.x, x.y, 0.0);
+                let on = x.x.abs() <= a && x.y.abs() <= 1.0;
+                let gap = if on { x.z } else { f64::INFINITY };
+                let uv = ((x.x + a) / (2.0 * a), (1.0 - x.y) / 2.0);
+                (gap, foot, z_axis, uv, None)
+            }
+        };
+        let design = (
+            gap - self.displace.height(foot),
+            Face::Design { foot, normal, uv },
+        );
+        match flat {
+            Some(flat) => outer(design, flat),
+            None => design,
         }
     }
 
-    /// The displaced sheet at x: z − h over the rectangle (`None` off it), the foot.
-    fn displaced_sheet(&self, x: Vec3) -> Option<(f64, Vec3)> {
-        let foot = Vec3::new(x.x, x.y, 0.0);
-        (x.x.abs() <= self.aspect && x.y.abs() <= 1.0)
-            .then(|| (x.z - self.displace.height(foot), foot))
-    }
-
-    /// The first hit of the ray from `o` along unit `d` on the displaced object.
+    /// The first hit of the ray from `o` along unit `d` on the displaced object: the
+    /// first sign change of the gap along the march, refined by bisection.
     pub(super) fn displaced_hit(&self, o: Vec3, d: Vec3) -> Option<Hit> {
-        let reach = self.displace.reach();
-        let radius = self.bound() + reach;
+        let radius = self.bound() + self.displace.reach();
         let b = o.dot(d);
         let disc = b * b - (o.dot(o) - radius * radius);
         if disc < 0.0 {
@@ -314,68 +301,36 @@ impl Object {
             return None;
         }
         let step = (t1 - t0) / f64::from(DISPLACE_STEPS);
-        if self.shape == Shape::Plane {
-            return self.sheet_hit(o, d, t0, step);
-        }
-        let mut prev = t0;
+        let mut prev = self.displaced_gap(o + d * t0).0;
         for i in 1..=DISPLACE_STEPS {
             let t = t0 + step * f64::from(i);
-            if self.displaced_gap(o + d * t).0 <= 0.0 {
-                let (mut lo, mut hi) = (prev, t);
-                for _ in 0..DISPLACE_BISECTIONS {
-                    let mid = 0.5 * (lo + hi);
-                    if self.displaced_gap(o + d * mid).0 > 0.0 {
-                        lo = mid;
-                    } else {
-                        hi = mid;
-                    }
-                }
-                return Some(match self.displaced_gap(o + d * hi).1 {
-                    Face::Design { foot, normal, uv } => Hit {
-                        t: hi,
-                        normal: self.displace.moved(foot, normal).1,
-                        material: Material::Design(uv.0, uv.1),
-                    },
-                    Face::Flat(material, normal) => Hit {
-                        t: hi,
-                        normal,
-                        material,
-                    },
-                });
+            let now = self.displaced_gap(o + d * t);
+            if !crossing(prev, now.0) {
+                prev = now.0;
+                continue;
             }
-            prev = t;
-        }
-        None
-    }
-
-    fn sheet_hit(&self, o: Vec3, d: Vec3, t0: f64, step: f64) -> Option<Hit> {
-        let mut prev = self.displaced_sheet(o + d * t0).map(|(z, _)| (t0, z));
-        for i in 1..=DISPLACE_STEPS {
-            let t = t0 + step * f64::from(i);
-            let now = self.displaced_sheet(o + d * t).map(|(z, _)| (t, z));
-            if let (Some((lo, z0)), Some((hi, z1))) = (prev, now)
-                && (z0 > 0.0) != (z1 > 0.0)
-            {
-                let (mut lo, mut hi) = (lo, hi);
-                for _ in 0..DISPLACE_BISECTIONS {
-                    let mid = 0.5 * (lo + hi);
-                    let above = self.displaced_sheet(o + d * mid).is_some_and(|s| s.0 > 0.0);
-                    if above == (z0 > 0.0) {
-                        lo = mid;
-                    } else {
-                        hi = mid;
-                    }
+            let (mut lo, mut hi, mut at_hi) = (t - step, t, now);
+            for _ in 0..DISPLACE_BISECTIONS {
+                let mid = 0.5 * (lo + hi);
+                let g = self.displaced_gap(o + d * mid);
+                if g.0.is_finite() && (g.0 > 0.0) == (prev > 0.0) {
+                    lo = mid;
+                } else {
+                    (hi, at_hi) = (mid, g);
                 }
-                let (_, foot) = self.displaced_sheet(o + d * hi)?;
-                let a = self.aspect;
-                let normal = self.displace.moved(foot, Vec3::new(0.0, 0.0, 1.0)).1;
-                return Some(Hit {
+            }
+            return Some(match at_hi.1 {
+                Face::Design { foot, normal, uv } => Hit {
+                    t: hi,
+                    normal: self.displace.moved(foot, normal).1,
+                    material: Material::Design(uv.0, uv.1),
+                },
+                Face::Flat(material, normal) => Hit {
                     t: hi,
                     normal,
-                    material: Material::Design((foot.x + a) / (2.0 * a), (1.0 - foot.y) / 2.0),
-                });
-            }
-            prev = now;
+                    material,
+                },
+            });
         }
         None
     }

@@ -199,6 +199,9 @@ fn view3d_params_match_wgsl() {
             ("backdrop_bottom", offset_of!(View3dParams, backdrop_bottom)),
             ("shading", offset_of!(View3dParams, shading)),
             ("shape", offset_of!(View3dParams, shape)),
+            ("displace", offset_of!(View3dParams, displace)),
+            ("displace_fbm", offset_of!(View3dParams, displace_fbm)),
+            ("displace_march", offset_of!(View3dParams, displace_march)),
         ],
         size_of::<View3dParams>(),
     );
