@@ -115,6 +115,35 @@ for (const backend of Object.keys(BACKENDS)) {
           assert.ok(video.bytes.length > 1000, `a ${video.bytes.length}-byte video`);
           assert.equal((await view3d()).recording, null);
         }
+
+        // Displace (Kung 2019): the camera stands, the amount slider near its right end
+        // moves the surface by Perlin noise; Flow moves the noise with time.
+        await clickControl(page, 'view3d-turn');
+        await page.waitForFunction(() => !JSON.parse(document.body.dataset.view3d).turning, null, { timeout: READY_MS });
+        const frames = async () => Number(await attr(page, 'data-view3d-frames'));
+        const settled = async () => {
+          const n = await frames();
+          await page.waitForFunction((k) => Number(document.body.dataset.view3dFrames) > k, n, { timeout: READY_MS }).catch(() => {});
+          await page.waitForTimeout(600);
+          return decode(await page.screenshot({ clip: { x: pane.x, y: pane.y, width: pane.w, height: pane.h }, timeout: READY_MS }));
+        };
+        const flat = await settled();
+        const amount = (await controls(page))['view3d-displace'];
+        await page.mouse.click(amount.x + 80, amount.y + amount.h / 2);
+        await page.waitForFunction(() => JSON.parse(document.body.dataset.view3d).displace.amount > 0.3, null, { timeout: READY_MS });
+        await page.mouse.move(2, 2);
+        const bumpy = await settled();
+        const moved = differing(flat, bumpy, 24);
+        console.log(`${backend}: displaced 3D view: ${(100 * moved).toFixed(1)} % of the pane changed`);
+        assert.ok(moved > 0.03, `displacing changed ${(100 * moved).toFixed(2)} % of the pane`);
+        if (backend === 'webgpu') fs.writeFileSync(path.join(SHOTS, 'view3d-displaced.png'), PNG.sync.write(bumpy));
+        await clickControl(page, 'view3d-displace-flow');
+        await page.waitForFunction(() => {
+          const d = JSON.parse(document.body.dataset.view3d).displace;
+          return d.flowing && d.offset[1] !== 0;
+        }, null, { timeout: READY_MS });
+        await clickControl(page, 'view3d-displace-flow');
+        assert.equal((await view3d()).displace.flowing, false);
         assert.equal(await attr(page, 'data-error'), null);
         assert.deepEqual(errors, []);
       } finally {

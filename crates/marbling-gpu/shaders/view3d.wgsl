@@ -28,8 +28,8 @@ struct View3dParams {
     displace: vec4<f32>,
     // Persistence, offset o (x, y, z).
     displace_fbm: vec4<f32>,
-    // Radius of the march's bounding sphere (the object's plus s·bound), march steps,
-    // bisection steps, the normal's finite-difference step.
+    // What the march's bounding volume adds to the object's extent (s·bound + margin),
+    // march steps, bisection steps, the normal's finite-difference step.
     displace_march: vec4<f32>,
 }
 
@@ -43,8 +43,10 @@ const MAT_PAPER: u32 = 1u;
 const MAT_PAGES: u32 = 2u;
 const MAT_SPINE: u32 = 3u;
 const MAT_INSIDE: u32 = 4u;
-// Seed of the displacement noise (marbling-core's view3d::displace::SEED).
+// Seed of the displacement noise and the margin of its march's bounding volume
+// (marbling-core's view3d::displace::SEED and BOUND_MARGIN).
 const DISPLACE_SEED: u32 = 3u;
+const DISPLACE_MARGIN: f32 = 1e-3;
 
 // A ray's hit: t < 0 for none.
 struct Hit3 {
@@ -360,15 +362,75 @@ fn displaced_gap(x: vec3<f32>) -> Gap {
 // The first hit on the displaced object (see marbling-core's view3d::displace): the
 // first sign change of the gap along the march, refined by bisection, in one loop with
 // one call of `displaced_gap`.
-fn hit_displaced(o: vec3<f32>, d: vec3<f32>) -> Hit3 {
-    let radius = view3d.displace_march.x;
-    let b = dot(o, d);
-    let disc = b * b - (dot(o, o) - radius * radius);
-    if disc < 0.0 {
-        return no_hit();
+// The ray's span inside the box or upright cylinder holding the displaced object (its
+// extent grown by the reach and a margin); x > y when it misses.
+fn march_span(o: vec3<f32>, d: vec3<f32>) -> vec2<f32> {
+    let shape = u32(view3d.lens.z);
+    let grow = view3d.displace_march.x;
+    let margin = DISPLACE_MARGIN;
+    var lo = vec3<f32>(-3.0e38);
+    var hi = vec3<f32>(3.0e38);
+    var span = vec2<f32>(0.0, 3.0e38);
+    if shape == 0u {
+        let r = 1.0 + grow;
+        let b = dot(o, d);
+        let disc = b * b - (dot(o, o) - r * r);
+        if disc < 0.0 {
+            return vec2<f32>(1.0, 0.0);
+        }
+        span = vec2<f32>(max(-b - sqrt(disc), 0.0), -b + sqrt(disc));
+    } else if shape == 1u || shape == 2u {
+        var r = 1.0 + grow;
+        var h = view3d.shape.w;
+        if shape == 1u {
+            r = view3d.shape.x + grow;
+            h = 1.0;
+        }
+        let a = dot(d.xz, d.xz);
+        let b = dot(o.xz, d.xz);
+        let disc = b * b - a * (dot(o.xz, o.xz) - r * r);
+        if a > 0.0 {
+            if disc < 0.0 {
+                return vec2<f32>(1.0, 0.0);
+            }
+            span = vec2<f32>(max((-b - sqrt(disc)) / a, 0.0), (-b + sqrt(disc)) / a);
+        } else if dot(o.xz, o.xz) > r * r {
+            return vec2<f32>(1.0, 0.0);
+        }
+        lo = vec3<f32>(-3.0e38, -h - margin, -3.0e38);
+        hi = -lo;
+    } else {
+        var depth = grow;
+        if shape == 3u {
+            depth = view3d.shading.w + grow;
+        }
+        hi = vec3<f32>(view3d.lens.y + margin, 1.0 + margin, depth);
+        lo = -hi;
     }
-    let t0 = max(-b - sqrt(disc), 0.0);
-    let t1 = -b + sqrt(disc);
+    for (var k = 0; k < 3; k++) {
+        if hi[k] > 1.0e38 {
+            continue;
+        }
+        if d[k] == 0.0 {
+            if o[k] < lo[k] || o[k] > hi[k] {
+                return vec2<f32>(1.0, 0.0);
+            }
+            continue;
+        }
+        let ta = (lo[k] - o[k]) / d[k];
+        let tb = (hi[k] - o[k]) / d[k];
+        span = vec2<f32>(max(span.x, min(ta, tb)), min(span.y, max(ta, tb)));
+    }
+    return span;
+}
+
+// The first hit on the displaced object (see marbling-core's view3d::displace): the
+// first sign change of the gap along the march, refined by bisection, in one loop with
+// one call of `displaced_gap`.
+fn hit_displaced(o: vec3<f32>, d: vec3<f32>) -> Hit3 {
+    let span = march_span(o, d);
+    let t0 = span.x;
+    let t1 = span.y;
     if t1 <= t0 {
         return no_hit();
     }

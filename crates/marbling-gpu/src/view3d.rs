@@ -65,8 +65,8 @@ pub struct View3dParams {
     pub displace: [f32; 4],
     /// Displacement: persistence, offset o (x, y, z).
     pub displace_fbm: [f32; 4],
-    /// The displaced march: bounding radius (the object's plus s·bound), steps,
-    /// bisection steps, the normal's finite-difference step.
+    /// The displaced march: what its bounding volume adds to the object's extent
+    /// (s·bound + margin), steps, bisection steps, the normal's finite-difference step.
     pub displace_march: [f32; 4],
 }
 
@@ -126,7 +126,7 @@ impl View3dParams {
                 d.offset[2] as f32,
             ],
             displace_march: [
-                (object.bound() + d.reach()) as f32,
+                (d.reach() + displace::BOUND_MARGIN) as f32,
                 displace::DISPLACE_STEPS as f32,
                 displace::DISPLACE_BISECTIONS as f32,
                 displace::NORMAL_STEP as f32,

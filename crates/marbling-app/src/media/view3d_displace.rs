@@ -38,6 +38,9 @@ impl DisplaceControls {
                      object units: the sphere's radius is 1",
                 );
             controls.push(("view3d-displace".into(), r.rect));
+        });
+        // One slider a row: a phone's width holds one slider beside a button, not two.
+        ui.horizontal_wrapped(|ui| {
             let r = ui
                 .add(egui::Slider::new(&mut d.frequency, FREQUENCY).text("bumps"))
                 .on_hover_text("The noise's frequency: lattice cells per object unit");

@@ -9,14 +9,14 @@
 //! design faces are moved out by the height h = s·noise at their foot point (for the
 //! vase, whose side is not a height field along the radius, the radial gap times the
 //! profile's cosine: the distance to first order in the slope), marched in
-//! [`DISPLACE_STEPS`] steps through its bounding sphere grown by s·[`PERLIN3_BOUND`]
-//! and refined by bisection. Features thinner than a step (1/192 of the sphere's
-//! diameter) can be missed. The plane, a sheet with no inside, is met where z − h
+//! [`DISPLACE_STEPS`] steps through the box or upright cylinder holding it (grown by
+//! s·[`PERLIN3_BOUND`]) and refined by bisection. Features thinner than a step (1/192
+//! of the ray's span there) can be missed. The plane, a sheet with no inside, is met where z − h
 //! changes sign over it; the book's gap is that of the cover on the point's side of
 //! the book. The height is read once per march sample, so the WGSL twin stays one call
 //! of the noise per loop (its compile time on software GPUs grows with the calls). Keep in sync with `view3d.wgsl` in marbling-gpu.
 
-use super::shapes::{BOOK_DEPTH, Hit, Material, Object, Shape, around, vase_radius};
+use super::shapes::{BOOK_DEPTH, Hit, Material, Object, Shape, VASE_BOUND, around, vase_radius};
 use super::vec3::Vec3;
 use marbling_noise::{PERLIN3_BOUND, fbm3};
 use std::f64::consts::PI;
@@ -37,6 +37,9 @@ pub const PERSISTENCE: RangeInclusive<f64> = 0.0..=1.0;
 pub const SEED: u32 = 3;
 /// Steps of the march through the grown bounding sphere.
 pub const DISPLACE_STEPS: u32 = 192;
+/// What the march's bounding volume adds to the object's extent besides the reach,
+/// object units.
+pub const BOUND_MARGIN: f64 = 1e-3;
 /// Bisection steps refining a displaced hit.
 pub const DISPLACE_BISECTIONS: u32 = 24;
 /// The finite-difference step ε of the displaced normal, object units (the paper's
@@ -287,19 +290,63 @@ impl Object {
         }
     }
 
+    /// The span (t0, t1) of the ray from `o` along unit `d` inside the box or upright
+    /// cylinder that holds the displaced object: its undisplaced extent grown by
+    /// [`Displace::reach`] + [`BOUND_MARGIN`] (the margin keeps the first sample off
+    /// a flat face).
+    fn march_span(&self, o: Vec3, d: Vec3) -> Option<(f64, f64)> {
+        let grow = self.displace.reach() + BOUND_MARGIN;
+        let (mut t0, mut t1) = (0.0_f64, f64::INFINITY);
+        let mut slab = |o: f64, d: f64, half: f64| {
+            if d == 0.0 {
+                return o.abs() <= half;
+            }
+            let (a, b) = ((-half - o) / d, (half - o) / d);
+            t0 = t0.max(a.min(b));
+            t1 = t1.min(a.max(b));
+            true
+        };
+        let inside = match self.shape {
+            Shape::Sphere => {
+                let r = 1.0 + grow;
+                let b = o.dot(d);
+                let disc = b * b - (o.dot(o) - r * r);
+                disc >= 0.0 && slab(b, 1.0, disc.sqrt())
+            }
+            Shape::Cylinder | Shape::Vase => {
+                let (r, h) = if self.shape == Shape::Vase {
+                    (VASE_BOUND, 1.0)
+                } else {
+                    (1.0, self.cylinder_half_height())
+                };
+                let r = r + grow;
+                let (a, b) = (d.x * d.x + d.z * d.z, o.x * d.x + o.z * d.z);
+                let disc = b * b - a * (o.x * o.x + o.z * o.z - r * r);
+                let round = if a > 0.0 {
+                    disc >= 0.0 && slab(b / a, 1.0, disc.sqrt() / a)
+                } else {
+                    o.x * o.x + o.z * o.z <= r * r
+                };
+                round && slab(o.y, d.y, h + BOUND_MARGIN)
+            }
+            Shape::Book | Shape::Plane => {
+                let depth = if self.shape == Shape::Book {
+                    BOOK_DEPTH
+                } else {
+                    0.0
+                };
+                slab(o.x, d.x, self.aspect + BOUND_MARGIN)
+                    && slab(o.y, d.y, 1.0 + BOUND_MARGIN)
+                    && slab(o.z, d.z, depth + grow)
+            }
+        };
+        (inside && t0 < t1).then_some((t0, t1))
+    }
+
     /// The first hit of the ray from `o` along unit `d` on the displaced object: the
     /// first sign change of the gap along the march, refined by bisection.
     pub(super) fn displaced_hit(&self, o: Vec3, d: Vec3) -> Option<Hit> {
-        let radius = self.bound() + self.displace.reach();
-        let b = o.dot(d);
-        let disc = b * b - (o.dot(o) - radius * radius);
-        if disc < 0.0 {
-            return None;
-        }
-        let (t0, t1) = ((-b - disc.sqrt()).max(0.0), -b + disc.sqrt());
-        if t1 <= t0 {
-            return None;
-        }
+        let (t0, t1) = self.march_span(o, d)?;
         let step = (t1 - t0) / f64::from(DISPLACE_STEPS);
         let mut prev = self.displaced_gap(o + d * t0).0;
         for i in 1..=DISPLACE_STEPS {
