@@ -84,51 +84,32 @@ impl Displace {
 
     /// What is out of range, as a message naming the field, or `None`.
     pub fn problem(&self) -> Option<String> {
-        let in_range = |v: f64, r: &RangeInclusive<f64>| v.is_finite() && r.contains(&v);
-        if !in_range(self.amount, &AMOUNT) {
-            return Some(format!(
-                "displace amount must be a number from {} to {}, got {}",
-                AMOUNT.start(),
-                AMOUNT.end(),
-                self.amount
-            ));
-        }
-        if !in_range(self.frequency, &FREQUENCY) {
-            return Some(format!(
-                "displace frequency must be a number from {} to {}, got {}",
-                FREQUENCY.start(),
-                FREQUENCY.end(),
-                self.frequency
-            ));
-        }
-        if !OCTAVES.contains(&self.octaves) {
-            return Some(format!(
+        let number = |name: &str, v: f64, r: &RangeInclusive<f64>| {
+            let ok = v.is_finite() && r.contains(&v);
+            (!ok).then(|| {
+                format!(
+                    "displace {name} must be a number from {} to {}, got {v}",
+                    r.start(),
+                    r.end()
+                )
+            })
+        };
+        let octaves = (!OCTAVES.contains(&self.octaves)).then(|| {
+            format!(
                 "displace octaves must be {} to {}, got {}",
                 OCTAVES.start(),
                 OCTAVES.end(),
                 self.octaves
-            ));
-        }
-        if !in_range(self.lacunarity, &LACUNARITY) {
-            return Some(format!(
-                "displace lacunarity must be a number from {} to {}, got {}",
-                LACUNARITY.start(),
-                LACUNARITY.end(),
-                self.lacunarity
-            ));
-        }
-        if !in_range(self.persistence, &PERSISTENCE) {
-            return Some(format!(
-                "displace persistence must be a number from {} to {}, got {}",
-                PERSISTENCE.start(),
-                PERSISTENCE.end(),
-                self.persistence
-            ));
-        }
-        if !self.offset.iter().all(|c| c.is_finite() && c.abs() <= 1e6) {
-            return Some("displace offset must be finite (at most 1e6)".to_owned());
-        }
-        None
+            )
+        });
+        let offset = (!self.offset.iter().all(|c| c.is_finite() && c.abs() <= 1e6))
+            .then(|| "displace offset must be finite (at most 1e6)".to_owned());
+        number("amount", self.amount, &AMOUNT)
+            .or_else(|| number("frequency", self.frequency, &FREQUENCY))
+            .or(octaves)
+            .or_else(|| number("lacunarity", self.lacunarity, &LACUNARITY))
+            .or_else(|| number("persistence", self.persistence, &PERSISTENCE))
+            .or(offset)
     }
 
     /// The height h(p) = s·fbm((p + o)·f) of surface point p, object units;
