@@ -7,6 +7,7 @@ pub(crate) mod picture;
 pub(crate) mod recorder;
 pub(crate) mod sound;
 pub(crate) mod sound_input;
+pub(crate) mod step_clock;
 pub(crate) mod video;
 pub(crate) mod video_panel;
 pub(crate) mod view3d;

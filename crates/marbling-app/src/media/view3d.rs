@@ -12,6 +12,7 @@
 
 use crate::gpu::canvas_gpu::CANVAS_FORMAT;
 use crate::media::recorder::Recorder;
+use crate::media::step_clock::StepClock;
 use crate::media::view3d_displace::DisplaceControls;
 use eframe::egui_wgpu;
 use marbling_core::view3d::{Camera, MAX_DOLLY, MAX_ZOOM, MIN_DOLLY, Shape, View3d};
@@ -28,8 +29,6 @@ const WINDOW_MAX_ZOOM: f64 = 2000.0;
 pub const MAX_TURN_SPEED: f64 = 180.0;
 /// Turn speed at the start, degrees per second.
 const DEFAULT_TURN_SPEED: f64 = 30.0;
-/// Longest step of a turn between two frames, seconds (a stalled frame does not jump).
-const MAX_TURN_STEP_S: f64 = 0.25;
 /// The file a recorded turn downloads as.
 pub const TURN_VIDEO: &str = "marbling-3d-turn.webm";
 
@@ -87,8 +86,8 @@ pub struct View3dWindow {
     pub turning: bool,
     /// Turn speed, degrees per second (negative: the other way).
     pub turn_speed: f64,
-    /// UI clock of the last step of the turn, ms.
-    last_turn_ms: Option<f64>,
+    /// The turn's clock.
+    turn_clock: StepClock,
     /// The surface's displacement and its flow.
     pub displace: DisplaceControls,
     recording: Option<TurnRecording>,
@@ -115,7 +114,7 @@ impl Default for View3dWindow {
             dolly: 1.0,
             turning: false,
             turn_speed: DEFAULT_TURN_SPEED,
-            last_turn_ms: None,
+            turn_clock: StepClock::default(),
             displace: DisplaceControls::default(),
             recording: None,
             note: None,
@@ -155,19 +154,14 @@ impl View3dWindow {
         })
     }
 
-    /// Turns the camera by the time passed since the last frame (at most
-    /// [`MAX_TURN_STEP_S`]); true while it turns.
+    /// Turns the camera by the time passed since the last frame ([`StepClock`]); true
+    /// while it turns.
     fn step_turn(&mut self, ctx: &egui::Context) -> bool {
         if !self.turning {
-            self.last_turn_ms = None;
+            self.turn_clock.stop();
             return false;
         }
-        let now = crate::platform::now_ms();
-        let dt = self.last_turn_ms.map_or(0.0, |last| {
-            ((now - last) / 1000.0).clamp(0.0, MAX_TURN_STEP_S)
-        });
-        self.last_turn_ms = Some(now);
-        let step = self.turn_speed * dt;
+        let step = self.turn_speed * self.turn_clock.step();
         self.yaw = (self.yaw + step).rem_euclid(360.0);
         if let Some(r) = &mut self.recording {
             r.turned += step.abs();

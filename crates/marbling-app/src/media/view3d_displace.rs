@@ -2,14 +2,13 @@
 //! normals by Perlin fBm — amount, bump frequency and octaves — and *Flow*, which
 //! animates the noise's offset so the bumps travel up the object.
 
+use crate::media::step_clock::StepClock;
 use marbling_core::view3d::Displace;
 use marbling_core::view3d::displace::{AMOUNT, FREQUENCY, OCTAVES};
 
 /// How fast *Flow* moves the noise's offset, object units per second (the sphere's
 /// radius is 1).
 pub const FLOW_SPEED: f64 = 0.3;
-/// Longest step of the flow between two frames, seconds (a stalled frame does not jump).
-const MAX_FLOW_STEP_S: f64 = 0.25;
 
 /// The displacement the 3D view draws and whether it flows.
 #[derive(Debug, Default)]
@@ -18,8 +17,8 @@ pub struct DisplaceControls {
     pub displace: Displace,
     /// Whether the offset moves with time.
     pub flowing: bool,
-    /// UI clock of the last step of the flow, ms.
-    last_ms: Option<f64>,
+    /// The flow's clock.
+    clock: StepClock,
 }
 
 impl DisplaceControls {
@@ -64,17 +63,14 @@ impl DisplaceControls {
         });
     }
 
-    /// Moves the offset by the time passed since the last frame; true while it flows.
+    /// Moves the offset by the time passed since the last frame ([`StepClock`]); true
+    /// while it flows.
     pub fn step(&mut self, ctx: &egui::Context) -> bool {
         if !(self.flowing && self.displace.is_active()) {
-            self.last_ms = None;
+            self.clock.stop();
             return false;
         }
-        let now = crate::platform::now_ms();
-        let dt = self.last_ms.map_or(0.0, |last| {
-            ((now - last) / 1000.0).clamp(0.0, MAX_FLOW_STEP_S)
-        });
-        self.last_ms = Some(now);
+        let dt = self.clock.step();
         // Down the noise, so the bumps rise; wrapped far from f32's limits.
         self.displace.offset[1] = (self.displace.offset[1] - FLOW_SPEED * dt).rem_euclid(1.0e4);
         ctx.request_repaint();
