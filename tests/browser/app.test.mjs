@@ -117,7 +117,8 @@ for (const backend of Object.keys(BACKENDS)) {
         }
         await clickControl(page, 'view3d-turn');
         await page.waitForFunction(() => !JSON.parse(document.body.dataset.view3d).turning, null, { timeout: READY_MS });
-        await displacement(page, pane, backend);
+        await styles(page, backend);
+        await displacement(page, backend);
         assert.equal(await attr(page, 'data-error'), null);
         assert.deepEqual(errors, []);
       } finally {
@@ -131,43 +132,109 @@ for (const backend of Object.keys(BACKENDS)) {
      * first dollies out (the object about a tenth of the pane): on SwiftShader each
      * displaced RGSS frame costs about 100 noise samples per sample where the object is.
      */
-    async function displacement(page, pane, backend) {
-      const view3d = async () => JSON.parse(await attr(page, 'data-view3d'));
-      // The pane once no new frame was drawn for 0.8 s (a frame is drawn only when
-      // what it shows changed).
-      const settled = async () => {
-        await page.mouse.move(2, 2);
-        const frames = async () => Number(await attr(page, 'data-view3d-frames'));
-        for (let n = -1, m = await frames(); n !== m; m = await frames()) {
-          n = m;
-          await page.waitForTimeout(800);
+    /** The 3D pane once neither a new frame was drawn nor the pane moved for 0.8 s (a
+     * frame is drawn only when what it shows changed). */
+    async function settledPane(page) {
+      await page.mouse.move(2, 2);
+      // The frame count and where the pane is (opening a section moves it).
+      const state = async () => `${await attr(page, 'data-view3d-frames')} ${JSON.stringify((await controls(page))['view3d-pane-0'])}`;
+      for (let n = '', m = await state(); n !== m; m = await state()) {
+        n = m;
+        await page.waitForTimeout(800);
+      }
+      // The hooks lag the picture by a frame: two more frames make them its.
+      const f = Number(await attr(page, 'data-frames'));
+      await page.mouse.move(3, 3);
+      await page.waitForFunction((n) => Number(document.body.dataset.frames) >= n, f + 2, { timeout: READY_MS });
+      const pane = (await controls(page))['view3d-pane-0'];
+      return decode(await page.screenshot({ clip: { x: pane.x, y: pane.y, width: pane.w, height: pane.h }, timeout: READY_MS }));
+    }
+
+    /**
+     * Pixels showing the object in either shot (off the backdrop, which is constant
+     * along a row), how many of them differ between the shots, and how many backdrop
+     * pixels do.
+     */
+    function objectChange(a, b, t = 24) {
+      const px = (img, x, y) => [0, 1, 2].map((k) => img.data[(y * img.width + x) * 4 + k]);
+      const off = (p, q, t) => p.some((v, k) => Math.abs(v - q[k]) > t);
+      let [object, changed, backdrop] = [0, 0, 0];
+      for (let y = 0; y < a.height; y++) {
+        for (let x = 0; x < a.width; x++) {
+          const [f, g] = [px(a, x, y), px(b, x, y)];
+          const shown = off(f, px(a, 2, y), 12) || off(g, px(b, 2, y), 12);
+          if (shown) object++;
+          if (off(f, g, t)) {
+            if (shown) changed++;
+            else backdrop++;
+          }
         }
-        return decode(await page.screenshot({ clip: { x: pane.x, y: pane.y, width: pane.w, height: pane.h }, timeout: READY_MS }));
+      }
+      return { object, changed, backdrop, pixels: a.width * a.height };
+    }
+
+    /**
+     * Style (Bénard et al. 2010; Kaplan & Cohen 2005): hatching inks the object only and
+     * counts its kernels; anchored on the screen the marks are other marks; paper lays
+     * fibres over the backdrop too; none gives back the plain pane.
+     */
+    async function styles(page, backend) {
+      const style = async () => JSON.parse(await attr(page, 'data-view3d')).style;
+      const pick = async (menu, item) => {
+        await clickControl(page, menu);
+        await page.waitForFunction((n) => `;${document.body.dataset.controls ?? ''}`.includes(`;${n}=`), item, { timeout: READY_MS });
+        // A popup's first frame is egui's sizing pass (drawn elsewhere, invisible): click
+        // where it stands two frames on.
+        const frames = Number(await attr(page, 'data-frames'));
+        await page.waitForFunction((n) => Number(document.body.dataset.frames) >= n, frames + 2, { timeout: READY_MS });
+        await clickControl(page, item);
       };
+      await clickControl(page, 'view3d-style-section');
+      await page.waitForFunction(() => `;${document.body.dataset.controls ?? ''}`.includes(';view3d-style='), null, { timeout: READY_MS });
+      const plain = await settledPane(page);
+      await pick('view3d-style', 'view3d-style-hatching');
+      await page.waitForFunction(() => JSON.parse(document.body.dataset.view3d).style?.kernels > 0, null, { timeout: READY_MS });
+      const hatched = await settledPane(page);
+      const h = objectChange(plain, hatched);
+      const s = await style();
+      console.log(`${backend}: hatching: ${s.kernels} kernels in ${s.ms.toFixed(0)} ms; ${h.changed} of ${h.object} object pixels changed, ${h.backdrop} backdrop pixels`);
+      assert.ok(h.object > 500 && h.changed > 0.05 * h.object, `hatching changed ${h.changed} of ${h.object} object pixels`);
+      assert.ok(h.backdrop < 0.01 * h.object, `hatching reached ${h.backdrop} backdrop pixels`);
+      if (backend === 'webgpu') fs.writeFileSync(path.join(SHOTS, 'view3d-hatching.png'), PNG.sync.write(hatched));
+      await pick('view3d-style-anchoring', 'view3d-style-anchoring-screen');
+      await page.waitForFunction(() => JSON.parse(document.body.dataset.view3d).style?.anchoring === 'screen', null, { timeout: READY_MS });
+      const screen = objectChange(hatched, await settledPane(page));
+      assert.ok(screen.changed > 0.05 * screen.object, `a screen noise changed ${screen.changed} of ${screen.object} object pixels`);
+      await pick('view3d-style', 'view3d-style-paper');
+      await page.waitForFunction(() => JSON.parse(document.body.dataset.view3d).style?.fibres > 0, null, { timeout: READY_MS });
+      const papered = await settledPane(page);
+      // One fibre is faint (12 % of a brown): count changes of 4/255.
+      const paper = objectChange(plain, papered, 4);
+      if (backend === 'webgpu') fs.writeFileSync(path.join(SHOTS, 'view3d-paper.png'), PNG.sync.write(papered));
+      console.log(`${backend}: paper: ${(await style()).fibres} fibres; ${paper.backdrop} backdrop pixels changed`);
+      assert.ok(paper.backdrop > 0.02 * paper.pixels, `paper changed ${paper.backdrop} backdrop pixels`);
+      await pick('view3d-style', 'view3d-style-none');
+      await page.waitForFunction(() => JSON.parse(document.body.dataset.view3d).style === null, null, { timeout: READY_MS });
+      assert.ok(differing(plain, await settledPane(page), 2) < 0.001, 'style none should give back the plain pane');
+    }
+
+    async function displacement(page, backend) {
+      const view3d = async () => JSON.parse(await attr(page, 'data-view3d'));
+      const settled = () => settledPane(page);
       const slider = async (name, share) => {
         const c = (await controls(page))[name];
         await page.mouse.click(c.x + 100 * share, c.y + c.h / 2);
       };
+      await clickControl(page, 'view3d-style-section');
+      await clickControl(page, 'view3d-displace-section');
+      await page.waitForFunction(() => `;${document.body.dataset.controls ?? ''}`.includes(';view3d-displace='), null, { timeout: READY_MS });
       await slider('view3d-dolly', 0.75);
       await page.waitForFunction(() => JSON.parse(document.body.dataset.view3d).dolly > 2, null, { timeout: READY_MS });
       const flat = await settled();
       await slider('view3d-displace', 0.8);
       await page.waitForFunction(() => JSON.parse(document.body.dataset.view3d).displace.amount > 0.3, null, { timeout: READY_MS });
       const bumpy = await settled();
-      // Pixels showing the object in either shot (off the backdrop, which is constant
-      // along a row), and how many of them displacing changed.
-      const px = (img, x, y) => [0, 1, 2].map((k) => img.data[(y * img.width + x) * 4 + k]);
-      const off = (a, b, t) => a.some((v, k) => Math.abs(v - b[k]) > t);
-      let object = 0;
-      let changed = 0;
-      for (let y = 0; y < flat.height; y++) {
-        for (let x = 0; x < flat.width; x++) {
-          const [f, g] = [px(flat, x, y), px(bumpy, x, y)];
-          if (!off(f, px(flat, 2, y), 12) && !off(g, px(bumpy, 2, y), 12)) continue;
-          object++;
-          if (off(f, g, 24)) changed++;
-        }
-      }
+      const { object, changed } = objectChange(flat, bumpy);
       console.log(`${backend}: displaced 3D view at dolly ${(await view3d()).dolly.toFixed(2)}: ${changed} of ${object} object pixels changed`);
       if (backend === 'webgpu') fs.writeFileSync(path.join(SHOTS, 'view3d-displaced.png'), PNG.sync.write(bumpy));
       assert.ok(object > 500 && changed > 0.3 * object, `displacing changed ${changed} of ${object} object pixels`);

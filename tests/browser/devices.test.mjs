@@ -94,13 +94,13 @@ test.after(async () => { await browser.close(); site.server.close(); });
 
 test('a ratio-2 laptop: device-pixel backing store, CSS-px hooks, the CLI render at 2×', { timeout: 600_000 }, async () => {
   const { file, design } = example('v3-drops');
-  const { page, context, errors } = await openPage(browser, site, linkFragment(design, 'dpr2'), { width: 1440, height: 900 }, { deviceScaleFactor: 2 });
+  const { page, context, errors } = await openPage(browser, site, linkFragment(design, 'dpr2'), { width: 1024, height: 640 }, { deviceScaleFactor: 2 });
   await waitOps(page, design.ops.length);
   const store = await page.evaluate(() => {
     const c = document.getElementById('marbling_canvas');
     return [c.width, c.height, c.getBoundingClientRect().width, c.getBoundingClientRect().height];
   });
-  assert.deepEqual(store, [2880, 1800, 1440, 900], 'backing store = CSS size × devicePixelRatio');
+  assert.deepEqual(store, [2048, 1280, 1024, 640], 'backing store = CSS size × devicePixelRatio');
   assert.equal(await attr(page, 'data-layout'), 'desktop');
   // One egui point is one CSS pixel: the side panel keeps its 240–360 px and the hooks
   // agree with each other (the canvas control holds the sheet).
@@ -108,8 +108,8 @@ test('a ratio-2 laptop: device-pixel backing store, CSS-px hooks, the CLI render
   assert.ok(c.canvas.x >= 240 && c.canvas.x <= 380, `canvas starts at ${c.canvas.x} CSS px`);
   const s = await sheet(page);
   assert.ok(s.x >= c.canvas.x && s.x + design.width * s.scale <= c.canvas.x + c.canvas.w + 1, `sheet at ${s.x} outside the canvas control`);
-  await sheetMatchesCli(page, file, design, 'laptop 1440×900 @2');
-  await page.screenshot({ path: path.join(SHOTS, 'hidpi-1440x900@2.png'), timeout: READY_MS });
+  await sheetMatchesCli(page, file, design, 'laptop 1024×640 @2');
+  await page.screenshot({ path: path.join(SHOTS, 'hidpi-1024x640@2.png'), timeout: READY_MS });
 
   assert.deepEqual(errors, []);
   await context.close();

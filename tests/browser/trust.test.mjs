@@ -11,7 +11,7 @@ import path from 'node:path';
 import zlib from 'node:zlib';
 import { PNG } from 'pngjs';
 import {
-  MARBLING, READY_MS, attr, clickControl, crop, decode, differing, dropFile, example,
+  DESKTOP, MARBLING, READY_MS, attr, clickControl, crop, decode, differing, dropFile, example,
   linkFragment, sharedBrowser, sheet, shootSheet, twoColourPng, waitOps, waitReady,
 } from './harness.mjs';
 
@@ -222,7 +222,7 @@ function halve(img) {
 
 /** A fresh profile (no autosave: a first visit) at `hash`, with its page errors. */
 async function freshVisit(browser, site, hash) {
-  const context = await browser.newContext({ viewport: { width: 1100, height: 760 }, deviceScaleFactor: 1, acceptDownloads: true, serviceWorkers: 'block' });
+  const context = await browser.newContext({ viewport: DESKTOP, deviceScaleFactor: 1, acceptDownloads: true, serviceWorkers: 'block' });
   const page = await context.newPage();
   const errors = [];
   page.on('pageerror', (e) => errors.push(String(e)));

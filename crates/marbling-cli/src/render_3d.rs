@@ -1,7 +1,9 @@
 //! `marbling render-3d`: the design on a 3D object, every sample walked back through
 //! every op (or, with `--texture`, sampled from a baked raster for comparison). With
 //! `--turn`, a loop of the object turning (the camera orbiting about the vertical axis)
-//! as an animated PNG or GIF.
+//! as an animated PNG or GIF. With `--style`, marks (Bénard et al. 2010) or fibres
+//! (Kaplan & Cohen 2005) laid over every frame, flat on the screen yet moving with the
+//! object.
 
 use crate::backend::{Backend, gpu_renderer};
 use crate::input::read_design;
@@ -9,8 +11,10 @@ use crate::loop_file::{Format, check_fps, check_frames, write_loop};
 use crate::size::Size;
 use anyhow::{Context, Result, bail};
 use clap::Args;
+use marbling_core::view3d::style::apply_style;
 use marbling_core::view3d::{Camera, Displace, Shape, View3d, render_3d};
-use marbling_core::{Antialias, Point};
+use marbling_core::{Antialias, Design, Point, RgbaImage};
+use marbling_noise::{STYLE_KINDS, StyleKind, StyleSpec};
 use std::time::Instant;
 
 /// Arguments of `marbling render-3d`.
@@ -50,6 +54,15 @@ pub struct Render3dArgs {
     /// unless given (lacunarity 2, persistence 0.5).
     #[arg(long, value_name = "S,F", value_parser = parse_displace)]
     displace: Option<Displace>,
+    /// Style laid over the render: hatching, stipple, crosshatch or graphite (Gabor
+    /// marks sized in screen pixels, anchored on the surface), paper or canvas (fibres
+    /// of a constant screen length), or none.
+    #[arg(long, value_name = "STYLE")]
+    style: Option<String>,
+    /// A style spec (JSON, grammar in marbling-noise's README): its `style` names the
+    /// preset, its other fields override it.
+    #[arg(long, value_name = "STYLE.json")]
+    style_spec: Option<String>,
     /// Write a loop of the camera turning this many degrees about the vertical axis
     /// (360: once round; negative: the other way), frame k at yaw + DEG·k/N.
     #[arg(
@@ -150,20 +163,21 @@ pub fn run(args: &Render3dArgs) -> Result<()> {
     if let Err(e) = view.check(&design) {
         bail!("{e}");
     }
+    let style = read_style(args)?;
     if let Some(turn) = args.turn {
-        return write_turn(args, &design, &view, turn);
+        return write_turn(args, &design, &view, style.as_ref(), turn);
     }
     let mut out = std::fs::File::create(&args.output)
         .with_context(|| format!("cannot write '{}'", args.output))?;
     let gpu = renderer(args.backend)?;
     let mut times = Vec::new();
     let mut image = None;
+    let mut marks = String::new();
     for _ in 0..args.repeat.max(1) {
         let start = Instant::now();
-        image = Some(match &gpu {
-            None => render_3d(&design, &view)?,
-            Some(gpu) => gpu.render_3d(&design, &view)?,
-        });
+        let (frame, what) = draw(gpu.as_ref(), &design, &view, style.as_ref())?;
+        image = Some(frame);
+        marks = what;
         times.push(start.elapsed().as_secs_f64());
     }
     let image = image.unwrap_or_else(|| unreachable!("at least one frame is rendered"));
@@ -172,7 +186,7 @@ pub fn run(args: &Render3dArgs) -> Result<()> {
     std::io::Write::write_all(&mut out, &image.to_png()?)
         .with_context(|| format!("cannot write '{}'", args.output))?;
     println!(
-        "{}: {} on a {}, {} px, zoom {}, {} ops, aa {}, {}, backend {}, rendered in {:.3} s{}",
+        "{}: {} on a {}, {} px, zoom {}, {} ops, aa {}, {}, backend {}{marks}, rendered in {:.3} s{}",
         args.output,
         if args.texture.is_some() {
             "texture-mapped design"
@@ -199,11 +213,77 @@ pub fn run(args: &Render3dArgs) -> Result<()> {
     Ok(())
 }
 
+/// The style of `--style` and `--style-spec`, if any.
+fn read_style(args: &Render3dArgs) -> Result<Option<StyleSpec>> {
+    let named = match args.style.as_deref() {
+        None | Some("none") => None,
+        Some(name) => match StyleKind::from_name(name) {
+            Some(kind) => Some(kind),
+            None => {
+                let names: Vec<&str> = STYLE_KINDS.iter().map(|(n, _)| *n).collect();
+                bail!(
+                    "--style must be one of {}, none, got {name:?}",
+                    names.join(", ")
+                );
+            }
+        },
+    };
+    let Some(path) = &args.style_spec else {
+        return Ok(named.map(StyleSpec::preset));
+    };
+    let text = std::fs::read_to_string(path).with_context(|| format!("cannot read '{path}'"))?;
+    let spec = StyleSpec::from_json(&text).map_err(|e| anyhow::anyhow!("{path}: {e}"))?;
+    if let Some(kind) = named
+        && kind != spec.kind
+    {
+        bail!(
+            "--style {} disagrees with {path}'s \"style\": \"{}\"",
+            kind.name(),
+            spec.kind.name()
+        );
+    }
+    Ok(Some(spec))
+}
+
+/// One frame of `view`, styled; and what the style drew, for the report.
+fn draw(
+    gpu: Option<&marbling_gpu::GpuRenderer>,
+    design: &Design,
+    view: &View3d,
+    style: Option<&StyleSpec>,
+) -> Result<(RgbaImage, String)> {
+    let mut image = match gpu {
+        None => render_3d(design, view)?,
+        Some(gpu) => gpu.render_3d(design, view)?,
+    };
+    let Some(spec) = style else {
+        return Ok((image, String::new()));
+    };
+    let start = Instant::now();
+    let frame = apply_style(design, view, spec, &mut image)?;
+    let seconds = start.elapsed().as_secs_f64();
+    let what = if spec.kind.is_fibres() {
+        format!(
+            ", style {} ({} fibres, {seconds:.3} s)",
+            spec.kind.name(),
+            frame.fibres.len()
+        )
+    } else {
+        format!(
+            ", style {} ({} kernels, {seconds:.3} s)",
+            spec.kind.name(),
+            frame.kernels
+        )
+    };
+    Ok((image, what))
+}
+
 /// Writes the loop of `view` turning `turn` degrees over `args.frames` frames.
 fn write_turn(
     args: &Render3dArgs,
-    design: &marbling_core::Design,
+    design: &Design,
     view: &View3d,
+    style: Option<&StyleSpec>,
     turn: f64,
 ) -> Result<()> {
     let format = Format::from_path(&args.output)?;
@@ -227,10 +307,7 @@ fn write_turn(
         |_| (1, args.fps as u16),
         |k| {
             let frame = view.turned(design, turn * k as f64 / n as f64);
-            Ok(match &gpu {
-                None => render_3d(design, &frame)?,
-                Some(gpu) => gpu.render_3d(design, &frame)?,
-            })
+            Ok(draw(gpu.as_ref(), design, &frame, style)?.0)
         },
     )?;
     let seconds = start.elapsed().as_secs_f64();

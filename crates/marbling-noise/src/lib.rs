@@ -40,6 +40,8 @@ mod spec_edit;
 mod spec_reader;
 mod spec_writer;
 pub mod stack_gpu;
+pub mod style;
+mod style_reader;
 mod transfer;
 mod value;
 pub mod wgsl;
@@ -77,6 +79,10 @@ pub use spec::{
     MAX_IMPULSES, NOISE_TYPES, NoiseSpec, Source, SpecError, Tile, Transfer, WhiteSpec, WorleySpec,
 };
 pub use spec_edit::{EDIT_FLOOR, FEATURE_PX};
+pub use style::{
+    ANCHORINGS, Anchoring, DEPTH_TESTS, DepthTest, FOLLOWS, Fibres, Follow, Marks, STYLE_KINDS,
+    StyleKind, StyleSpec, lod_weights,
+};
 pub use transfer::{
     SplineDecay, SplineDecayTable, Threshold, hsv_to_rgb, hsv_value_blend, rgb_to_hsv, smoothstep,
 };

@@ -12,3 +12,5 @@ pub(crate) mod video;
 pub(crate) mod video_panel;
 pub(crate) mod view3d;
 pub(crate) mod view3d_displace;
+pub(crate) mod view3d_recording;
+pub(crate) mod view3d_style;

@@ -8,12 +8,14 @@
 //! *Turn* spins the camera about the object at a chosen speed, *dolly* moves it in or
 //! out, and *Record* films one whole turn of the pane (antialiased frames, read back and
 //! handed to the recorder as they are drawn) to `marbling-3d-turn.webm`. *Displace*
-//! moves the surface by Perlin noise ([`super::view3d_displace`]).
+//! moves the surface by Perlin noise ([`super::view3d_displace`]); *Style* lays marks or
+//! fibres over the panes ([`super::view3d_style`]).
 
 use crate::gpu::canvas_gpu::CANVAS_FORMAT;
-use crate::media::recorder::Recorder;
 use crate::media::step_clock::StepClock;
 use crate::media::view3d_displace::DisplaceControls;
+use crate::media::view3d_recording::{TURN_VIDEO, TurnRecording};
+use crate::media::view3d_style::StyleControls;
 use eframe::egui_wgpu;
 use marbling_core::view3d::{Camera, MAX_DOLLY, MAX_ZOOM, MIN_DOLLY, Shape, View3d};
 use marbling_core::{Antialias, Design};
@@ -29,21 +31,6 @@ const WINDOW_MAX_ZOOM: f64 = 2000.0;
 pub const MAX_TURN_SPEED: f64 = 180.0;
 /// Turn speed at the start, degrees per second.
 const DEFAULT_TURN_SPEED: f64 = 30.0;
-/// The file a recorded turn downloads as.
-pub const TURN_VIDEO: &str = "marbling-3d-turn.webm";
-
-/// A turn being filmed.
-struct TurnRecording {
-    recorder: Recorder,
-    /// Pane size the video has, pixels.
-    size: [u32; 2],
-    /// Degrees turned since it began (one whole turn ends it).
-    turned: f64,
-    /// Frames handed to the recorder.
-    frames: u32,
-    /// The last frame drawn, on its way back from the GPU.
-    reading: Option<PendingRead>,
-}
 
 /// What one frame was drawn for (a new frame is drawn when it changes).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -90,6 +77,8 @@ pub struct View3dWindow {
     turn_clock: StepClock,
     /// The surface's displacement and its flow.
     pub displace: DisplaceControls,
+    /// The marks or fibres laid over the panes.
+    pub style: StyleControls,
     recording: Option<TurnRecording>,
     /// What the last recording left (shown under the panes).
     note: Option<String>,
@@ -116,6 +105,7 @@ impl Default for View3dWindow {
             turn_speed: DEFAULT_TURN_SPEED,
             turn_clock: StepClock::default(),
             displace: DisplaceControls::default(),
+            style: StyleControls::default(),
             recording: None,
             note: None,
             panes: None,
@@ -146,6 +136,7 @@ impl View3dWindow {
                 "turning": self.turning,
                 "speed": self.turn_speed,
                 "displace": self.displace.hook(),
+                "style": self.style.hook(),
                 "recording": self.recording.as_ref().map(|r| {
                     serde_json::json!({"turned": r.turned, "frames": r.frames})
                 }),
@@ -172,45 +163,24 @@ impl View3dWindow {
 
     /// Starts filming one turn of the pane of `size` pixels (turning it if it stands).
     fn start_recording(&mut self, size: [u32; 2]) {
-        match Recorder::start_frames(size[0], size[1]) {
-            Ok(recorder) => {
+        match TurnRecording::start(size) {
+            Ok(recording) => {
                 if self.turn_speed == 0.0 {
                     self.turn_speed = DEFAULT_TURN_SPEED;
                 }
                 self.turning = true;
                 self.note = None;
-                self.recording = Some(TurnRecording {
-                    recorder,
-                    size,
-                    turned: 0.0,
-                    frames: 0,
-                    reading: None,
-                });
+                self.recording = Some(recording);
             }
             Err(e) => self.error = Some(e),
         }
     }
 
-    /// Ends the recording; its video downloads (`whole`: after one whole turn), with a
-    /// note saying so, unless no frame came back in time.
+    /// Ends the recording (`whole`: after one whole turn), leaving its note.
     fn finish_recording(&mut self, whole: bool) {
-        let Some(r) = self.recording.take() else {
-            return;
-        };
-        if r.frames == 0 {
-            r.recorder.discard();
-            self.note = Some(
-                "the recording ended before a frame came back from the GPU: nothing to save"
-                    .to_owned(),
-            );
-            return;
+        if let Some(r) = self.recording.take() {
+            self.note = Some(r.finish(whole));
         }
-        r.recorder.finish(TURN_VIDEO);
-        self.note = Some(if whole {
-            format!("recorded one turn: {TURN_VIDEO}")
-        } else {
-            format!("recording stopped after {:.0}°: {TURN_VIDEO}", r.turned)
-        });
     }
 
     /// Hands the recording a frame that came back from the GPU, and ends it after one
@@ -219,28 +189,10 @@ impl View3dWindow {
         let Some(r) = &mut self.recording else {
             return;
         };
-        // Native backends deliver the map from `poll`; on the web it is a no-op.
-        let _ = device.poll(wgpu::PollType::Poll);
-        if let Some(reading) = &r.reading {
-            let [w, h] = r.size;
-            let mut rgba = Vec::new();
-            match reading.rows(|_, row| rgba.extend_from_slice(row)) {
-                None => {}
-                Some(outcome) => {
-                    r.reading = None;
-                    let pushed = outcome
-                        .map_err(|e| e.to_string())
-                        .and_then(|()| r.recorder.push_frame(w, h, &rgba));
-                    if let Err(e) = pushed {
-                        self.error = Some(format!("recording the turn failed: {e}"));
-                        self.finish_recording(false);
-                        return;
-                    }
-                    r.frames += 1;
-                }
-            }
-        }
-        if r.turned >= 360.0 {
+        if let Err(e) = r.feed(device) {
+            self.error = Some(format!("recording the turn failed: {e}"));
+            self.finish_recording(false);
+        } else if r.turned >= 360.0 {
             self.finish_recording(true);
         }
     }
@@ -308,6 +260,7 @@ impl View3dWindow {
             self.finish_recording(false);
             self.turning = false;
             self.displace.flowing = false;
+            self.style.release();
             self.panes = None;
             self.drawn = None;
         }
@@ -392,7 +345,15 @@ impl View3dWindow {
                 );
             controls.push(("view3d-dolly".into(), r.rect));
         });
-        self.displace.ui(ui, controls);
+        // Folded by default: the pane keeps its height on a small screen.
+        let r = egui::CollapsingHeader::new("Displace")
+            .id_salt("view3d-displace-section")
+            .show(ui, |ui| self.displace.ui(ui, controls));
+        controls.push(("view3d-displace-section".into(), r.header_response.rect));
+        let r = egui::CollapsingHeader::new(format!("Style: {}", self.style.name()))
+            .id_salt("view3d-style-section")
+            .show(ui, |ui| self.style.ui(ui, controls));
+        controls.push(("view3d-style-section".into(), r.header_response.rect));
         ui.add(
             egui::Label::new(
                 "Drag to turn · click to centre a spot · wheel or pinch to zoom · \
@@ -411,7 +372,10 @@ impl View3dWindow {
         // Never wider than the screen (a window sized by its content would keep growing).
         let room = avail.x.min(ui.ctx().content_rect().width() - 40.0);
         let width = ((room - gap * (panes - 1.0)) / panes).clamp(120.0, 1400.0);
-        let height = (width * 0.75).min(avail.y.max(160.0)).max(100.0);
+        // Down to the screen's bottom less a line for notes, not the window's remembered
+        // height (which only grows): the pane's size follows the rows above it alone.
+        let below = ui.ctx().content_rect().bottom() - ui.cursor().top() - 40.0;
+        let height = (width * 0.75).min(below.max(160.0)).max(100.0);
         let size_pt = egui::vec2(width, height);
         let size_px = [
             (size_pt.x * ppp).round().max(16.0) as u32,
@@ -431,10 +395,21 @@ impl View3dWindow {
         let mut interacting = self.step_turn(ui.ctx());
         interacting |= self.displace.step(ui.ctx());
         let textures = self.ensure_panes(rs, size_px);
+        let overlay = self.style.overlay(
+            ui.ctx(),
+            design,
+            design_key,
+            &self.view(size_px, Antialias::None, None),
+        );
         ui.horizontal(|ui| {
             for (i, tex) in textures.iter().take(panes as usize).enumerate() {
                 let image = egui::Image::new((*tex, size_pt)).sense(egui::Sense::click_and_drag());
                 let r = ui.add(image);
+                if let Some(overlay) = overlay {
+                    let uv = egui::Rect::from_min_max(egui::pos2(0.0, 0.0), egui::pos2(1.0, 1.0));
+                    ui.painter()
+                        .image(overlay, r.rect, uv, egui::Color32::WHITE);
+                }
                 controls.push((format!("view3d-pane-{i}").into(), r.rect));
                 interacting |= self.orbit(ui, &r, design, size_px);
             }

@@ -266,3 +266,89 @@ fn render_3d_displace_moves_the_surface_and_refuses_bad_numbers() {
         );
     }
 }
+
+#[test]
+fn render_3d_styles_lay_marks_or_fibres_over_the_render_and_refuse_bad_specs() {
+    let dir = workdir("style");
+    let d = random_design(37, 160, 120, 30, Mix::DropHeavy);
+    let design = path(&dir, "design.json");
+    std::fs::write(&design, d.to_value().to_string()).expect("design");
+    let render = |name: &str, extra: &[&str]| {
+        let out = path(&dir, name);
+        let mut args = vec!["render-3d", &design, "-o", &out, "--surface", "sphere"];
+        args.extend(["--size", "64x48", "--aa", "none"]);
+        args.extend(extra.iter().copied());
+        let report = ok(&args);
+        (read_png(&out), report)
+    };
+    let (plain, _) = render("plain.png", &[]);
+    assert_eq!(
+        render("none.png", &["--style", "none"]).0.pixels,
+        plain.pixels
+    );
+    let (hatched, report) = render("hatching.png", &["--style", "hatching"]);
+    assert!(report.contains("style hatching ("), "{report}");
+    let changed = compare(&plain, &hatched, 24).expect("same size").fraction();
+    assert!(changed > 0.05, "hatching changed {changed} of the pixels");
+    let (paper, report) = render("paper.png", &["--style", "paper"]);
+    assert!(
+        report.contains("style paper (") && report.contains(" fibres, "),
+        "{report}"
+    );
+    assert_ne!(paper.pixels, plain.pixels);
+    // A spec: red stipples.
+    let spec = path(&dir, "red.json");
+    std::fs::write(
+        &spec,
+        r##"{"style":"stipple","ink":"#ff0000","opacity":1}"##,
+    )
+    .expect("spec");
+    let (red, _) = render("red.png", &["--style-spec", &spec]);
+    let reddish = red
+        .pixels
+        .chunks_exact(4)
+        .filter(|p| p[0] > 200 && p[1] < 60 && p[2] < 60)
+        .count();
+    assert!(reddish > 20, "{reddish} red pixels");
+    // A turning loop carries the style on every frame.
+    let gif = path(&dir, "turn.gif");
+    let report = ok(&[
+        "render-3d",
+        &design,
+        "-o",
+        &gif,
+        "--surface",
+        "sphere",
+        "--size",
+        "64x48",
+        "--style",
+        "canvas",
+        "--turn",
+        "30",
+        "--frames",
+        "3",
+    ]);
+    assert!(report.contains("3 frames"), "{report}");
+    let bad = path(&dir, "bad.json");
+    std::fs::write(&bad, r#"{"style":"stipple","tone":9}"#).expect("spec");
+    for (args, expected) in [
+        (
+            vec!["--style", "oil"],
+            "--style must be one of hatching, stipple",
+        ),
+        (
+            vec!["--style-spec", bad.as_str()],
+            "tone: must be a number from -4 to 4, got 9",
+        ),
+        (
+            vec!["--style", "paper", "--style-spec", spec.as_str()],
+            "--style paper disagrees with",
+        ),
+        (
+            vec!["--style-spec", "missing.json"],
+            "cannot read 'missing.json'",
+        ),
+    ] {
+        render_3d_fails(&design, &path(&dir, "bad.png"), &args, expected);
+    }
+}

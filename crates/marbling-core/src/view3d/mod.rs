@@ -24,6 +24,7 @@
 pub mod displace;
 mod relief;
 mod shapes;
+pub mod style;
 mod vec3;
 
 pub use displace::Displace;

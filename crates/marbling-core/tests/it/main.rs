@@ -15,3 +15,4 @@ mod snapshots_v2;
 mod snapshots_v3;
 mod view3d;
 mod view3d_displace;
+mod view3d_style;
