@@ -10,7 +10,7 @@ import path from 'node:path';
 import { PNG } from 'pngjs';
 import zlib from 'node:zlib';
 import {
-  BACKENDS, MARBLING, READY_MS, SHOTS, attr, clickControl, controls, crop, decode, differing, download, example,
+  BACKENDS, DESKTOP, MARBLING, READY_MS, SHOTS, attr, clickControl, controls, crop, decode, differing, download, example,
   launch, openPage, sheet, shootSheet, waitOps, waitReady,
 } from './harness.mjs';
 
@@ -132,7 +132,7 @@ for (const backend of Object.keys(BACKENDS)) {
     });
 
     test('A first visit lands on the gallery: prerendered thumbnails, a pattern opens, a blank sheet', webgl2Only, async () => {
-      const context = await browser.newContext({ viewport: { width: 1300, height: 820 }, deviceScaleFactor: 1, acceptDownloads: true });
+      const context = await browser.newContext({ viewport: DESKTOP, deviceScaleFactor: 1, acceptDownloads: true });
       const page = await context.newPage();
       const errors = [];
       page.on('pageerror', (e) => errors.push(String(e)));

@@ -152,6 +152,7 @@ impl MarblingApp {
                     .then(|| self.panels.view3d.frames.to_string()),
             ),
             ("data-view3d", self.panels.view3d.hook()),
+            ("data-midi-learning", self.panels.midi.learning_hook()),
             ("data-preview-ready", preview_ready.then(|| "1".to_owned())),
             ("data-qr", self.panels.qr.hook()),
             (

@@ -149,6 +149,12 @@ pub fn note_drop(note: u8, velocity: u8, line: [Point; 2], radius: f64, color: R
 }
 
 impl MidiPanel {
+    /// The `data-midi-learning` hook: the control name of the *Learn* button waiting
+    /// for a controller.
+    pub fn learning_hook(&self) -> Option<String> {
+        self.learning.map(|t| t.control().to_owned())
+    }
+
     /// Whether the next drag on the sheet draws the line (the canvas then calls
     /// [`Self::draw_line`] instead of driving the tool).
     pub fn drawing_line(&self) -> bool {
