@@ -225,9 +225,9 @@ impl StyleSpec {
                 0.8,
             ),
             StyleKind::Graphite => (
-                marks(0.2, 0.06, 32.0, 60.0, -0.1, 0.7),
-                [0.22, 0.22, 0.25],
-                0.7,
+                marks(0.2, 0.06, 32.0, 60.0, 0.4, 0.7),
+                [0.18, 0.18, 0.21],
+                0.85,
             ),
         };
         let (fibres, ink, opacity) = match kind {
