@@ -47,6 +47,17 @@ pub enum SpecError {
     Invalid(Vec<FieldError>),
 }
 
+impl SpecError {
+    /// Parses JSON text, a syntax error as [`SpecError::Syntax`].
+    pub(crate) fn parse(text: &str) -> Result<Value, SpecError> {
+        marbling_json::parse(text).map_err(|e| SpecError::Syntax {
+            line: e.line,
+            column: e.column,
+            message: e.message,
+        })
+    }
+}
+
 /// How a Gabor parameter is driven by another field.
 #[derive(Clone, Debug, PartialEq)]
 pub struct DriveSpec {
@@ -287,12 +298,7 @@ impl NoiseSpec {
 
     /// Parses and checks a spec; every problem is reported with its path.
     pub fn from_json(text: &str) -> Result<Self, SpecError> {
-        let value = marbling_json::parse(text).map_err(|e| SpecError::Syntax {
-            line: e.line,
-            column: e.column,
-            message: e.message,
-        })?;
-        Self::from_value(&value)
+        Self::from_value(&SpecError::parse(text)?)
     }
 
     /// Parses and checks a spec given as a JSON value.

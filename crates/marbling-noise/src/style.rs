@@ -277,12 +277,7 @@ impl StyleSpec {
     /// Reads a style spec from JSON text (grammar in the crate README): `style` names
     /// the preset, every other field overrides it.
     pub fn from_json(text: &str) -> Result<Self, SpecError> {
-        let value = marbling_json::parse(text).map_err(|e| SpecError::Syntax {
-            line: e.line,
-            column: e.column,
-            message: e.message,
-        })?;
-        crate::style_reader::read_style(&value).map_err(SpecError::Invalid)
+        crate::style_reader::read_style(&SpecError::parse(text)?).map_err(SpecError::Invalid)
     }
 
     /// The spec as JSON, every field written (reads back to the same spec).
