@@ -215,7 +215,6 @@ impl StyleControls {
                 "kernels": self.drawn.0,
                 "fibres": self.drawn.1,
                 "ms": self.drawn.2,
-                "spec": spec.to_json(),
             }),
         }
     }

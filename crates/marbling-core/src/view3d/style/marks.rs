@@ -17,11 +17,10 @@
 //! noise in the surface's texture space, sized for zoom 1: the marks shrink as the object
 //! recedes).
 
-use super::scene::{Face, Patch, Scene, base_patches, face_point, uv_extent};
+use super::scene::{Face, Patch, Scene, base_patches, face_point, map_range, uv_extent};
 use marbling_noise::{
     Anchoring, CellRng, DepthTest, Follow, Gabor, GaborKind, GaborParams, Marks, lod_weights,
 };
-use rayon::prelude::*;
 use std::f64::consts::PI;
 
 /// How many kernel radii (in object units at the kernel's distance) a pixel's depth may
@@ -110,16 +109,13 @@ fn naive(
 ) -> Vec<f32> {
     let gabor = Gabor::new(layer.params());
     let w = scene.width as usize;
-    (0..scene.depth.len())
-        .into_par_iter()
-        .map(|i| {
-            if !scene.depth[i].is_finite() {
-                return f32::NAN;
-            }
-            let (x, y) = ((i % w) as f64 + 0.5, (i / w) as f64 + 0.5);
-            at(x, y, scene.uv[i]).map_or(f32::NAN, |(x, y)| gabor.eval(x as f32, y as f32))
-        })
-        .collect()
+    map_range(scene.depth.len(), |i| {
+        if !scene.depth[i].is_finite() {
+            return f32::NAN;
+        }
+        let (x, y) = ((i % w) as f64 + 0.5, (i / w) as f64 + 0.5);
+        at(x, y, scene.uv[i]).map_or(f32::NAN, |(x, y)| gabor.eval(x as f32, y as f32))
+    })
 }
 
 /// The visible kernels of every patch facing the camera.
@@ -127,10 +123,13 @@ pub(super) fn kernels(scene: &Scene, layer: &Layer) -> Vec<Kernel> {
     let params = layer.params();
     let r = f64::from(params.radius());
     let lambda = f64::from(layer.marks.impulses) / (PI * r * r);
-    base_patches(&scene.object)
-        .par_iter()
-        .flat_map_iter(|patch| patch_kernels(scene, layer, patch, lambda))
-        .collect()
+    let patches = base_patches(&scene.object);
+    map_range(patches.len(), |i| {
+        patch_kernels(scene, layer, &patches[i], lambda)
+    })
+    .into_iter()
+    .flatten()
+    .collect()
 }
 
 fn patch_kernels(scene: &Scene, layer: &Layer, patch: &Patch, lambda: f64) -> Vec<Kernel> {
@@ -215,8 +214,7 @@ fn splat(scene: &Scene, layer: &Layer, kernels: &[Kernel], depth_test: DepthTest
         let b = (k.y.max(0.0) as usize / band).min(buckets.len() - 1);
         buckets[b].push(i);
     }
-    let mut out = vec![0.0f32; w * h];
-    out.par_chunks_mut(w).enumerate().for_each(|(y, row)| {
+    let rows = map_range(h, |y| {
         let py = y as f64 + 0.5;
         let b = y / band;
         let near = b.saturating_sub(1)..=(b + 1).min(buckets.len() - 1);
@@ -257,13 +255,15 @@ fn splat(scene: &Scene, layer: &Layer, kernels: &[Kernel], depth_test: DepthTest
                 *cell += keep * k.weight * envelope * wave;
             }
         }
-        for (x, v) in row.iter_mut().enumerate() {
-            *v = if scene.depth[y * w + x].is_finite() {
-                (acc[x] * scale) as f32
-            } else {
-                f32::NAN
-            };
-        }
+        (0..w)
+            .map(|x| {
+                if scene.depth[y * w + x].is_finite() {
+                    (acc[x] * scale) as f32
+                } else {
+                    f32::NAN
+                }
+            })
+            .collect::<Vec<f32>>()
     });
-    out
+    rows.into_iter().flatten().collect()
 }

@@ -5,7 +5,6 @@
 
 use super::super::{Object, Rig, Shape, View3d, shapes::Material, vec3::Vec3};
 use crate::Design;
-use rayon::prelude::*;
 use std::f64::consts::PI;
 
 /// A frame's per-pixel facts and its camera.
@@ -31,27 +30,25 @@ impl Scene {
         let object = view.object(design);
         let rig = view.rig(design);
         let (w, h) = (f64::from(view.width), f64::from(view.height));
-        let rows: Vec<Vec<(f32, f32, [f32; 2])>> = (0..view.height)
-            .into_par_iter()
-            .map(|y| {
-                (0..view.width)
-                    .map(|x| {
-                        let d = rig.ray(f64::from(x) + 0.5, f64::from(y) + 0.5, w, h);
-                        match object.hit(rig.origin, d) {
-                            None => (f32::INFINITY, 0.0, [f32::NAN; 2]),
-                            Some(hit) => {
-                                let light = hit.normal.dot(-rig.forward).max(0.0) as f32;
-                                let uv = match hit.material {
-                                    Material::Design(u, v) => [u as f32, v as f32],
-                                    _ => [f32::NAN; 2],
-                                };
-                                (hit.t as f32, light, uv)
-                            }
+        let rows: Vec<Vec<(f32, f32, [f32; 2])>> = map_range(view.height as usize, |y| {
+            let y = y as u32;
+            (0..view.width)
+                .map(|x| {
+                    let d = rig.ray(f64::from(x) + 0.5, f64::from(y) + 0.5, w, h);
+                    match object.hit(rig.origin, d) {
+                        None => (f32::INFINITY, 0.0, [f32::NAN; 2]),
+                        Some(hit) => {
+                            let light = hit.normal.dot(-rig.forward).max(0.0) as f32;
+                            let uv = match hit.material {
+                                Material::Design(u, v) => [u as f32, v as f32],
+                                _ => [f32::NAN; 2],
+                            };
+                            (hit.t as f32, light, uv)
                         }
-                    })
-                    .collect()
-            })
-            .collect();
+                    }
+                })
+                .collect()
+        });
         let n = (view.width * view.height) as usize;
         let (mut depth, mut light, mut uv) = (
             Vec::with_capacity(n),
@@ -110,6 +107,20 @@ impl Scene {
     pub fn shows(&self, x: f64, y: f64, t: f64, tolerance: f64) -> bool {
         self.pixel(x, y)
             .is_some_and(|i| (f64::from(self.depth[i]) - t).abs() <= tolerance)
+    }
+}
+
+/// `f` of 0..n in order, on every core off the web; in order on one thread in wasm, where
+/// rayon's machinery would only add to the module's size.
+pub(super) fn map_range<T: Send>(n: usize, f: impl Fn(usize) -> T + Sync + Send) -> Vec<T> {
+    #[cfg(not(target_arch = "wasm32"))]
+    {
+        use rayon::prelude::*;
+        (0..n).into_par_iter().map(f).collect()
+    }
+    #[cfg(target_arch = "wasm32")]
+    {
+        (0..n).map(f).collect()
     }
 }
 
