@@ -86,6 +86,13 @@ pub const ANCHORINGS: [(&str, Anchoring); 3] = [
     ("texture", Anchoring::Texture),
 ];
 
+impl Anchoring {
+    /// The anchoring's name in [`ANCHORINGS`].
+    pub fn name(self) -> &'static str {
+        name(&ANCHORINGS, self)
+    }
+}
+
 /// How a kernel's mark is kept from showing on a part of the object its centre is not
 /// on (a hidden kernel is never drawn).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -230,37 +237,24 @@ impl StyleSpec {
                 0.85,
             ),
         };
+        let paper = Fibres {
+            per_pixel: 0.05,
+            length: [20.0, 40.0],
+            width: [1.0, 3.0],
+            weave: [1.0, 1.0],
+        };
         let (fibres, ink, opacity) = match kind {
-            StyleKind::Paper => (
-                Fibres {
-                    per_pixel: 0.05,
-                    length: [20.0, 40.0],
-                    width: [1.0, 3.0],
-                    weave: [1.0, 1.0],
-                },
-                [0.35, 0.32, 0.24],
-                0.12,
-            ),
+            StyleKind::Paper => (paper, [0.35, 0.32, 0.24], 0.12),
             StyleKind::Canvas => (
                 Fibres {
                     per_pixel: 0.06,
-                    length: [20.0, 40.0],
                     width: [2.0, 3.0],
-                    weave: [1.0, 1.0],
+                    ..paper
                 },
                 [0.30, 0.27, 0.20],
                 0.12,
             ),
-            _ => (
-                Fibres {
-                    per_pixel: 0.05,
-                    length: [20.0, 40.0],
-                    width: [1.0, 3.0],
-                    weave: [1.0, 1.0],
-                },
-                ink,
-                opacity,
-            ),
+            _ => (paper, ink, opacity),
         };
         Self {
             kind,
@@ -304,7 +298,7 @@ impl StyleSpec {
             "weave": f.weave,
             "ink": hex(self.ink),
             "opacity": self.opacity,
-            "anchoring": name(&ANCHORINGS, self.anchoring),
+            "anchoring": self.anchoring.name(),
             "depth_test": name(&DEPTH_TESTS, self.depth_test),
             "seed": self.seed,
         })

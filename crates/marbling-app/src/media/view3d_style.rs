@@ -78,7 +78,7 @@ impl StyleControls {
                     .show_ui(ui, |ui| {
                         for a in [Anchoring::Surface, Anchoring::Screen, Anchoring::Texture] {
                             let r = ui.selectable_value(&mut spec.anchoring, a, anchoring_label(a));
-                            let name = anchoring_name(a);
+                            let name = a.name();
                             controls
                                 .push((format!("view3d-style-anchoring-{name}").into(), r.rect));
                         }
@@ -211,7 +211,7 @@ impl StyleControls {
             None => serde_json::Value::Null,
             Some(spec) => serde_json::json!({
                 "style": spec.kind.name(),
-                "anchoring": anchoring_name(spec.anchoring),
+                "anchoring": spec.anchoring.name(),
                 "kernels": self.drawn.0,
                 "fibres": self.drawn.1,
                 "ms": self.drawn.2,
@@ -226,13 +226,6 @@ fn anchoring_label(a: Anchoring) -> &'static str {
         Anchoring::Screen => "on the screen (2D noise)",
         Anchoring::Texture => "as a texture",
     }
-}
-
-fn anchoring_name(a: Anchoring) -> &'static str {
-    marbling_noise::ANCHORINGS
-        .iter()
-        .find(|(_, k)| *k == a)
-        .map_or("surface", |(n, _)| n)
 }
 
 #[cfg(test)]

@@ -24,7 +24,7 @@ mod marks;
 mod scene;
 
 pub use fibres::{BACKDROP_CELL, FIBRE_LIST, Fibre, MAX_SPLITS};
-pub use marks::{DEPTH_TOLERANCE_RADII, Kernel, Layer};
+pub use marks::{DEPTH_TOLERANCE_RADII, Layer};
 
 use super::{View3d, View3dError};
 use crate::{Design, RgbaImage};
