@@ -11,7 +11,7 @@ use crate::loop_file::{Format, check_fps, check_frames, write_loop};
 use crate::size::Size;
 use anyhow::{Context, Result, bail};
 use clap::Args;
-use marbling_core::view3d::style::apply_style;
+use marbling_core::view3d::style::style_frame;
 use marbling_core::view3d::{Camera, Displace, Shape, View3d, render_3d};
 use marbling_core::{Antialias, Design, Point, RgbaImage};
 use marbling_noise::{STYLE_KINDS, StyleKind, StyleSpec};
@@ -252,16 +252,25 @@ fn draw(
     view: &View3d,
     style: Option<&StyleSpec>,
 ) -> Result<(RgbaImage, String)> {
-    let mut image = match gpu {
-        None => render_3d(design, view)?,
-        Some(gpu) => gpu.render_3d(design, view)?,
-    };
     let Some(spec) = style else {
+        let image = match gpu {
+            None => render_3d(design, view)?,
+            Some(gpu) => gpu.render_3d(design, view)?,
+        };
         return Ok((image, String::new()));
     };
     let start = Instant::now();
-    let frame = apply_style(design, view, spec, &mut image)?;
+    let frame = style_frame(design, view, spec)?;
     let seconds = start.elapsed().as_secs_f64();
+    // The GPU blends the overlay in its shader; the CPU composites it after the render.
+    let image = match gpu {
+        None => {
+            let mut image = render_3d(design, view)?;
+            frame.composite(&mut image);
+            image
+        }
+        Some(gpu) => gpu.render_3d_styled(design, view, Some(&frame))?,
+    };
     let what = if spec.kind.is_fibres() {
         format!(
             ", style {} ({} fibres, {seconds:.3} s)",

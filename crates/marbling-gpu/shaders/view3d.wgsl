@@ -31,11 +31,17 @@ struct View3dParams {
     // What the march's bounding volume adds to the object's extent (s·bound + margin),
     // march steps, bisection steps, the normal's finite-difference step.
     displace_march: vec4<f32>,
+    // The style's blend (0: none, 1: ink, 2: multiply, 3: overlay), the rest unused.
+    style: vec4<f32>,
+    // The style's ink, sRGB in [0, 1].
+    style_ink: vec4<f32>,
 }
 
 @group(1) @binding(0) var<uniform> view3d: View3dParams;
 // The design baked into a raster (lens.w > 0); 1×1 otherwise.
 @group(1) @binding(1) var baked: texture_2d<f32>;
+// The style field (style.x > 0): coverage, the overlay grey's byte/255, 0, 1 per pixel.
+@group(1) @binding(2) var style_field: texture_2d<f32>;
 
 const PI: f32 = 3.14159265358979;
 const MAT_DESIGN: u32 = 0u;
@@ -582,8 +588,32 @@ fn fs_view3d(@builtin(position) position: vec4<f32>) -> @location(0) vec4<f32> {
     if r.w > 0.5 && params.refine_count > 0u {
         r = average3d(pixel, params.first_count, params.refine_count);
     }
+    if view3d.style.x > 0.5 {
+        let field = textureLoad(style_field, vec2<i32>(pixel), 0);
+        let s = clamp(styled(linear_to_srgb(r.rgb), field), vec3<f32>(0.0), vec3<f32>(1.0));
+        if params.encode_srgb == 0u {
+            return vec4<f32>(srgb_to_linear(s), 1.0);
+        }
+        return vec4<f32>(s, 1.0);
+    }
     if params.encode_srgb == 0u {
         return vec4<f32>(r.rgb, 1.0);
     }
     return vec4<f32>(linear_to_srgb(r.rgb), 1.0);
+}
+
+// A pixel's sRGB colour under the style: marbling-core's view3d::style::blend_pixel, the
+// grey decoded as byte_grey (½ + (b − 128)/254).
+fn styled(base: vec3<f32>, field: vec4<f32>) -> vec3<f32> {
+    let c = field.x;
+    let g = 0.5 + (field.y * 255.0 - 128.0) / 254.0;
+    let ink = view3d.style_ink.rgb;
+    let blend = u32(view3d.style.x + 0.5);
+    if blend == 1u {
+        return base + (ink - base) * c;
+    }
+    if blend == 2u {
+        return base * (1.0 - c + c * ink);
+    }
+    return select(1.0 - 2.0 * (1.0 - base) * (1.0 - g), 2.0 * base * g, base < vec3<f32>(0.5));
 }

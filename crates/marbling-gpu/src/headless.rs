@@ -141,6 +141,17 @@ impl GpuRenderer {
         design: &Design,
         view: &marbling_core::view3d::View3d,
     ) -> Result<RgbaImage, GpuError> {
+        self.render_3d_styled(design, view, None)
+    }
+
+    /// [`GpuRenderer::render_3d`] with a style's overlay (of the view's size) blended in
+    /// by the shader, as `StyleFrame::composite` blends it on the CPU.
+    pub fn render_3d_styled(
+        &self,
+        design: &Design,
+        view: &marbling_core::view3d::View3d,
+        style: Option<&marbling_core::view3d::style::StyleFrame>,
+    ) -> Result<RgbaImage, GpuError> {
         let side = self.ctx.max_texture_side();
         if view.width > side || view.height > side {
             return Err(GpuError::Wgpu(format!(
@@ -156,6 +167,7 @@ impl GpuRenderer {
             if let Some(side) = view.texture {
                 renderer.bake(device, queue, &self.exact, &mut prepared, side);
             }
+            renderer.set_style(device, queue, style);
             renderer.set_view(queue, &mut prepared, design, view);
             let target = self.target(view.width, view.height);
             let mut encoder =

@@ -1,19 +1,23 @@
 //! The 3D view on the GPU (shaders/view3d.wgsl, appended to the exact renderer's
 //! module): the twin of `marbling_core::view3d`, every sample's ray meeting the object
 //! and its design point walked back through every op in the fragment shader. Bind
-//! group 0 is the design's ([`PreparedDesign`]), group 1 the camera and the optional
-//! baked texture of the "as a texture" comparison.
+//! group 0 is the design's ([`PreparedDesign`]), group 1 the camera, the optional
+//! baked texture of the "as a texture" comparison and the optional style field
+//! (`marbling_core::view3d::style::StyleFrame::field`), blended into each pixel as the
+//! CPU's `StyleFrame::composite` does.
 
 use crate::bindings;
 use crate::exact::{ExactRenderer, PreparedDesign, View};
 use crate::shaders::ExactVariant;
 use crate::target::RenderTarget;
 use crate::variants::Variants;
+use marbling_core::view3d::style::StyleFrame;
 use marbling_core::view3d::{
     AMBIENT, BACKDROP, BOOK_DEPTH, INSIDE_SHADE, PAGES, SPINE_SHADE, VASE_BISECTIONS, VASE_BOUND,
     VASE_STEPS, Vec3, View3d, displace,
 };
 use marbling_core::{Design, Rgb8};
+use marbling_noise::StyleBlend;
 
 /// `shaders/view3d.wgsl`.
 pub const VIEW3D: &str = include_str!("../shaders/view3d.wgsl");
@@ -68,6 +72,11 @@ pub struct View3dParams {
     /// The displaced march: what its bounding volume adds to the object's extent
     /// (s·bound + margin), steps, bisection steps, the normal's finite-difference step.
     pub displace_march: [f32; 4],
+    /// The style's blend (0: none, 1: ink, 2: multiply, 3: overlay; see
+    /// `marbling_noise::StyleBlend`), the rest unused.
+    pub style: [f32; 4],
+    /// The style's ink, sRGB in [0, 1] (w unused).
+    pub style_ink: [f32; 4],
 }
 
 fn v4(v: Vec3) -> [f32; 4] {
@@ -131,7 +140,18 @@ impl View3dParams {
                 displace::DISPLACE_BISECTIONS as f32,
                 displace::NORMAL_STEP as f32,
             ],
+            style: [0.0; 4],
+            style_ink: [0.0; 4],
         }
+    }
+}
+
+/// The `style` code of a blend in [`View3dParams::style`].
+fn blend_code(blend: StyleBlend) -> f32 {
+    match blend {
+        StyleBlend::Ink => 1.0,
+        StyleBlend::Multiply => 2.0,
+        StyleBlend::Overlay => 3.0,
     }
 }
 
@@ -147,6 +167,9 @@ pub struct View3dRenderer {
     params: Option<View3dParams>,
     /// The baked design of the texture comparison (1×1 when off).
     baked: RenderTarget,
+    /// The style field (1×1 when there is none) and the blend and ink it goes with.
+    style_field: wgpu::Texture,
+    style: ([f32; 4], [f32; 4]),
     bind_group: wgpu::BindGroup,
 }
 
@@ -158,6 +181,7 @@ impl View3dRenderer {
             entries: &[
                 bindings::uniform::<View3dParams>(0, wgpu::ShaderStages::FRAGMENT),
                 bindings::texture_2d(1, wgpu::ShaderStages::FRAGMENT, false),
+                bindings::texture_2d(2, wgpu::ShaderStages::FRAGMENT, false),
             ],
         });
         let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
@@ -167,7 +191,8 @@ impl View3dRenderer {
         });
         let uniform = bindings::uniform_buffer::<View3dParams>(device, "marbling 3d view");
         let baked = RenderTarget::new(device, 1, 1, exact.format());
-        let bind_group = Self::group(device, &layout, &uniform, &baked);
+        let style_field = field_texture(device, 1, 1);
+        let bind_group = Self::group(device, &layout, &uniform, &baked, &style_field);
         Self {
             layout,
             pipeline_layout,
@@ -176,6 +201,8 @@ impl View3dRenderer {
             uniform,
             params: None,
             baked,
+            style_field,
+            style: ([0.0; 4], [0.0; 4]),
             bind_group,
         }
     }
@@ -185,7 +212,9 @@ impl View3dRenderer {
         layout: &wgpu::BindGroupLayout,
         uniform: &wgpu::Buffer,
         baked: &RenderTarget,
+        style_field: &wgpu::Texture,
     ) -> wgpu::BindGroup {
+        let field = style_field.create_view(&wgpu::TextureViewDescriptor::default());
         crate::bindings::bind_group(
             device,
             "marbling 3d view",
@@ -193,8 +222,46 @@ impl View3dRenderer {
             &[
                 uniform.as_entire_binding(),
                 wgpu::BindingResource::TextureView(&baked.view),
+                wgpu::BindingResource::TextureView(&field),
             ],
         )
+    }
+
+    /// Sets the style blended into the next draws (`None`: no style): `frame` must have
+    /// the view's size. Takes effect at the next [`View3dRenderer::set_view`].
+    pub fn set_style(
+        &mut self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        frame: Option<&StyleFrame>,
+    ) {
+        let Some(frame) = frame else {
+            self.style = ([0.0; 4], [0.0; 4]);
+            return;
+        };
+        let size = self.style_field.size();
+        if (size.width, size.height) != (frame.width, frame.height) {
+            self.style_field = field_texture(device, frame.width, frame.height);
+            self.bind_group = Self::group(
+                device,
+                &self.layout,
+                &self.uniform,
+                &self.baked,
+                &self.style_field,
+            );
+        }
+        queue.write_texture(
+            self.style_field.as_image_copy(),
+            &frame.field(),
+            wgpu::TexelCopyBufferLayout {
+                offset: 0,
+                bytes_per_row: Some(frame.width * 4),
+                rows_per_image: Some(frame.height),
+            },
+            self.style_field.size(),
+        );
+        let [r, g, b] = frame.ink_unit();
+        self.style = ([blend_code(frame.blend), 0.0, 0.0, 0.0], [r, g, b, 0.0]);
     }
 
     /// Bakes `design` (uploaded as `prepared`) into a raster of longest side `side`
@@ -214,7 +281,13 @@ impl View3dRenderer {
         let h = ((f64::from(dh) * k).round() as u32).clamp(1, side);
         if (self.baked.width, self.baked.height) != (w, h) {
             self.baked = RenderTarget::new(device, w, h, self.format);
-            self.bind_group = Self::group(device, &self.layout, &self.uniform, &self.baked);
+            self.bind_group = Self::group(
+                device,
+                &self.layout,
+                &self.uniform,
+                &self.baked,
+                &self.style_field,
+            );
         }
         prepared.set_view(
             queue,
@@ -257,7 +330,11 @@ impl View3dRenderer {
                 antialias: view.antialias,
             },
         );
-        let params = View3dParams::new(design, view, source);
+        let params = View3dParams {
+            style: self.style.0,
+            style_ink: self.style.1,
+            ..View3dParams::new(design, view, source)
+        };
         if self.params != Some(params) {
             queue.write_buffer(&self.uniform, 0, bytemuck::bytes_of(&params));
             self.params = Some(params);
@@ -293,4 +370,22 @@ impl View3dRenderer {
         pass.set_bind_group(1, &self.bind_group, &[]);
         pass.draw(0..3, 0..1);
     }
+}
+
+/// A style field texture of `width`×`height` texels (read with `textureLoad`).
+fn field_texture(device: &wgpu::Device, width: u32, height: u32) -> wgpu::Texture {
+    device.create_texture(&wgpu::TextureDescriptor {
+        label: Some("marbling 3d style field"),
+        size: wgpu::Extent3d {
+            width,
+            height,
+            depth_or_array_layers: 1,
+        },
+        mip_level_count: 1,
+        sample_count: 1,
+        dimension: wgpu::TextureDimension::D2,
+        format: wgpu::TextureFormat::Rgba8Unorm,
+        usage: wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST,
+        view_formats: &[],
+    })
 }

@@ -81,7 +81,7 @@ pub use spec::{
 pub use spec_edit::{EDIT_FLOOR, FEATURE_PX};
 pub use style::{
     ANCHORINGS, Anchoring, DEPTH_TESTS, DepthTest, FOLLOWS, Fibres, Follow, Marks, STYLE_KINDS,
-    StyleKind, StyleSpec, lod_weights,
+    StyleBlend, StyleKind, StyleSpec, lod_weights,
 };
 pub use transfer::{
     SplineDecay, SplineDecayTable, Threshold, hsv_to_rgb, hsv_value_blend, rgb_to_hsv, smoothstep,

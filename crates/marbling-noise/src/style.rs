@@ -7,6 +7,9 @@
 //!   cross-hatching or graphite.
 //! - **Fibres** (Kaplan & Cohen 2005, §4): paper or canvas fibres of a constant length and
 //!   width on screen, anchored on the surface at a constant density per screen pixel.
+//! - **Media** that work the render's own colour with the same marks: watercolor
+//!   (pigment and paper noise in overlay blend), felt (strokes multiplied into the
+//!   colour) and painterly (large strokes and brush fibres as a relief, bump-shaded).
 //!
 //! The renderer is `marbling_core::view3d::style`; this module holds the parameters, their
 //! ranges and presets, and reads and writes the JSON (grammar in the crate README).
@@ -31,17 +34,39 @@ pub enum StyleKind {
     Paper,
     /// Canvas threads at 0° and 90° only.
     Canvas,
+    /// Low-frequency pigment and fine paper noise in overlay blend with the colour.
+    Watercolor,
+    /// Soft broad strokes whose ink multiplies the colour, with a felt grain.
+    Felt,
+    /// Large strokes with brush fibres along them, lit as a relief over the colour.
+    Painterly,
 }
 
 /// Style names as `--style` and the JSON's `style` take them (`none` is no style).
-pub const STYLE_KINDS: [(&str, StyleKind); 6] = [
+pub const STYLE_KINDS: [(&str, StyleKind); 9] = [
     ("hatching", StyleKind::Hatching),
     ("stipple", StyleKind::Stipple),
     ("crosshatch", StyleKind::Crosshatch),
     ("graphite", StyleKind::Graphite),
+    ("watercolor", StyleKind::Watercolor),
+    ("felt", StyleKind::Felt),
+    ("painterly", StyleKind::Painterly),
     ("paper", StyleKind::Paper),
     ("canvas", StyleKind::Canvas),
 ];
+
+/// How a style's overlay meets the render's colour (sRGB, channels in [0, 1]; c the
+/// coverage, g the overlay grey, ink the spec's colour).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum StyleBlend {
+    /// base + (ink − base)·c: ink laid over the colour.
+    Ink,
+    /// base·(1 − c + c·ink): transparent ink that darkens the colour it crosses.
+    Multiply,
+    /// overlay(base, g) = 2·base·g where base < ½, else 1 − 2(1 − base)(1 − g); g = ½
+    /// leaves the colour as it is.
+    Overlay,
+}
 
 impl StyleKind {
     /// The style's name.
@@ -63,6 +88,15 @@ impl StyleKind {
     /// True for the fibre styles (paper, canvas), false for the Gabor marks.
     pub fn is_fibres(self) -> bool {
         matches!(self, Self::Paper | Self::Canvas)
+    }
+
+    /// How the style's overlay meets the render's colour.
+    pub fn blend(self) -> StyleBlend {
+        match self {
+            Self::Watercolor | Self::Painterly => StyleBlend::Overlay,
+            Self::Felt => StyleBlend::Multiply,
+            _ => StyleBlend::Ink,
+        }
     }
 }
 
@@ -121,11 +155,25 @@ pub enum Follow {
     /// sphere, cylinder and vase; the sheet's rows on the plane and book), turned by
     /// `orientation`.
     Curvature,
+    /// Along the marbled design's local stretch: the direction in which the ops drew the
+    /// ink out (from the Jacobian of the inverse walk at the kernel's design point),
+    /// turned by `orientation`; where the ink is not stretched, as `curvature`.
+    Stretch,
 }
 
 /// [`Follow`] names.
-pub const FOLLOWS: [(&str, Follow); 2] =
-    [("screen", Follow::Screen), ("curvature", Follow::Curvature)];
+pub const FOLLOWS: [(&str, Follow); 3] = [
+    ("screen", Follow::Screen),
+    ("curvature", Follow::Curvature),
+    ("stretch", Follow::Stretch),
+];
+
+impl Follow {
+    /// The direction's name in [`FOLLOWS`].
+    pub fn name(self) -> &'static str {
+        name(&FOLLOWS, self)
+    }
+}
 
 /// Kernel frequency F₀, cycles per screen pixel.
 pub const MARK_FREQUENCY: Range = ranges::GABOR_FREQUENCY;
@@ -139,6 +187,9 @@ pub const MARK_TONE: Range = Range::within(-4.0, 4.0);
 pub const MARK_SOFTNESS: Range = Range::within(0.01, 4.0);
 /// How far the threshold moves per unit of darkness (0: the light has no say).
 pub const MARK_SHADING: Range = Range::within(0.0, 4.0);
+/// How much darkness raises a kernel's frequency: F = F₀·(1 + k·(d − ½)), d = 1 − the
+/// headlight's cosine at the kernel's centre (darker, denser marks; 0: fixed F₀).
+pub const MARK_FREQUENCY_SHADING: Range = Range::within(0.0, 1.8);
 /// Fibres per screen pixel (Kaplan & Cohen's FibersPerPixel).
 pub const FIBERS_PER_PIXEL: Range = Range::above(0.0, 0.5);
 /// Fibre length on screen, pixels (Kaplan & Cohen: 20–40).
@@ -167,6 +218,8 @@ pub struct Marks {
     pub softness: f32,
     /// Threshold shift per unit of darkness (1 − the headlight's cosine): darker, more ink.
     pub shading: f32,
+    /// k of [`MARK_FREQUENCY_SHADING`]: darker, denser marks.
+    pub frequency_shading: f32,
 }
 
 /// The fibres' parameters (screen pixels).
@@ -215,6 +268,7 @@ impl StyleSpec {
             tone,
             softness,
             shading: 1.0,
+            frequency_shading: 0.0,
         };
         let hatch = marks(0.14, 0.05, 32.0, 30.0, -0.2, 0.5);
         let (marks, ink, opacity) = match kind {
@@ -235,6 +289,20 @@ impl StyleSpec {
                 marks(0.2, 0.06, 32.0, 60.0, 0.4, 0.7),
                 [0.18, 0.18, 0.21],
                 0.85,
+            ),
+            // Pigment blotches some 25 px across; the paper grain is a layer at 3.5×.
+            StyleKind::Watercolor => (marks(0.02, 0.04, 16.0, 0.0, 0.0, 1.0), [0.5, 0.5, 0.5], 0.8),
+            // Broad soft strokes (low bandwidth: long), a blue-black felt ink.
+            StyleKind::Felt => (
+                marks(0.07, 0.03, 24.0, 20.0, -0.1, 0.9),
+                [0.30, 0.36, 0.62],
+                0.75,
+            ),
+            // Brush strokes some 14 px wide with fibres along them.
+            StyleKind::Painterly => (
+                marks(0.035, 0.025, 24.0, 35.0, 0.0, 1.0),
+                [0.5, 0.5, 0.5],
+                0.9,
             ),
         };
         let paper = Fibres {
@@ -288,10 +356,11 @@ impl StyleSpec {
             "bandwidth": m.bandwidth,
             "impulses": m.impulses,
             "orientation": m.orientation,
-            "follow": name(&FOLLOWS, m.follow),
+            "follow": m.follow.name(),
             "tone": m.tone,
             "softness": m.softness,
             "shading": m.shading,
+            "frequency_shading": m.frequency_shading,
             "fibers_per_pixel": f.per_pixel,
             "length": f.length,
             "width": f.width,

@@ -5,13 +5,13 @@ use crate::ramp::parse_hex;
 use crate::ranges::Range;
 use crate::style::{
     ANCHORINGS, DEPTH_TESTS, FIBER_LENGTH, FIBER_WIDTH, FIBERS_PER_PIXEL, FOLLOWS, MARK_BANDWIDTH,
-    MARK_FREQUENCY, MARK_IMPULSES, MARK_SHADING, MARK_SOFTNESS, MARK_TONE, OPACITY, STYLE_KINDS,
-    StyleKind, StyleSpec,
+    MARK_FREQUENCY, MARK_FREQUENCY_SHADING, MARK_IMPULSES, MARK_SHADING, MARK_SOFTNESS, MARK_TONE,
+    OPACITY, STYLE_KINDS, StyleKind, StyleSpec,
 };
 use marbling_json::{FieldError, PathReader, short};
 use serde_json::{Map, Value};
 
-const FIELDS: [&str; 18] = [
+const FIELDS: [&str; 19] = [
     "style",
     "frequency",
     "bandwidth",
@@ -21,6 +21,7 @@ const FIELDS: [&str; 18] = [
     "tone",
     "softness",
     "shading",
+    "frequency_shading",
     "fibers_per_pixel",
     "length",
     "width",
@@ -80,6 +81,12 @@ fn read(r: &mut PathReader, value: &Value) -> Option<StyleSpec> {
     num(r, "tone", MARK_TONE, &mut s.marks.tone);
     num(r, "softness", MARK_SOFTNESS, &mut s.marks.softness);
     num(r, "shading", MARK_SHADING, &mut s.marks.shading);
+    num(
+        r,
+        "frequency_shading",
+        MARK_FREQUENCY_SHADING,
+        &mut s.marks.frequency_shading,
+    );
     num(
         r,
         "fibers_per_pixel",
@@ -218,7 +225,7 @@ mod tests {
         assert!(problems(r#"{"style":"hatching","ink":"red"}"#).contains("ink: must be a colour"));
         assert!(
             problems(r#"{"style":"hatching","follow":"wind"}"#)
-                .contains("follow: must be one of screen, curvature")
+                .contains("follow: must be one of screen, curvature, stretch")
         );
         assert!(matches!(
             StyleSpec::from_json("{"),

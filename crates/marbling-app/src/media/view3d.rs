@@ -8,8 +8,9 @@
 //! *Turn* spins the camera about the object at a chosen speed, *dolly* moves it in or
 //! out, and *Record* films one whole turn of the pane (antialiased frames, read back and
 //! handed to the recorder as they are drawn) to `marbling-3d-turn.webm`. *Displace*
-//! moves the surface by Perlin noise ([`super::view3d_displace`]); *Style* lays marks or
-//! fibres over the panes ([`super::view3d_style`]).
+//! moves the surface by Perlin noise ([`super::view3d_displace`]); *Style* draws the
+//! object with marks or fibres, blended into the panes by their shader
+//! ([`super::view3d_style`]).
 
 use crate::gpu::canvas_gpu::CANVAS_FORMAT;
 use crate::media::step_clock::StepClock;
@@ -38,6 +39,8 @@ struct Drawn {
     design_key: u64,
     view: View3d,
     compare: bool,
+    /// The style field's revision ([`StyleControls::revision`]).
+    style: u64,
 }
 
 /// The GPU side: the exact pipeline, one 3D renderer and target per pane, the design.
@@ -395,21 +398,10 @@ impl View3dWindow {
         let mut interacting = self.step_turn(ui.ctx());
         interacting |= self.displace.step(ui.ctx());
         let textures = self.ensure_panes(rs, size_px);
-        let overlay = self.style.overlay(
-            ui.ctx(),
-            design,
-            design_key,
-            &self.view(size_px, Antialias::None, None),
-        );
         ui.horizontal(|ui| {
             for (i, tex) in textures.iter().take(panes as usize).enumerate() {
                 let image = egui::Image::new((*tex, size_pt)).sense(egui::Sense::click_and_drag());
                 let r = ui.add(image);
-                if let Some(overlay) = overlay {
-                    let uv = egui::Rect::from_min_max(egui::pos2(0.0, 0.0), egui::pos2(1.0, 1.0));
-                    ui.painter()
-                        .image(overlay, r.rect, uv, egui::Color32::WHITE);
-                }
                 controls.push((format!("view3d-pane-{i}").into(), r.rect));
                 interacting |= self.orbit(ui, &r, design, size_px);
             }
@@ -544,10 +536,13 @@ impl View3dWindow {
         size: [u32; 2],
         antialias: Antialias,
     ) {
+        self.style
+            .update(design, design_key, &self.view(size, Antialias::None, None));
         let now = Drawn {
             design_key,
             view: self.view(size, antialias, None),
             compare: self.compare,
+            style: self.style.revision(),
         };
         if self.drawn == Some(now) {
             return;
@@ -582,6 +577,7 @@ impl View3dWindow {
                 panes.renderers[i].bake(device, queue, &panes.exact, &mut prepared, side);
                 panes.baked = Some(design_key);
             }
+            panes.renderers[i].set_style(device, queue, self.style.frame());
             panes.renderers[i].set_view(queue, &mut prepared, design, view);
             let mut encoder =
                 device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: None });

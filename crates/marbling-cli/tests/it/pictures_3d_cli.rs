@@ -310,6 +310,24 @@ fn render_3d_styles_lay_marks_or_fibres_over_the_render_and_refuse_bad_specs() {
         .filter(|p| p[0] > 200 && p[1] < 60 && p[2] < 60)
         .count();
     assert!(reddish > 20, "{reddish} red pixels");
+    // The media that work the colour, one with strokes along the ink and denser in the
+    // shade: each changes the picture, the colour stays where it was (no ink laid).
+    let along = path(&dir, "along.json");
+    std::fs::write(
+        &along,
+        r#"{"style":"painterly","follow":"stretch","frequency_shading":1.2}"#,
+    )
+    .expect("spec");
+    for extra in [
+        &["--style", "watercolor"][..],
+        &["--style", "felt"],
+        &["--style-spec", &along],
+    ] {
+        let (styled, report) = render("media.png", extra);
+        assert!(report.contains(" kernels, "), "{report}");
+        let changed = compare(&plain, &styled, 8).expect("same size").fraction();
+        assert!(changed > 0.05, "{extra:?} changed {changed} of the pixels");
+    }
     // A turning loop carries the style on every frame.
     let gif = path(&dir, "turn.gif");
     let report = ok(&[
@@ -331,6 +349,8 @@ fn render_3d_styles_lay_marks_or_fibres_over_the_render_and_refuse_bad_specs() {
     assert!(report.contains("3 frames"), "{report}");
     let bad = path(&dir, "bad.json");
     std::fs::write(&bad, r#"{"style":"stipple","tone":9}"#).expect("spec");
+    let fast = path(&dir, "fast.json");
+    std::fs::write(&fast, r#"{"style":"felt","frequency_shading":3}"#).expect("spec");
     for (args, expected) in [
         (
             vec!["--style", "oil"],
@@ -343,6 +363,10 @@ fn render_3d_styles_lay_marks_or_fibres_over_the_render_and_refuse_bad_specs() {
         (
             vec!["--style", "paper", "--style-spec", spec.as_str()],
             "--style paper disagrees with",
+        ),
+        (
+            vec!["--style-spec", fast.as_str()],
+            "frequency_shading: must be a number from 0 to 1.8, got 3",
         ),
         (
             vec!["--style-spec", "missing.json"],

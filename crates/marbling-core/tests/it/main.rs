@@ -16,3 +16,4 @@ mod snapshots_v3;
 mod view3d;
 mod view3d_displace;
 mod view3d_style;
+mod view3d_style_links;

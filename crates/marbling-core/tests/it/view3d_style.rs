@@ -160,8 +160,11 @@ fn the_same_pose_gives_the_same_bytes_and_the_density_changes_the_noise_continuo
     for (name, kind) in STYLE_KINDS {
         let spec = StyleSpec::preset(kind);
         let (a, b) = (frame(&v, &spec), frame(&v, &spec));
-        assert_eq!(a.rgba(), b.rgba(), "{name}");
-        assert!(a.coverage.iter().any(|&c| c > 0.3), "{name} draws nothing");
+        assert_eq!(a.field(), b.field(), "{name}");
+        // Ink reaches 0.3 coverage, or an overlay grey moves 0.1 from ½.
+        let drawn =
+            a.coverage.iter().any(|&c| c > 0.3) || a.grey.iter().any(|&g| (g - 0.5).abs() > 0.1);
+        assert!(drawn, "{name} draws nothing");
     }
     let noise = |impulses: f32| {
         let mut s = StyleSpec::preset(StyleKind::Hatching);

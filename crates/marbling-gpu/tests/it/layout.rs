@@ -202,6 +202,8 @@ fn view3d_params_match_wgsl() {
             ("displace", offset_of!(View3dParams, displace)),
             ("displace_fbm", offset_of!(View3dParams, displace_fbm)),
             ("displace_march", offset_of!(View3dParams, displace_march)),
+            ("style", offset_of!(View3dParams, style)),
+            ("style_ink", offset_of!(View3dParams, style_ink)),
         ],
         size_of::<View3dParams>(),
     );

@@ -12,14 +12,21 @@
 //! divided by the analytic standard deviation ([`GaborParams::variance`]), so the noise
 //! has unit variance whatever the zoom.
 //!
+//! With frequency shading, each kernel's frequency follows the darkness at its centre
+//! (darker, denser); the sum is still divided by the deviation at F₀ (the Gabor
+//! variance depends on F only through its factor 1 + exp(−2πF²/a²)).
+//!
 //! The two naive answers of the paper's figure 1 are [`Anchoring::Screen`] (a 2D Gabor
 //! noise on the screen: the object slides under it) and [`Anchoring::Texture`] (the same
 //! noise in the surface's texture space, sized for zoom 1: the marks shrink as the object
 //! recedes).
 
 use super::scene::{Face, Patch, Scene, base_patches, face_point, map_range, uv_extent};
+use super::stretch;
+use kurbo::Point;
 use marbling_noise::{
     Anchoring, CellRng, DepthTest, Follow, Gabor, GaborKind, GaborParams, Marks, lod_weights,
+    style::MARK_FREQUENCY,
 };
 use std::f64::consts::PI;
 
@@ -40,6 +47,9 @@ pub struct Kernel {
     pub weight: f64,
     /// Direction of its frequency vector on the screen, radians from +x towards +y.
     pub omega: f64,
+    /// Its frequency, cycles per pixel: F₀, or F₀·(1 + k·(d − ½)) with frequency
+    /// shading k and d = 1 − the headlight's cosine at its pixel.
+    pub frequency: f64,
 }
 
 /// One noise layer of a style.
@@ -171,12 +181,17 @@ fn patch_kernels(scene: &Scene, layer: &Layer, patch: &Patch, lambda: f64) -> Ve
             GaborKind::Isotropic => f64::from(a) * 2.0 * PI,
             _ => orientation(scene, layer, patch.face, (u, v), (x, y)),
         };
+        let dark = scene
+            .pixel(x, y)
+            .map_or(0.5, |i| 1.0 - f64::from(scene.light[i]));
+        let shaded = 1.0 + f64::from(layer.marks.frequency_shading) * (dark - 0.5);
         out.push(Kernel {
             x,
             y,
             depth,
             weight: (2.0 * f64::from(w) - 1.0) * level,
             omega,
+            frequency: (f64::from(layer.marks.frequency) * shaded).clamp(1e-3, MARK_FREQUENCY.hi),
         });
     }
     out
@@ -185,15 +200,32 @@ fn patch_kernels(scene: &Scene, layer: &Layer, patch: &Patch, lambda: f64) -> Ve
 /// The frequency vector's screen direction of an anisotropic kernel at (u, v).
 fn orientation(scene: &Scene, layer: &Layer, face: Face, uv: (f64, f64), at: (f64, f64)) -> f64 {
     let stroke = f64::from(layer.marks.orientation).to_radians() + layer.turn;
+    // The screen direction of a step (du, dv) in texture space from the kernel.
+    let towards = |du: f64, dv: f64| {
+        let q = face_point(&scene.object, face, uv.0 + du, uv.1 + dv).0;
+        match scene.project(q) {
+            Some((x, y, _)) if (x - at.0).hypot(y - at.1) > 1e-9 => {
+                Some((y - at.1).atan2(x - at.0))
+            }
+            _ => None,
+        }
+    };
+    let curvature = || towards(1e-3, 0.0).unwrap_or(0.0);
     let base = match layer.marks.follow {
         Follow::Screen => 0.0,
-        Follow::Curvature => {
-            let du = 1e-3;
-            let q = face_point(&scene.object, face, uv.0 + du, uv.1).0;
-            match scene.project(q) {
-                Some((x, y, _)) if (x - at.0).hypot(y - at.1) > 1e-9 => (y - at.1).atan2(x - at.0),
-                _ => 0.0,
-            }
+        Follow::Curvature => curvature(),
+        Follow::Stretch => {
+            let (dw, dh) = scene.design_size;
+            scene
+                .walker
+                .as_ref()
+                .and_then(|w| stretch::direction(w, Point::new(uv.0 * dw, uv.1 * dh)))
+                .and_then(|(dx, dy)| {
+                    let (du, dv) = (dx / dw, dy / dh);
+                    let k = 1e-3 / du.hypot(dv);
+                    towards(du * k, dv * k)
+                })
+                .unwrap_or_else(curvature)
         }
     };
     base + stroke + PI / 2.0
@@ -204,7 +236,6 @@ fn splat(scene: &Scene, layer: &Layer, kernels: &[Kernel], depth_test: DepthTest
     let params = layer.params();
     let r = f64::from(params.radius());
     let a = f64::from(params.bandwidth);
-    let f = f64::from(params.frequency);
     let scale = 1.0 / f64::from(params.variance()).sqrt();
     let (w, h) = (scene.width as usize, scene.height as usize);
     // Bucket kernels by row band so rows can be summed in parallel.
@@ -251,7 +282,7 @@ fn splat(scene: &Scene, layer: &Layer, kernels: &[Kernel], depth_test: DepthTest
                 }
                 let dx = x as f64 + 0.5 - k.x;
                 let envelope = (-PI * a * a * (dx * dx + dy * dy)).exp();
-                let wave = (2.0 * PI * f * (dx * c + dy * s)).cos();
+                let wave = (2.0 * PI * k.frequency * (dx * c + dy * s)).cos();
                 *cell += keep * k.weight * envelope * wave;
             }
         }

@@ -5,6 +5,7 @@
 
 use super::super::{Object, Rig, Shape, View3d, shapes::Material, vec3::Vec3};
 use crate::Design;
+use crate::walk::Walker;
 use std::f64::consts::PI;
 
 /// A frame's per-pixel facts and its camera.
@@ -22,6 +23,10 @@ pub(super) struct Scene {
     /// Screen pixels per object unit at the camera's target distance at zoom 1 (what
     /// texture-space anchoring fixes its mark sizes to).
     pub reference_scale: f64,
+    /// Design width and height, pixels (texture coordinates × these: design points).
+    pub design_size: (f64, f64),
+    /// The design's walk, for marks that follow its stretch (`None` when none do).
+    pub walker: Option<Walker>,
 }
 
 impl Scene {
@@ -71,6 +76,8 @@ impl Scene {
             light,
             uv,
             reference_scale,
+            design_size: (f64::from(design.width), f64::from(design.height)),
+            walker: None,
         }
     }
 
