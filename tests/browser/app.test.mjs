@@ -176,7 +176,8 @@ for (const backend of Object.keys(BACKENDS)) {
     /**
      * Style (Bénard et al. 2010; Kaplan & Cohen 2005): hatching inks the object only and
      * counts its kernels; anchored on the screen the marks are other marks; paper lays
-     * fibres over the backdrop too; none gives back the plain pane.
+     * fibres over the backdrop too; watercolor works the object's colour in the shader;
+     * none gives back the plain pane.
      */
     async function styles(page, backend) {
       const style = async () => JSON.parse(await attr(page, 'data-view3d')).style;
@@ -213,6 +214,15 @@ for (const backend of Object.keys(BACKENDS)) {
       if (backend === 'webgpu') fs.writeFileSync(path.join(SHOTS, 'view3d-paper.png'), PNG.sync.write(papered));
       console.log(`${backend}: paper: ${(await style()).fibres} fibres; ${paper.backdrop} backdrop pixels changed`);
       assert.ok(paper.backdrop > 0.02 * paper.pixels, `paper changed ${paper.backdrop} backdrop pixels`);
+      // Watercolor works the design's own colour in the panes' shader (overlay blend):
+      // most of the object changes, the backdrop not at all.
+      await pick('view3d-style', 'view3d-style-watercolor');
+      await page.waitForFunction(() => JSON.parse(document.body.dataset.view3d).style?.style === 'watercolor', null, { timeout: READY_MS });
+      const washed = objectChange(plain, await settledPane(page), 8);
+      console.log(`${backend}: watercolor: ${washed.changed} of ${washed.object} object pixels changed, ${washed.backdrop} backdrop pixels`);
+      assert.ok(washed.changed > 0.3 * washed.object, `watercolor changed ${washed.changed} of ${washed.object} object pixels`);
+      assert.ok(washed.backdrop < 0.01 * washed.object, `watercolor reached ${washed.backdrop} backdrop pixels`);
+      if (backend === 'webgpu') fs.writeFileSync(path.join(SHOTS, 'view3d-watercolor.png'), PNG.sync.write(await settledPane(page)));
       await pick('view3d-style', 'view3d-style-none');
       await page.waitForFunction(() => JSON.parse(document.body.dataset.view3d).style === null, null, { timeout: READY_MS });
       assert.ok(differing(plain, await settledPane(page), 2) < 0.001, 'style none should give back the plain pane');

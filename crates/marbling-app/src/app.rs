@@ -14,7 +14,7 @@ use crate::state::{Editor, Hooks, Panels, Rendering, Session};
 use crate::store::links::{self, Link};
 use crate::store::prefs::Prefs;
 use crate::store::{autosave, restore};
-use marbling_core::{Design, DesignError, Rgb8};
+use marbling_core::{Design, Rgb8};
 use std::sync::Arc;
 
 /// A tool being dragged on the canvas.
@@ -82,7 +82,10 @@ impl MarblingApp {
                 lost.watch(&rs.device, &cc.egui_ctx);
                 gpu_errors.watch(&rs.device, &cc.egui_ctx);
                 platform::expose_device_loss(&rs.device);
-                (true, backend_name(rs.adapter.get_info().backend))
+                (
+                    true,
+                    crate::gpu::backend_name(rs.adapter.get_info().backend),
+                )
             }
             None => (false, "none".to_owned()),
         };
@@ -276,7 +279,7 @@ impl MarblingApp {
                 from: name.to_owned(),
                 from_link: false,
             }),
-            Err(e) => self.error(format!("{name}: {}", first_line(&e))),
+            Err(e) => self.error(format!("{name}: {}", crate::shell::message::first_line(&e))),
         }
     }
 
@@ -310,7 +313,7 @@ impl MarblingApp {
                         self.set_mode(Mode::Noise);
                         self.info("noise link opened");
                     }
-                    Err(e) => self.error(first_line_of(&e)),
+                    Err(e) => self.error(crate::shell::message::first_line_of(&e)),
                 }
             }
             Link::Design(Ok(design)) if *design == *self.editor.history.design() => {}
@@ -319,7 +322,7 @@ impl MarblingApp {
                 from: "share link".to_owned(),
                 from_link: true,
             }),
-            Link::Design(Err(e)) => self.error(first_line_of(&e)),
+            Link::Design(Err(e)) => self.error(crate::shell::message::first_line_of(&e)),
         }
     }
 
@@ -580,32 +583,7 @@ impl eframe::App for MarblingApp {
     }
 }
 
-/// The name automation and users see for a wgpu backend.
-fn backend_name(b: wgpu::Backend) -> String {
-    match b {
-        wgpu::Backend::BrowserWebGpu => "webgpu".to_owned(),
-        wgpu::Backend::Gl if cfg!(target_arch = "wasm32") => "webgl2".to_owned(),
-        other => other.to_str().to_owned(),
-    }
-}
-
 /// A blank design of the given size.
 pub(crate) fn blank(size: [u32; 2]) -> Design {
     Design::new(size[0], size[1], Rgb8::new(0xf4, 0xec, 0xd8))
-}
-
-/// The first line of an error (the status bar is one line; the count of the rest is noted).
-pub(crate) fn first_line(e: &DesignError) -> String {
-    first_line_of(&e.to_string())
-}
-
-fn first_line_of(s: &str) -> String {
-    let mut lines = s.lines();
-    let first = lines.next().unwrap_or_default().to_owned();
-    let more = lines.count();
-    if more > 0 {
-        format!("{first} (and {more} more)")
-    } else {
-        first
-    }
 }

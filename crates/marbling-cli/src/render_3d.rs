@@ -14,7 +14,7 @@ use clap::Args;
 use marbling_core::view3d::style::style_frame;
 use marbling_core::view3d::{Camera, Displace, Shape, View3d, render_3d};
 use marbling_core::{Antialias, Design, Point, RgbaImage};
-use marbling_noise::{STYLE_KINDS, StyleKind, StyleSpec};
+use marbling_noise::{ANCHORINGS, STYLE_KINDS, StyleKind, StyleSpec};
 use std::time::Instant;
 
 /// Arguments of `marbling render-3d`.
@@ -54,15 +54,21 @@ pub struct Render3dArgs {
     /// unless given (lacunarity 2, persistence 0.5).
     #[arg(long, value_name = "S,F", value_parser = parse_displace)]
     displace: Option<Displace>,
-    /// Style laid over the render: hatching, stipple, crosshatch or graphite (Gabor
-    /// marks sized in screen pixels, anchored on the surface), paper or canvas (fibres
-    /// of a constant screen length), or none.
+    /// Style of the object: hatching, stipple, crosshatch or graphite (Gabor marks in
+    /// ink, sized in screen pixels, anchored on the surface), watercolor, felt or
+    /// painterly (the marks working the design's colour), paper or canvas (fibres of a
+    /// constant screen length), or none.
     #[arg(long, value_name = "STYLE")]
     style: Option<String>,
     /// A style spec (JSON, grammar in marbling-noise's README): its `style` names the
     /// preset, its other fields override it.
     #[arg(long, value_name = "STYLE.json")]
     style_spec: Option<String>,
+    /// Bénard et al. 2010's figure 1: the frame three times side by side, the marks
+    /// anchored on the surface (theirs), on the screen (2D noise, "shower door") and in
+    /// texture space (texture mapping). Needs a mark style.
+    #[arg(long)]
+    anchorings: bool,
     /// Write a loop of the camera turning this many degrees about the vertical axis
     /// (360: once round; negative: the other way), frame k at yaw + DEG·k/N.
     #[arg(
@@ -164,6 +170,9 @@ pub fn run(args: &Render3dArgs) -> Result<()> {
         bail!("{e}");
     }
     let style = read_style(args)?;
+    if args.anchorings {
+        return write_anchorings(args, &design, &view, style.as_ref());
+    }
     if let Some(turn) = args.turn {
         return write_turn(args, &design, &view, style.as_ref(), turn);
     }
@@ -209,6 +218,46 @@ pub fn run(args: &Render3dArgs) -> Result<()> {
         } else {
             String::new()
         }
+    );
+    Ok(())
+}
+
+/// Writes the frame with the marks on the surface, on the screen and as a texture, side
+/// by side (`--anchorings`).
+fn write_anchorings(
+    args: &Render3dArgs,
+    design: &Design,
+    view: &View3d,
+    style: Option<&StyleSpec>,
+) -> Result<()> {
+    let Some(spec) = style.filter(|s| !s.kind.is_fibres()) else {
+        bail!("--anchorings compares where marks live: give a mark style (--style hatching, …)");
+    };
+    if args.turn.is_some() {
+        bail!("--anchorings writes one still: leave out --turn");
+    }
+    let gpu = renderer(args.backend)?;
+    let (w, h) = (view.width as usize, view.height as usize);
+    let mut sheet = RgbaImage::filled(3 * view.width, view.height, [0, 0, 0, 255]);
+    let mut names = Vec::new();
+    for (k, (name, anchoring)) in ANCHORINGS.into_iter().enumerate() {
+        let spec = StyleSpec { anchoring, ..*spec };
+        let (frame, _) = draw(gpu.as_ref(), design, view, Some(&spec))?;
+        for y in 0..h {
+            let to = (y * 3 * w + k * w) * 4;
+            sheet.pixels[to..to + 4 * w].copy_from_slice(&frame.pixels[y * w * 4..(y + 1) * w * 4]);
+        }
+        names.push(name);
+    }
+    std::fs::write(&args.output, sheet.to_png()?)
+        .with_context(|| format!("cannot write '{}'", args.output))?;
+    println!(
+        "{}: {} anchored {} side by side, {}×{} px each",
+        args.output,
+        spec.kind.name(),
+        names.join(", "),
+        view.width,
+        view.height
     );
     Ok(())
 }

@@ -12,5 +12,6 @@ pub(crate) mod video;
 pub(crate) mod video_panel;
 pub(crate) mod view3d;
 pub(crate) mod view3d_displace;
+pub(crate) mod view3d_panes;
 pub(crate) mod view3d_recording;
 pub(crate) mod view3d_style;

@@ -12,15 +12,14 @@
 //! object with marks or fibres, blended into the panes by their shader
 //! ([`super::view3d_style`]).
 
-use crate::gpu::canvas_gpu::CANVAS_FORMAT;
 use crate::media::step_clock::StepClock;
 use crate::media::view3d_displace::DisplaceControls;
+use crate::media::view3d_panes::{Drawn, Panes};
 use crate::media::view3d_recording::{TURN_VIDEO, TurnRecording};
 use crate::media::view3d_style::StyleControls;
 use eframe::egui_wgpu;
 use marbling_core::view3d::{Camera, MAX_DOLLY, MAX_ZOOM, MIN_DOLLY, Shape, View3d};
 use marbling_core::{Antialias, Design};
-use marbling_gpu::{ExactRenderer, PendingRead, PreparedDesign, RenderTarget, View3dRenderer};
 
 /// Side of the baked texture of the comparison, pixels (the paper's figure 6).
 pub const COMPARE_TEXTURE: u32 = 2048;
@@ -32,27 +31,6 @@ const WINDOW_MAX_ZOOM: f64 = 2000.0;
 pub const MAX_TURN_SPEED: f64 = 180.0;
 /// Turn speed at the start, degrees per second.
 const DEFAULT_TURN_SPEED: f64 = 30.0;
-
-/// What one frame was drawn for (a new frame is drawn when it changes).
-#[derive(Clone, Copy, Debug, PartialEq)]
-struct Drawn {
-    design_key: u64,
-    view: View3d,
-    compare: bool,
-    /// The style field's revision ([`StyleControls::revision`]).
-    style: u64,
-}
-
-/// The GPU side: the exact pipeline, one 3D renderer and target per pane, the design.
-struct Panes {
-    exact: ExactRenderer,
-    renderers: [View3dRenderer; 2],
-    targets: [RenderTarget; 2],
-    textures: [egui::TextureId; 2],
-    prepared: Option<(u64, PreparedDesign)>,
-    /// The design key the comparison's texture was baked from.
-    baked: Option<u64>,
-}
 
 /// The 3D view window's state.
 pub struct View3dWindow {
@@ -86,7 +64,6 @@ pub struct View3dWindow {
     /// What the last recording left (shown under the panes).
     note: Option<String>,
     panes: Option<Panes>,
-    drawn: Option<Drawn>,
     /// Frames drawn since the window opened (read by automation).
     pub frames: u64,
     /// The last GPU problem, shown in the window.
@@ -112,7 +89,6 @@ impl Default for View3dWindow {
             recording: None,
             note: None,
             panes: None,
-            drawn: None,
             frames: 0,
             error: None,
         }
@@ -265,7 +241,6 @@ impl View3dWindow {
             self.displace.flowing = false;
             self.style.release();
             self.panes = None;
-            self.drawn = None;
         }
     }
 
@@ -397,7 +372,7 @@ impl View3dWindow {
         }
         let mut interacting = self.step_turn(ui.ctx());
         interacting |= self.displace.step(ui.ctx());
-        let textures = self.ensure_panes(rs, size_px);
+        let textures = Panes::ensure(&mut self.panes, rs, size_px);
         ui.horizontal(|ui| {
             for (i, tex) in textures.iter().take(panes as usize).enumerate() {
                 let image = egui::Image::new((*tex, size_pt)).sense(egui::Sense::click_and_drag());
@@ -420,6 +395,45 @@ impl View3dWindow {
         };
         self.feed_recording(&rs.device);
         self.draw(rs, design, design_key, size_px, antialias);
+    }
+
+    /// Draws the panes when what they show changed.
+    fn draw(
+        &mut self,
+        rs: &egui_wgpu::RenderState,
+        design: &Design,
+        design_key: u64,
+        size: [u32; 2],
+        antialias: Antialias,
+    ) {
+        self.style
+            .update(design, design_key, &self.view(size, Antialias::None, None));
+        let now = Drawn {
+            design_key,
+            view: self.view(size, antialias, None),
+            compare: self.compare,
+            style: self.style.revision(),
+        };
+        let count = if self.compare { 2 } else { 1 };
+        let views: Vec<View3d> = (0..count)
+            .map(|i| self.view(size, antialias, (i == 1).then_some(COMPARE_TEXTURE)))
+            .collect();
+        let Some(panes) = &mut self.panes else { return };
+        match panes.draw(
+            rs,
+            design,
+            now,
+            &views,
+            self.style.frame(),
+            self.recording.as_mut(),
+        ) {
+            Ok(false) => {}
+            Ok(true) => {
+                self.error = None;
+                self.frames += 1;
+            }
+            Err(e) => self.error = Some(e),
+        }
     }
 
     /// Turns and zooms the camera from the pointer over pane `r` (of `size` pixels,
@@ -477,131 +491,5 @@ impl View3dWindow {
             }
         }
         moved
-    }
-
-    /// The panes' textures for `size` pixels, (re)made when the size changes.
-    fn ensure_panes(
-        &mut self,
-        rs: &egui_wgpu::RenderState,
-        size: [u32; 2],
-    ) -> [egui::TextureId; 2] {
-        let device = &rs.device;
-        let new_targets =
-            || [0, 1].map(|_| RenderTarget::new(device, size[0], size[1], CANVAS_FORMAT));
-        match &mut self.panes {
-            Some(p) if [p.targets[0].width, p.targets[0].height] == size => {}
-            Some(p) => {
-                p.targets = new_targets();
-                let mut renderer = rs.renderer.write();
-                for (t, id) in p.targets.iter().zip(p.textures) {
-                    renderer.update_egui_texture_from_wgpu_texture(
-                        device,
-                        &t.view,
-                        wgpu::FilterMode::Linear,
-                        id,
-                    );
-                }
-                self.drawn = None;
-            }
-            None => {
-                let targets = new_targets();
-                let mut renderer = rs.renderer.write();
-                let textures = targets.each_ref().map(|t| {
-                    renderer.register_native_texture(device, &t.view, wgpu::FilterMode::Linear)
-                });
-                let exact = ExactRenderer::new(device, CANVAS_FORMAT);
-                let renderers = [0, 1].map(|_| View3dRenderer::new(device, &exact));
-                self.panes = Some(Panes {
-                    exact,
-                    renderers,
-                    targets,
-                    textures,
-                    prepared: None,
-                    baked: None,
-                });
-                self.drawn = None;
-            }
-        }
-        self.panes
-            .as_ref()
-            .map_or([egui::TextureId::default(); 2], |p| p.textures)
-    }
-
-    /// Draws the panes when what they show changed.
-    fn draw(
-        &mut self,
-        rs: &egui_wgpu::RenderState,
-        design: &Design,
-        design_key: u64,
-        size: [u32; 2],
-        antialias: Antialias,
-    ) {
-        self.style
-            .update(design, design_key, &self.view(size, Antialias::None, None));
-        let now = Drawn {
-            design_key,
-            view: self.view(size, antialias, None),
-            compare: self.compare,
-            style: self.style.revision(),
-        };
-        if self.drawn == Some(now) {
-            return;
-        }
-        let count = if self.compare { 2 } else { 1 };
-        let views: Vec<View3d> = (0..count)
-            .map(|i| self.view(size, antialias, (i == 1).then_some(COMPARE_TEXTURE)))
-            .collect();
-        let Some(panes) = &mut self.panes else { return };
-        let (device, queue) = (&rs.device, &rs.queue);
-        let prepared = match panes.prepared.take() {
-            Some((_, mut p)) => panes
-                .exact
-                .update(device, queue, &mut p, design.into())
-                .map(|()| p),
-            None => panes.exact.prepare(device, queue, design),
-        };
-        let mut prepared = match prepared {
-            Ok(p) => p,
-            Err(e) => {
-                self.error = Some(format!("cannot show the design in 3D: {e}"));
-                self.drawn = Some(now);
-                return;
-            }
-        };
-        self.error = None;
-        for (i, view) in views.iter().enumerate() {
-            let texture = view.texture;
-            if let Some(side) = texture
-                && panes.baked != Some(design_key)
-            {
-                panes.renderers[i].bake(device, queue, &panes.exact, &mut prepared, side);
-                panes.baked = Some(design_key);
-            }
-            panes.renderers[i].set_style(device, queue, self.style.frame());
-            panes.renderers[i].set_view(queue, &mut prepared, design, view);
-            let mut encoder =
-                device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: None });
-            {
-                let mut pass = panes.targets[i].begin_pass(&mut encoder);
-                panes.renderers[i].draw(device, &mut pass, &prepared);
-            }
-            // The exact pane's frame goes to a recording that has none on its way.
-            match &mut self.recording {
-                Some(r) if i == 0 && r.reading.is_none() => {
-                    r.reading = Some(PendingRead::start(
-                        device,
-                        queue,
-                        encoder,
-                        &panes.targets[0],
-                    ));
-                }
-                _ => {
-                    queue.submit([encoder.finish()]);
-                }
-            }
-        }
-        panes.prepared = Some((design_key, prepared));
-        self.drawn = Some(now);
-        self.frames += 1;
     }
 }

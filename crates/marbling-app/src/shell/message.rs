@@ -46,6 +46,22 @@ impl Message {
     }
 }
 
+/// The first line of an error (the status bar is one line; the count of the rest is noted).
+pub(crate) fn first_line(e: &marbling_core::DesignError) -> String {
+    first_line_of(&e.to_string())
+}
+
+pub(crate) fn first_line_of(s: &str) -> String {
+    let mut lines = s.lines();
+    let first = lines.next().unwrap_or_default().to_owned();
+    let more = lines.count();
+    if more > 0 {
+        format!("{first} (and {more} more)")
+    } else {
+        first
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -212,7 +212,7 @@ pub fn newest(slots: [Option<String>; 2], legacy: Option<String>) -> Found {
             }
             Err(e) => found
                 .unreadable
-                .push((LEGACY_KEY.to_owned(), crate::app::first_line(&e))),
+                .push((LEGACY_KEY.to_owned(), crate::shell::message::first_line(&e))),
         }
     }
     if found.record.is_some() {

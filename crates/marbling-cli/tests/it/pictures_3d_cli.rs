@@ -328,6 +328,28 @@ fn render_3d_styles_lay_marks_or_fibres_over_the_render_and_refuse_bad_specs() {
         let changed = compare(&plain, &styled, 8).expect("same size").fraction();
         assert!(changed > 0.05, "{extra:?} changed {changed} of the pixels");
     }
+    // Bénard et al.'s figure 1: surface, screen and texture anchorings side by side, the
+    // first third the plain --style frame, the other two other marks.
+    let (three, report) = render("three.png", &["--style", "hatching", "--anchorings"]);
+    assert!(
+        report.contains("anchored surface, screen, texture side by side"),
+        "{report}"
+    );
+    assert_eq!((three.width, three.height), (3 * 64, 48));
+    let third = |k: usize| -> Vec<u8> {
+        (0..48)
+            .flat_map(|y| {
+                three.pixels[(y * 192 + k * 64) * 4..(y * 192 + k * 64 + 64) * 4].to_vec()
+            })
+            .collect()
+    };
+    assert_eq!(
+        third(0),
+        hatched.pixels,
+        "the surface third is the --style frame"
+    );
+    assert_ne!(third(1), third(0));
+    assert_ne!(third(2), third(0));
     // A turning loop carries the style on every frame.
     let gif = path(&dir, "turn.gif");
     let report = ok(&[
@@ -363,6 +385,10 @@ fn render_3d_styles_lay_marks_or_fibres_over_the_render_and_refuse_bad_specs() {
         (
             vec!["--style", "paper", "--style-spec", spec.as_str()],
             "--style paper disagrees with",
+        ),
+        (
+            vec!["--style", "paper", "--anchorings"],
+            "--anchorings compares where marks live",
         ),
         (
             vec!["--style-spec", fast.as_str()],

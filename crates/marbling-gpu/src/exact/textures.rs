@@ -1,0 +1,81 @@
+//! The exact renderer's textures: the op records (`Rgba32Float`, [`TEXELS_PER_OP`]
+//! texels per op, rows of [`OpLayout`]) and the background image, created empty and
+//! written in place.
+
+use super::PreparedDesign;
+use crate::encode::{GpuOp, OpLayout, TEXELS_PER_OP};
+
+/// An empty op texture of `layout`'s size.
+pub(super) fn op_texture(device: &wgpu::Device, layout: OpLayout) -> wgpu::Texture {
+    device.create_texture(&wgpu::TextureDescriptor {
+        label: Some("marbling ops"),
+        size: wgpu::Extent3d {
+            width: layout.width,
+            height: layout.height,
+            depth_or_array_layers: 1,
+        },
+        mip_level_count: 1,
+        sample_count: 1,
+        dimension: wgpu::TextureDimension::D2,
+        format: wgpu::TextureFormat::Rgba32Float,
+        usage: wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST,
+        view_formats: &[],
+    })
+}
+
+/// An image-background texture of `w`×`h` sRGB pixels.
+pub(super) fn image_texture(device: &wgpu::Device, w: u32, h: u32) -> wgpu::Texture {
+    device.create_texture(&wgpu::TextureDescriptor {
+        label: Some("marbling background image"),
+        size: wgpu::Extent3d {
+            width: w,
+            height: h,
+            depth_or_array_layers: 1,
+        },
+        mip_level_count: 1,
+        sample_count: 1,
+        dimension: wgpu::TextureDimension::D2,
+        format: wgpu::TextureFormat::Rgba8UnormSrgb,
+        usage: wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST,
+        view_formats: &[],
+    })
+}
+
+/// Writes `prepared.records[range]` into its texture, one write per texture row.
+pub(super) fn write_records(
+    queue: &wgpu::Queue,
+    prepared: &mut PreparedDesign,
+    range: std::ops::Range<usize>,
+) {
+    for (row, col, count) in prepared.layout.runs(range.clone()) {
+        let first = row as usize * prepared.layout.ops_per_row as usize + col as usize;
+        let texels: Vec<[f32; 4]> = prepared.records[first..first + count as usize]
+            .iter()
+            .flat_map(GpuOp::texels)
+            .collect();
+        queue.write_texture(
+            wgpu::TexelCopyTextureInfo {
+                texture: &prepared.ops_texture,
+                mip_level: 0,
+                origin: wgpu::Origin3d {
+                    x: col * TEXELS_PER_OP,
+                    y: row,
+                    z: 0,
+                },
+                aspect: wgpu::TextureAspect::All,
+            },
+            bytemuck::cast_slice(&texels),
+            wgpu::TexelCopyBufferLayout {
+                offset: 0,
+                bytes_per_row: Some(count * TEXELS_PER_OP * 16),
+                rows_per_image: Some(1),
+            },
+            wgpu::Extent3d {
+                width: count * TEXELS_PER_OP,
+                height: 1,
+                depth_or_array_layers: 1,
+            },
+        );
+    }
+    prepared.written += range.len() as u64;
+}
