@@ -332,13 +332,13 @@ impl View3dWindow {
             .id_salt("view3d-style-section")
             .show(ui, |ui| self.style.ui(ui, controls));
         controls.push(("view3d-style-section".into(), r.header_response.rect));
-        ui.add(
-            egui::Label::new(
-                "Drag to turn · click to centre a spot · wheel or pinch to zoom · \
-                 double-click to reset",
-            )
-            .wrap(),
-        );
+        let hint = if crate::platform::touch_screen() {
+            "Drag to turn · tap to centre a spot · pinch to zoom · double-tap to reset"
+        } else {
+            "Drag to turn · click to centre a spot · wheel or pinch to zoom · double-click to \
+             reset"
+        };
+        ui.add(egui::Label::new(hint).wrap());
         let Some(rs) = frame.wgpu_render_state() else {
             ui.label("The 3D view needs the GPU renderer.");
             return;

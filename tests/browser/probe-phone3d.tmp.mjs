@@ -1,0 +1,33 @@
+import fs from 'node:fs';
+import { launch, openPage, clickControl, controls, attr, example, linkFragment } from './harness.mjs';
+const { browser, site } = await launch('webgpu');
+const stone = example('stone');
+const { page, context, errors } = await openPage(browser, site, linkFragment(stone.design, 'p3'), { width: 390, height: 844 }, { hasTouch: true, isMobile: true, deviceScaleFactor: 2 });
+const names = async () => Object.keys(await controls(page));
+console.log((await names()).filter((n) => n.startsWith('sheet') || n.startsWith('tab')).join(' '));
+await clickControl(page, 'sheet-files').catch((e) => console.log('no sheet-files', String(e).slice(0, 200)));
+await page.waitForTimeout(800);
+await clickControl(page, 'view3d');
+await page.waitForFunction(() => Number(document.body.dataset.view3dFrames) >= 1, null, { timeout: 120000 });
+await page.waitForTimeout(1500);
+await clickControl(page, 'view3d-style-section');
+await page.waitForFunction(() => `;${document.body.dataset.controls ?? ''}`.includes(';view3d-style='), null, { timeout: 60000 });
+for (const style of ['painterly', 'felt']) {
+  const tapc = async (n) => { const r = (await controls(page))[n]; await page.touchscreen.tap(r.x + r.w / 2, r.y + r.h / 2); };
+  await tapc('view3d-style');
+  await page.waitForTimeout(1500);
+  await page.screenshot({ path: `/tmp/phone-3d-menu.png` });
+  console.log(JSON.stringify(Object.fromEntries(Object.entries(await controls(page)).filter(([n]) => n.startsWith('view3d')))));
+  await page.waitForFunction((n) => `;${document.body.dataset.controls ?? ''}`.includes(`;view3d-style-${n}=`), style, { timeout: 60000 });
+  const f = Number(await attr(page, 'data-frames'));
+  await page.waitForFunction((n) => Number(document.body.dataset.frames) >= n, f + 2);
+  await tapc(`view3d-style-${style}`);
+  await page.waitForFunction((n) => JSON.parse(document.body.dataset.view3d).style?.style === n, style, { timeout: 60000 });
+  await page.waitForTimeout(3000);
+  await page.screenshot({ path: `/tmp/phone-3d-${style}.png` });
+  const c = await controls(page);
+  const out = Object.entries(c).filter(([n, r]) => n.startsWith('view3d') && (r.x < 0 || r.x + r.w > 390.5));
+  console.log(style, 'controls outside 390 px:', JSON.stringify(out), JSON.parse(await attr(page, 'data-view3d')).style);
+}
+console.log('errors', errors);
+await context.close(); await browser.close(); site.server.close();
