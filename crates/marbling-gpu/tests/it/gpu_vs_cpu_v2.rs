@@ -33,7 +33,8 @@ const BACKGROUNDS: [(&str, &str, &str); 4] = [
     ),
     (
         "gabor",
-        r#"{"type":"gabor","kind":"anisotropic","frequency":0.06,"orientation":0.7,"bandwidth":0.05,"impulses":32,"seed":7}"#,
+        // Both drives: the shader evaluates them through one fBm call site.
+        r#"{"type":"gabor","kind":"anisotropic","frequency":0.06,"orientation":0.7,"bandwidth":0.05,"impulses":32,"seed":7,"orientation_field":{"noise":{"type":"perlin","frequency":0.008,"octaves":2,"seed":9},"amount":1.5},"frequency_field":{"noise":{"type":"value","frequency":0.005,"seed":4},"amount":0.6}}"#,
         "sepia",
     ),
     (
