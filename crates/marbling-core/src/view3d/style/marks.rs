@@ -264,7 +264,26 @@ fn splat(scene: &Scene, layer: &Layer, kernels: &[Kernel], depth_test: DepthTest
             }
             let (c, s) = (k.omega.cos(), k.omega.sin());
             let tolerance = DEPTH_TOLERANCE_RADII * r * scene.world_per_pixel(k.depth);
+            // Along the row the kernel is stepped, not evaluated: with dx₀ the first
+            // pixel's offset, the envelope e = exp(−πa²(dx² + dy²)) gains the factor
+            // h = exp(−πa²(2dx + 1)) per pixel and h the factor exp(−2πa²); the wave is
+            // the real part of z = exp(i·2πF(dx·c + dy·s)), turned by exp(i·2πF·c).
+            let pa2 = PI * a * a;
+            let dx0 = x0 as f64 + 0.5 - k.x;
+            let mut envelope = (-pa2 * (dx0 * dx0 + dy * dy)).exp();
+            let mut h = (-pa2 * (2.0 * dx0 + 1.0)).exp();
+            let q = (-2.0 * pa2).exp();
+            let (mut zr, mut zi) = {
+                let phase = 2.0 * PI * k.frequency * (dx0 * c + dy * s);
+                (phase.cos(), phase.sin())
+            };
+            let turn = 2.0 * PI * k.frequency * c;
+            let (ur, ui) = (turn.cos(), turn.sin());
             for (x, cell) in acc.iter_mut().enumerate().take(x1 as usize + 1).skip(x0) {
+                let (e, wave) = (envelope, zr);
+                envelope *= h;
+                h *= q;
+                (zr, zi) = (zr * ur - zi * ui, zr * ui + zi * ur);
                 let depth = f64::from(scene.depth[y * w + x]);
                 if !depth.is_finite() {
                     continue;
@@ -277,13 +296,7 @@ fn splat(scene: &Scene, layer: &Layer, kernels: &[Kernel], depth_test: DepthTest
                         1.0 - f64::from(marbling_noise::smoothstep(0.5, 1.0, e as f32))
                     }
                 };
-                if keep == 0.0 {
-                    continue;
-                }
-                let dx = x as f64 + 0.5 - k.x;
-                let envelope = (-PI * a * a * (dx * dx + dy * dy)).exp();
-                let wave = (2.0 * PI * k.frequency * (dx * c + dy * s)).cos();
-                *cell += keep * k.weight * envelope * wave;
+                *cell += keep * k.weight * e * wave;
             }
         }
         (0..w)
