@@ -207,6 +207,17 @@ impl View3dRenderer {
         }
     }
 
+    /// Remakes the bind group after a texture of it was replaced.
+    fn rebind(&mut self, device: &wgpu::Device) {
+        self.bind_group = Self::group(
+            device,
+            &self.layout,
+            &self.uniform,
+            &self.baked,
+            &self.style_field,
+        );
+    }
+
     fn group(
         device: &wgpu::Device,
         layout: &wgpu::BindGroupLayout,
@@ -242,13 +253,7 @@ impl View3dRenderer {
         let size = self.style_field.size();
         if (size.width, size.height) != (frame.width, frame.height) {
             self.style_field = field_texture(device, frame.width, frame.height);
-            self.bind_group = Self::group(
-                device,
-                &self.layout,
-                &self.uniform,
-                &self.baked,
-                &self.style_field,
-            );
+            self.rebind(device);
         }
         queue.write_texture(
             self.style_field.as_image_copy(),
@@ -281,13 +286,7 @@ impl View3dRenderer {
         let h = ((f64::from(dh) * k).round() as u32).clamp(1, side);
         if (self.baked.width, self.baked.height) != (w, h) {
             self.baked = RenderTarget::new(device, w, h, self.format);
-            self.bind_group = Self::group(
-                device,
-                &self.layout,
-                &self.uniform,
-                &self.baked,
-                &self.style_field,
-            );
+            self.rebind(device);
         }
         prepared.set_view(
             queue,
@@ -374,18 +373,11 @@ impl View3dRenderer {
 
 /// A style field texture of `width`×`height` texels (read with `textureLoad`).
 fn field_texture(device: &wgpu::Device, width: u32, height: u32) -> wgpu::Texture {
-    device.create_texture(&wgpu::TextureDescriptor {
-        label: Some("marbling 3d style field"),
-        size: wgpu::Extent3d {
-            width,
-            height,
-            depth_or_array_layers: 1,
-        },
-        mip_level_count: 1,
-        sample_count: 1,
-        dimension: wgpu::TextureDimension::D2,
-        format: wgpu::TextureFormat::Rgba8Unorm,
-        usage: wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST,
-        view_formats: &[],
-    })
+    bindings::written_texture(
+        device,
+        "marbling 3d style field",
+        width,
+        height,
+        wgpu::TextureFormat::Rgba8Unorm,
+    )
 }

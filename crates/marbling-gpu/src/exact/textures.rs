@@ -3,42 +3,29 @@
 //! written in place.
 
 use super::PreparedDesign;
+use crate::bindings::written_texture;
 use crate::encode::{GpuOp, OpLayout, TEXELS_PER_OP};
 
 /// An empty op texture of `layout`'s size.
 pub(super) fn op_texture(device: &wgpu::Device, layout: OpLayout) -> wgpu::Texture {
-    device.create_texture(&wgpu::TextureDescriptor {
-        label: Some("marbling ops"),
-        size: wgpu::Extent3d {
-            width: layout.width,
-            height: layout.height,
-            depth_or_array_layers: 1,
-        },
-        mip_level_count: 1,
-        sample_count: 1,
-        dimension: wgpu::TextureDimension::D2,
-        format: wgpu::TextureFormat::Rgba32Float,
-        usage: wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST,
-        view_formats: &[],
-    })
+    written_texture(
+        device,
+        "marbling ops",
+        layout.width,
+        layout.height,
+        wgpu::TextureFormat::Rgba32Float,
+    )
 }
 
 /// An image-background texture of `w`×`h` sRGB pixels.
 pub(super) fn image_texture(device: &wgpu::Device, w: u32, h: u32) -> wgpu::Texture {
-    device.create_texture(&wgpu::TextureDescriptor {
-        label: Some("marbling background image"),
-        size: wgpu::Extent3d {
-            width: w,
-            height: h,
-            depth_or_array_layers: 1,
-        },
-        mip_level_count: 1,
-        sample_count: 1,
-        dimension: wgpu::TextureDimension::D2,
-        format: wgpu::TextureFormat::Rgba8UnormSrgb,
-        usage: wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST,
-        view_formats: &[],
-    })
+    written_texture(
+        device,
+        "marbling background image",
+        w,
+        h,
+        wgpu::TextureFormat::Rgba8UnormSrgb,
+    )
 }
 
 /// Writes `prepared.records[range]` into its texture, one write per texture row.
