@@ -16,6 +16,8 @@ import {
 } from './harness.mjs';
 
 const GEL = example('gel-git');
+/** A small laptop's window (CSS pixels). */
+const SMALL = { width: 760, height: 540 };
 const tmp = (name) => path.join(os.tmpdir(), `marbling-trust-${process.pid}-${name}`);
 const noiseLink = (spec) => `#n=${zlib.deflateRawSync(Buffer.from(JSON.stringify(spec))).toString('base64url')}`;
 
@@ -32,7 +34,7 @@ describe('trust: links, reloads, panics and data-ready on webgl2', () => {
       { hash: '#n=@@not-base64', error: /^share link: not valid base64url/ },
     ];
     for (const c of cases) {
-      const { context, page, errors } = await firstVisit(c.hash);
+      const { context, page, errors } = await freshVisit(shared.browser, shared.site, c.hash, SMALL);
       await waitReady(page);
       assert.equal(await attr(page, 'data-landing'), null, `${c.hash.slice(0, 12)}: the gallery hid the link`);
       if (c.ops !== undefined) assert.equal(await attr(page, 'data-ops'), String(c.ops));
@@ -96,7 +98,10 @@ describe('trust: links, reloads, panics and data-ready on webgl2', () => {
       },
     };
     for (const [way, w] of Object.entries(ways)) {
-      const { context, page, errors } = await firstVisit(w.hash ?? '');
+      // A small laptop's window keeps the three exact frames of each way cheap; the
+      // gallery's card needs the whole gallery in view.
+      const viewport = way === 'card' ? DESKTOP : SMALL;
+      const { context, page, errors } = await freshVisit(shared.browser, shared.site, w.hash ?? '', viewport);
       if (!w.hash) await page.waitForFunction(() => document.body.dataset.landing === '1', null, { timeout: READY_MS });
       const n = (await w.go?.(page)) ?? w.n;
       await waitFrame(page, n);
@@ -221,8 +226,8 @@ function halve(img) {
 }
 
 /** A fresh profile (no autosave: a first visit) at `hash`, with its page errors. */
-async function freshVisit(browser, site, hash) {
-  const context = await browser.newContext({ viewport: DESKTOP, deviceScaleFactor: 1, acceptDownloads: true, serviceWorkers: 'block' });
+async function freshVisit(browser, site, hash, viewport = DESKTOP) {
+  const context = await browser.newContext({ viewport, deviceScaleFactor: 1, acceptDownloads: true, serviceWorkers: 'block' });
   const page = await context.newPage();
   const errors = [];
   page.on('pageerror', (e) => errors.push(String(e)));
