@@ -466,8 +466,8 @@ for (const backend of Object.keys(BACKENDS)) {
     });
 
     test('the Noise panel: a seamless export, a layer on 2×2 tiles, and Khlebnikov et al. 2013 weather data', { skip: backend !== 'webgpu' }, async () => {
-      // A tall page: the whole Noise panel fits without scrolling.
-      const { page, context, errors } = await openPage(browser, site, '', { width: 1300, height: 1500 });
+      // A laptop's page (clickControl scrolls the Noise panel to what lies below).
+      const { page, context, errors } = await openPage(browser, site, '', { width: 1000, height: 900 });
       await clickControl(page, 'mode-noise');
       await page.waitForFunction(() => document.body.dataset.mode === 'noise' && document.body.dataset.ready === '1', null, { timeout: READY_MS });
       assert.equal(await attr(page, 'data-noise-preview'), 'off', 'a plain noise needs no CPU preview');
