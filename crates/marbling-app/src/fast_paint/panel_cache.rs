@@ -281,20 +281,13 @@ pub(crate) fn record_egui(
 
 impl PanelTexture {
     fn new(gpu: &PanelGpu<'_>, size: [u32; 2]) -> Self {
-        let texture = gpu.device.create_texture(&wgpu::TextureDescriptor {
-            label: Some("marbling panel cache"),
-            size: wgpu::Extent3d {
-                width: size[0],
-                height: size[1],
-                depth_or_array_layers: 1,
-            },
-            mip_level_count: 1,
-            sample_count: 1,
-            dimension: wgpu::TextureDimension::D2,
-            format: gpu.target_format,
-            usage: wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING,
-            view_formats: &[],
-        });
+        let texture = marbling_gpu::bindings::texture(
+            gpu.device,
+            "marbling panel cache",
+            size,
+            gpu.target_format,
+            wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING,
+        );
         let view = texture.create_view(&wgpu::TextureViewDescriptor::default());
         let presenter = Presenter::new(gpu.device, gpu.target_format);
         let mut source = presenter.source_in_target_format(gpu.device, &view);
