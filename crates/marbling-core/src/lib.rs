@@ -11,6 +11,7 @@ pub mod caption;
 pub mod color;
 pub mod compare;
 mod compiled;
+pub mod deep;
 mod design;
 pub mod explain;
 mod gestures;
@@ -34,6 +35,7 @@ pub mod synth;
 pub mod turbulence;
 mod validate;
 pub mod view3d;
+pub mod view_spec;
 mod walk;
 
 pub use color::Rgb8;
@@ -50,7 +52,7 @@ pub use ops::*;
 pub use recipe::{MAX_CAPTION, MAX_RECIPE_HISTORY, MAX_RECIPE_NAME, Recipe};
 pub use render::{
     MAX_OUTPUT_PIXELS, MAX_OUTPUT_SIDE, RenderError, RenderOptions, Window, output_size, render,
-    render_window_rows, render_with_progress,
+    render_window, render_window_rows, render_with_progress,
 };
 pub use sampling::Antialias;
 pub use share::{
@@ -63,4 +65,5 @@ pub use surface::{
     PaletteError,
 };
 pub use validate::{FieldError, ValidationErrors};
+pub use view_spec::{ViewSpec, ViewSpecError};
 pub use walk::{Batch, Traced, Walker};

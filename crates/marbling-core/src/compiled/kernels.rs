@@ -106,7 +106,7 @@ pub(crate) fn drop_back(cx: f64, cy: f64, r2: f64, dx: f64, dy: f64, d2: f64) ->
 
 /// Distance to the nearest rake tine: s/2 − |fmod(d, s) − s/2| for d ≥ 0.
 #[inline(always)]
-pub(super) fn rake_distance(d: f64, s: f64) -> f64 {
+pub(crate) fn rake_distance(d: f64, s: f64) -> f64 {
     let q = d / s;
     // fract(q) by truncation (fast, vectorisable); beyond 2^52 an f64 has no fraction.
     let fr = if q < 4.0e15 {

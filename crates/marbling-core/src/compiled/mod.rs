@@ -16,7 +16,8 @@ use std::sync::Arc;
 mod kernels;
 use kernels::jiggle_forward;
 pub(crate) use kernels::{
-    comb_shift, drop_back, jiggle_back, rigid_move, swirl_turn, tines_shift, wave_shift,
+    comb_shift, drop_back, jiggle_back, rake_distance, rigid_move, swirl_turn, tines_shift,
+    wave_shift,
 };
 
 /// One op with its constants precomputed. Lengths are design pixels. A drop pattern

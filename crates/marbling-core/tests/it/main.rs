@@ -2,8 +2,8 @@
 //! file): each module is one area, named as its file.
 
 mod common;
+mod deep_view;
 mod design_json;
-mod design_v2;
 mod flow;
 mod image_background;
 mod ops_properties;
