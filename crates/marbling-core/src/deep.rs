@@ -21,7 +21,7 @@ use std::f64::consts::TAU;
 /// The linearised steps (stylus, flow) hold while |δ| ≤ this × the field's length scale
 /// (the stylus's wake L, the flow's finest wavelength 1/f): the relative error of the
 /// linear step is then about this small.
-pub const LINEAR_REACH: f64 = 1e-4;
+pub const LINEAR_REACH: f64 = 1e-3;
 
 /// How far a covered reference is moved outside its drop's disc, relative to the radius
 /// (the rebased point's distance to the rim is about 10⁻⁹ r).

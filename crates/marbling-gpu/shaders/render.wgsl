@@ -29,6 +29,10 @@ struct RenderParams {
     layers: array<vec4<f32>, 2>,
     // (dx, dy, weight, 0): offsets from the pixel's top-left corner in output pixels.
     samples: array<vec4<f32>, 20>,
+    // Deep zoom (deep.wgsl; variants with DEEP_ENABLED only): tile side (output
+    // pixels), tiles per row, log2 of the reference records per texture row, records
+    // per tile (op_count + 1). `offset` is then 0: samples are placed from the target.
+    deep: vec4<u32>,
 }
 
 @group(0) @binding(0) var<uniform> params: RenderParams;
@@ -87,7 +91,11 @@ fn trace(p0: vec2<f32>) -> vec4<f32> {
 // The colour design point `p0` shows when its walk through the ops starts at `p`
 // (p0 itself, or where a turbulence's flow took it; the paper's grain stays at p0).
 fn trace_from(p0: vec2<f32>, p: vec2<f32>) -> vec4<f32> {
-    let h = walk(p);
+    return hit_colour(p0, walk(p));
+}
+
+// The colour of output design point `p0` whose walk ended with `h`.
+fn hit_colour(p0: vec2<f32>, h: Hit) -> vec4<f32> {
     if surface.flags == 0u {
         return h.color;
     }
@@ -118,7 +126,12 @@ fn average(pixel: vec2<f32>, start: u32, count: u32) -> vec4<f32> {
     var packed = -1.0;
     for (var i = 0u; i < count; i++) {
         let s = params.samples[start + i];
-        let c = trace((pixel + s.xy) * params.inv_scale);
+        var c: vec4<f32>;
+        if DEEP_ENABLED {
+            c = deep_trace(pixel + s.xy);
+        } else {
+            c = trace((pixel + s.xy) * params.inv_scale);
+        }
         acc += s.z * c.rgb;
         if i == 0u {
             packed = c.w;

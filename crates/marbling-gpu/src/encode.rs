@@ -253,6 +253,13 @@ pub struct OpLayout {
 }
 
 impl OpLayout {
+    /// Room for one record (a texture of 2×1 texels).
+    pub const SMALLEST: OpLayout = OpLayout {
+        width: TEXELS_PER_OP,
+        height: 1,
+        ops_per_row: 1,
+    };
+
     /// The smallest layout with room for `capacity` ops in a texture at most `max_side`
     /// texels wide and high (`max_side` ≥ 2; WebGL2 guarantees 2048). `None` when they
     /// do not fit.

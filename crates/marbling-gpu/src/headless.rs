@@ -2,11 +2,12 @@
 //! tile (at most the device's texture side), with progress per tile. Native only.
 
 use crate::compute::ComputeExact;
+use crate::deep::DeepView;
 use crate::exact::{ExactRenderer, PreparedDesign, View};
 use crate::target::{RenderTarget, copy_to_buffer, read_buffer};
 use crate::tile_grid;
 use crate::{GpuContext, GpuError};
-use marbling_core::{Design, Op, RenderOptions, RgbaImage, output_size};
+use marbling_core::{Antialias, Design, Op, Point, RenderOptions, RgbaImage, Window, output_size};
 
 /// Default tile side, pixels (smaller when the device's texture limit is smaller).
 /// Large enough that 1080p and 4K frames are one or a few draws, small enough that a
@@ -231,6 +232,68 @@ impl GpuRenderer {
         self.render_prepared(&mut prepared, design, opts, &|_, _| {})
     }
 
+    /// Renders `window` of `design` by the deep walk (one f64 reference per 64-pixel
+    /// tile, each sample walking its offset from it in f32): the twin of
+    /// `marbling_core::render_window` at any depth, where the plain f32 walk turns to
+    /// blocks past about 10⁴×.
+    pub fn render_window(
+        &self,
+        design: &Design,
+        window: &Window,
+        antialias: Antialias,
+    ) -> Result<RgbaImage, GpuError> {
+        window.check()?;
+        let mut prepared = self.prepare(design)?;
+        self.render_tiles(
+            &mut prepared,
+            [window.width, window.height],
+            &|_, _| {},
+            |p, x0, y0, w, h| {
+                let view = DeepView {
+                    origin: Point::new(
+                        window.x0 + f64::from(x0) / window.scale,
+                        window.y0 + f64::from(y0) / window.scale,
+                    ),
+                    scale: window.scale,
+                    size: [w, h],
+                    antialias,
+                };
+                self.exact
+                    .set_deep_view(&self.ctx.device, &self.ctx.queue, p, &view)
+            },
+        )
+    }
+
+    /// [`GpuRenderer::render_window`] by the plain f32 walk (samples placed in f32 from
+    /// the window's offset in output pixels): what shallow views draw with, and the
+    /// baseline that shows where f32 fails.
+    pub fn render_window_f32(
+        &self,
+        design: &Design,
+        window: &Window,
+        antialias: Antialias,
+    ) -> Result<RgbaImage, GpuError> {
+        window.check()?;
+        let mut prepared = self.prepare(design)?;
+        self.render_tiles(
+            &mut prepared,
+            [window.width, window.height],
+            &|_, _| {},
+            |p, x0, y0, _, _| {
+                let view = View {
+                    scale: window.scale,
+                    offset: [
+                        window.x0 * window.scale + f64::from(x0),
+                        window.y0 * window.scale + f64::from(y0),
+                    ],
+                    antialias,
+                };
+                p.set_view(&self.ctx.queue, &view);
+                Ok(())
+            },
+        )
+    }
+
     /// Renders `prepared` (an upload of `design`) in tiles.
     fn render_prepared(
         &self,
@@ -240,17 +303,32 @@ impl GpuRenderer {
         progress: &dyn Fn(usize, usize),
     ) -> Result<RgbaImage, GpuError> {
         let (width, height) = output_size(design, opts.scale)?;
-        let mut image = RgbaImage::filled(width, height, [0, 0, 0, 255]);
-        let tiles = tile_grid(width, height, self.tile_side);
-        for (done, &(x0, y0, w, h)) in tiles.iter().enumerate() {
+        self.render_tiles(prepared, [width, height], progress, |p, x0, y0, _, _| {
             let view = View {
                 scale: opts.scale,
                 offset: [f64::from(x0), f64::from(y0)],
                 antialias: opts.antialias,
             };
+            p.set_view(&self.ctx.queue, &view);
+            Ok(())
+        })
+    }
+
+    /// Renders `prepared` into an image of `size` pixels, tile by tile: `set_view(prepared,
+    /// x0, y0, w, h)` aims it at each tile before its draw.
+    fn render_tiles(
+        &self,
+        prepared: &mut PreparedDesign,
+        [width, height]: [u32; 2],
+        progress: &dyn Fn(usize, usize),
+        mut set_view: impl FnMut(&mut PreparedDesign, u32, u32, u32, u32) -> Result<(), GpuError>,
+    ) -> Result<RgbaImage, GpuError> {
+        let mut image = RgbaImage::filled(width, height, [0, 0, 0, 255]);
+        let tiles = tile_grid(width, height, self.tile_side);
+        for (done, &(x0, y0, w, h)) in tiles.iter().enumerate() {
             self.ctx.checked(|| -> Result<(), GpuError> {
                 let target = self.target(w, h);
-                prepared.set_view(&self.ctx.queue, &view);
+                set_view(prepared, x0, y0, w, h)?;
                 let mut encoder = self
                     .ctx
                     .device

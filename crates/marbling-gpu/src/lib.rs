@@ -61,6 +61,7 @@
 pub mod bindings;
 mod compute;
 mod context;
+pub mod deep;
 pub mod encode;
 mod error;
 mod exact;

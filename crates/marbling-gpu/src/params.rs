@@ -40,6 +40,9 @@ pub struct RenderParams {
     pub layers: [[f32; 4]; 2],
     /// (dx, dy, weight, 0) per sample: first pass, then refinement.
     pub samples: [[f32; 4]; MAX_RENDER_SAMPLES],
+    /// Deep zoom (`shaders/deep.wgsl`): tile side, tiles per row, log2 of the
+    /// reference records per texture row, records per tile. Zero: not deep.
+    pub deep: [u32; 4],
 }
 
 /// Parameters of the live-preview pass.
@@ -102,6 +105,7 @@ impl RenderParams {
             encode_srgb: u32::from(encode_srgb),
             layers: [[0.0; 4]; 2],
             samples,
+            deep: [0; 4],
         }
     }
 }

@@ -23,6 +23,10 @@ pub const OPS_V3_OFF: &str = include_str!("../shaders/ops_v3_off.wgsl");
 pub const FLOW: &str = include_str!("../shaders/flow.wgsl");
 /// `shaders/flow_off.wgsl`: stand-in for `flow.wgsl` in variants without a flow.
 pub const FLOW_OFF: &str = include_str!("../shaders/flow_off.wgsl");
+/// `shaders/deep.wgsl`: deep zoom's perturbed walk.
+pub const DEEP: &str = include_str!("../shaders/deep.wgsl");
+/// `shaders/deep_off.wgsl`: stand-in for `deep.wgsl` in variants for shallow views.
+pub const DEEP_OFF: &str = include_str!("../shaders/deep_off.wgsl");
 /// `shaders/image.wgsl`: the image background's sampling (every variant).
 pub const IMAGE: &str = include_str!("../shaders/image.wgsl");
 /// `shaders/surface.wgsl`: noise background, pigment and paper grain.
@@ -35,7 +39,7 @@ pub const RENDER: &str = include_str!("../shaders/render.wgsl");
 
 /// The exact renderer for designs with a plain or image background, no overlays and no
 /// schema v3 op (every v1 design): `common.wgsl`, `records.wgsl`, `ops_v3_off.wgsl`,
-/// `flow_off.wgsl`, `image.wgsl`, `surface_off.wgsl`, `render.wgsl` — no noise or stylus code, so it is
+/// `flow_off.wgsl`, `deep_off.wgsl`, `image.wgsl`, `surface_off.wgsl`, `render.wgsl` — no noise or stylus code, so it is
 /// as small and fast as before schemas v2 and v3.
 pub const RENDER_PLAIN_WGSL: &str = concat!(
     include_str!("../shaders/common.wgsl"),
@@ -45,6 +49,8 @@ pub const RENDER_PLAIN_WGSL: &str = concat!(
     include_str!("../shaders/ops_v3_off.wgsl"),
     "\n",
     include_str!("../shaders/flow_off.wgsl"),
+    "\n",
+    include_str!("../shaders/deep_off.wgsl"),
     "\n",
     include_str!("../shaders/image.wgsl"),
     "\n",
@@ -68,6 +74,9 @@ pub struct ExactVariant {
     pub v3: bool,
     /// With schema v4's flow (`flow.wgsl` and the noise lattice; only with `v3`).
     pub flow: bool,
+    /// Walking by perturbation from per-tile references (`deep.wgsl`): views deeper
+    /// than f32 can place samples in.
+    pub deep: bool,
 }
 
 impl ExactVariant {
@@ -76,36 +85,54 @@ impl ExactVariant {
         noises: NoiseKinds::NONE,
         v3: false,
         flow: false,
+        deep: false,
     };
 
-    /// The six kinds of module: plain, with every noise, with v3 ops, with both, and
-    /// the last two with the flow.
-    pub const ALL: [ExactVariant; 6] = [
+    /// The eight kinds of module: plain, with every noise, with v3 ops, with both, the
+    /// last two with the flow, and the first and the fullest walking deep views.
+    pub const ALL: [ExactVariant; 8] = [
         ExactVariant::PLAIN,
         ExactVariant {
             noises: NoiseKinds::ALL,
             v3: false,
             flow: false,
+            deep: false,
         },
         ExactVariant {
             noises: NoiseKinds::NONE,
             v3: true,
             flow: false,
+            deep: false,
         },
         ExactVariant {
             noises: NoiseKinds::ALL,
             v3: true,
             flow: false,
+            deep: false,
         },
         ExactVariant {
             noises: NoiseKinds::NONE,
             v3: true,
             flow: true,
+            deep: false,
         },
         ExactVariant {
             noises: NoiseKinds::ALL,
             v3: true,
             flow: true,
+            deep: false,
+        },
+        ExactVariant {
+            noises: NoiseKinds::NONE,
+            v3: false,
+            flow: false,
+            deep: true,
+        },
+        ExactVariant {
+            noises: NoiseKinds::ALL,
+            v3: true,
+            flow: true,
+            deep: true,
         },
     ];
 
@@ -122,11 +149,16 @@ impl ExactVariant {
             (true, false) => "v3",
             (true, true) => "v3+flow",
         };
-        match (self.surface(), ops) {
+        let name = match (self.surface(), ops) {
             (false, "") => "plain".to_owned(),
             (false, ops) => ops.to_owned(),
             (true, "") => format!("surface({})", self.noises.name()),
             (true, ops) => format!("surface({})+{ops}", self.noises.name()),
+        };
+        if self.deep {
+            format!("{name}+deep")
+        } else {
+            name
         }
     }
 
@@ -138,9 +170,10 @@ impl ExactVariant {
 
     /// The render module (vertex and fragment entry points).
     pub fn render_wgsl(self) -> String {
-        if !self.surface() && !self.v3 {
+        if !self.surface() && !self.v3 && !self.deep {
             return RENDER_PLAIN_WGSL.to_owned();
         }
+        let deep = if self.deep { DEEP } else { DEEP_OFF };
         let v3 = if self.v3 { OPS_V3 } else { OPS_V3_OFF };
         let flow = match (self.v3 && self.flow, self.surface()) {
             (false, _) => FLOW_OFF.to_owned(),
@@ -157,7 +190,7 @@ impl ExactVariant {
         } else {
             SURFACE_OFF.to_owned()
         };
-        [COMMON, RECORDS, v3, &flow, IMAGE, &surface, RENDER].join("\n")
+        [COMMON, RECORDS, v3, &flow, deep, IMAGE, &surface, RENDER].join("\n")
     }
 
     /// The render module with the compute entry point.
@@ -213,7 +246,7 @@ pub fn walk_wgsl() -> String {
 
 /// The exact renderer with everything: schema v2 surfaces, schema v3 ops and the flow.
 pub fn render_wgsl() -> String {
-    ExactVariant::ALL[5].render_wgsl()
+    ExactVariant::ALL[7].render_wgsl()
 }
 
 /// Every render-pipeline module (vertex + fragment; WebGPU and WebGL2) as (name,
@@ -224,6 +257,7 @@ pub fn all() -> Vec<(String, String)> {
         noises: NoiseKinds::NONE.with(k),
         v3: false,
         flow: false,
+        deep: false,
     });
     let mut out: Vec<(String, String)> = ExactVariant::ALL
         .iter()
@@ -239,7 +273,8 @@ pub fn all() -> Vec<(String, String)> {
         }
     }
     out.push(("present".to_owned(), PRESENT_WGSL.to_owned()));
-    for v in ExactVariant::ALL {
+    // The 3D view draws its panes at the sheet's scale: never deep.
+    for v in ExactVariant::ALL.into_iter().filter(|v| !v.deep) {
         out.push((
             format!("view3d-{}", v.name()),
             crate::view3d::view3d_wgsl(v),

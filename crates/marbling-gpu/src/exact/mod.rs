@@ -18,6 +18,7 @@ use marbling_noise::wgsl::NoiseKinds;
 use std::sync::Arc;
 use textures::{image_texture, op_texture, write_records};
 
+mod deep_view;
 mod textures;
 
 /// The exact render pipeline for one target format, in [`ExactVariant`]s: plain (every
@@ -67,6 +68,11 @@ pub struct PreparedDesign {
     /// The layers of a looping turbulence whose flow is the last uploaded op
     /// ([`PreparedDesign::set_turbulence`]).
     turbulence: Option<[Layer; 2]>,
+    /// Deep zoom's reference records (`shaders/deep.wgsl`; 1×1 when not deep), bound
+    /// at binding 4.
+    deep_texture: wgpu::Texture,
+    /// The deep walk's parameters ([`RenderParams::deep`]) while a deep view is set.
+    deep: Option<[u32; 4]>,
     uniform: wgpu::Buffer,
     bind_group: wgpu::BindGroup,
     params: RenderParams,
@@ -118,6 +124,7 @@ impl ExactRenderer {
                 bindings::texture_2d(1, visibility, false),
                 bindings::uniform::<SurfaceParams>(2, visibility),
                 bindings::texture_2d(3, visibility, false),
+                bindings::texture_2d(4, visibility, false),
             ],
         });
         let pipeline_layout = bindings::pipeline_layout(device, "marbling render", &layout);
@@ -191,7 +198,14 @@ impl ExactRenderer {
         let uniform = bindings::uniform_buffer::<RenderParams>(device, "marbling render params");
         let surface = bindings::uniform_buffer::<SurfaceParams>(device, "marbling surface params");
         let image_texture = image_texture(device, 1, 1);
-        let bind_group = self.bind_group(device, &uniform, &ops_texture, &surface, &image_texture);
+        let deep_texture = op_texture(device, OpLayout::SMALLEST);
+        let bind_group = self.bind_group(
+            device,
+            &uniform,
+            &ops_texture,
+            &surface,
+            [&image_texture, &deep_texture],
+        );
         let design = shown.design;
         let view = View {
             scale: 1.0,
@@ -215,6 +229,8 @@ impl ExactRenderer {
             v3: false,
             flow: false,
             turbulence: None,
+            deep_texture,
+            deep: None,
             uniform,
             bind_group,
             params: RenderParams::new(
@@ -375,21 +391,22 @@ impl ExactRenderer {
             &prepared.uniform,
             &prepared.ops_texture,
             &prepared.surface,
-            &prepared.image_texture,
+            [&prepared.image_texture, &prepared.deep_texture],
         );
     }
 
-    /// Bind group 0 over a design's buffers, op texture and image texture.
+    /// Bind group 0 over a design's buffers, op texture, image and deep-reference textures.
     fn bind_group(
         &self,
         device: &wgpu::Device,
         uniform: &wgpu::Buffer,
         ops: &wgpu::Texture,
         surface: &wgpu::Buffer,
-        image: &wgpu::Texture,
+        [image, deep]: [&wgpu::Texture; 2],
     ) -> wgpu::BindGroup {
         let view = ops.create_view(&wgpu::TextureViewDescriptor::default());
         let image_view = image.create_view(&wgpu::TextureViewDescriptor::default());
+        let deep_view = deep.create_view(&wgpu::TextureViewDescriptor::default());
         crate::bindings::bind_group(
             device,
             "marbling render",
@@ -399,6 +416,7 @@ impl ExactRenderer {
                 wgpu::BindingResource::TextureView(&view),
                 surface.as_entire_binding(),
                 wgpu::BindingResource::TextureView(&image_view),
+                wgpu::BindingResource::TextureView(&deep_view),
             ],
         )
     }
@@ -440,6 +458,7 @@ impl PreparedDesign {
     /// it applies to command buffers submitted after this call).
     pub fn set_view(&mut self, queue: &wgpu::Queue, view: &View) {
         self.view = *view;
+        self.deep = None;
         self.write_params(queue);
     }
 
@@ -492,6 +511,7 @@ impl PreparedDesign {
             self.params.encode_srgb == 1,
         );
         self.params.layers = layers;
+        self.params.deep = self.deep.unwrap_or([0; 4]);
         queue.write_buffer(&self.uniform, 0, bytemuck::bytes_of(&self.params));
     }
 
@@ -536,6 +556,7 @@ impl PreparedDesign {
             },
             v3: self.v3,
             flow: self.flow,
+            deep: self.deep.is_some(),
         }
     }
 

@@ -34,15 +34,33 @@ pub(super) fn write_records(
     prepared: &mut PreparedDesign,
     range: std::ops::Range<usize>,
 ) {
-    for (row, col, count) in prepared.layout.runs(range.clone()) {
-        let first = row as usize * prepared.layout.ops_per_row as usize + col as usize;
-        let texels: Vec<[f32; 4]> = prepared.records[first..first + count as usize]
+    write_rows(
+        queue,
+        &prepared.ops_texture,
+        prepared.layout,
+        &prepared.records,
+        range.clone(),
+    );
+    prepared.written += range.len() as u64;
+}
+
+/// Writes `records[range]` into `texture` laid out as `layout`, one write per row.
+pub(super) fn write_rows(
+    queue: &wgpu::Queue,
+    texture: &wgpu::Texture,
+    layout: OpLayout,
+    records: &[GpuOp],
+    range: std::ops::Range<usize>,
+) {
+    for (row, col, count) in layout.runs(range) {
+        let first = row as usize * layout.ops_per_row as usize + col as usize;
+        let texels: Vec<[f32; 4]> = records[first..first + count as usize]
             .iter()
             .flat_map(GpuOp::texels)
             .collect();
         queue.write_texture(
             wgpu::TexelCopyTextureInfo {
-                texture: &prepared.ops_texture,
+                texture,
                 mip_level: 0,
                 origin: wgpu::Origin3d {
                     x: col * TEXELS_PER_OP,
@@ -64,5 +82,4 @@ pub(super) fn write_records(
             },
         );
     }
-    prepared.written += range.len() as u64;
 }

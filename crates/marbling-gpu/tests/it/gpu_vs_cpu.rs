@@ -11,6 +11,7 @@
 //! [`STRENGTH`], which keeps them well-conditioned; the full-strength designs are
 //! checked against their own f32-rounding baseline instead.
 
+use crate::common::scaled;
 use marbling_core::compare::{ImageDiff, compare};
 use marbling_core::synth::{Mix, random_design};
 use marbling_core::{Antialias, Design, Op, RenderOptions, RgbaImage, render};
@@ -23,29 +24,6 @@ const HEIGHT: u32 = 120;
 
 /// Strength of combs and swirls in the budgeted designs, relative to `random_design`.
 const STRENGTH: f64 = 0.3;
-
-/// `design` with every comb and swirl `k` times as strong.
-fn scaled(mut design: Design, k: f64) -> Design {
-    for op in &mut design.ops {
-        match op {
-            Op::Tine(t) => t.alpha *= k,
-            Op::Rake(r) => r.alpha *= k,
-            Op::Wavy(w) => w.amplitude *= k,
-            Op::Circular(c) => c.alpha *= k,
-            Op::Vortex(v) => v.alpha *= k,
-            Op::Comb(c) => c.alpha *= k,
-            Op::Jiggle(j) => {
-                j.along *= k;
-                j.across *= k;
-            }
-            Op::Turn(t) => t.angle *= k,
-            Op::Shift(t) => t.offset *= k,
-            Op::Flow(f) => f.strength *= k,
-            Op::Drop(_) | Op::Spray(_) | Op::Drops(_) | Op::Sprays(_) | Op::Stylus(_) => {}
-        }
-    }
-    design
-}
 
 /// `design` with every parameter rounded to the nearest f32 (a relative perturbation
 /// of at most 6e-8, the precision the GPU receives).

@@ -30,6 +30,7 @@ fn render_params_match_wgsl() {
             ("encode_srgb", offset_of!(RenderParams, encode_srgb)),
             ("layers", offset_of!(RenderParams, layers)),
             ("samples", offset_of!(RenderParams, samples)),
+            ("deep", offset_of!(RenderParams, deep)),
         ],
         size_of::<RenderParams>(),
     );

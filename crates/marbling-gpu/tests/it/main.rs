@@ -3,6 +3,7 @@
 
 mod common;
 mod compute;
+mod deep_view;
 mod gpu_vs_cpu;
 mod gpu_vs_cpu_v2;
 mod gpu_vs_cpu_v4;
