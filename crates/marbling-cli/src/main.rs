@@ -18,6 +18,7 @@ mod render_3d;
 mod size;
 mod svg;
 mod validate;
+mod view;
 
 use clap::{Parser, Subcommand};
 use std::process::ExitCode;

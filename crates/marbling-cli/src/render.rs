@@ -23,7 +23,13 @@ pub struct RenderArgs {
     scale: Option<f64>,
     /// Output width in pixels (the height follows the design's aspect ratio).
     #[arg(long, conflicts_with = "print")]
-    width: Option<u32>,
+    pub width: Option<u32>,
+    /// A window of the sheet at any depth: `X,Y,SCALE`, the design point at its centre
+    /// and output pixels per design pixel (up to 1e9), --width pixels wide (default: the
+    /// design's width). The cpu backend walks it in f64, gpu by perturbation from f64
+    /// references; a share link's `v=` holds the same three numbers.
+    #[arg(long, value_name = "X,Y,SCALE", conflicts_with_all = ["scale", "print", "flow"])]
+    view: Option<String>,
     /// Render for print on a sheet of this size: `297x210mm`, `21x29.7cm`, `8.5x11in`,
     /// or a preset (A4, A3, Letter, Endpaper = 50×70 cm) turned to the design. The
     /// design covers the sheet, centred; rows are streamed, so any size fits in memory;
@@ -116,6 +122,9 @@ pub fn run(args: &RenderArgs) -> Result<()> {
             bail!("--steps must be 0 to {steps} (the design's steps), got {k}");
         }
         design = marbling_core::making::design_at(&design, k);
+    }
+    if let Some(spec) = &args.view {
+        return crate::view::run(args, &design, spec);
     }
     if let Some(sheet) = &args.print {
         if args.backend != Backend::Cpu {

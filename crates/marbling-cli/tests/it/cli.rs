@@ -80,6 +80,51 @@ fn render_scale_width_and_aa_options() {
 }
 
 #[test]
+fn render_view_shows_a_deep_window_and_refuses_bad_views() {
+    let dir = scratch("view");
+    let input = write(&dir, "d.json", GOOD);
+    let out = dir.join("o.png").to_string_lossy().into_owned();
+    // The drop's rim point (80, 40) lies on the tine's line, which moves it αλ/λ = 20
+    // along x: at 10⁶× the window on (100, 40) shows the ink left, the paper right.
+    let view = ["--view", "100,40,1e6", "--width", "60"];
+    let o = marbling(
+        &[&["render", input.as_str(), "-o", out.as_str()][..], &view].concat(),
+        None,
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(
+        stdout(&o).contains("view 100,40,1000000 (0.00006 design px wide)"),
+        "{}",
+        stdout(&o)
+    );
+    let img = RgbaImage::from_png(&std::fs::read(&out).expect("png written")).expect("valid png");
+    assert_eq!((img.width, img.height), (60, 40));
+    let at = |x: usize| img.pixels[(20 * 60 + x) * 4..][..3].to_vec();
+    assert_eq!(
+        (at(10), at(50)),
+        (vec![0x1d, 0x35, 0x57], vec![0xf3, 0xea, 0xd7])
+    );
+    for (args, message) in [
+        (
+            vec!["--view", "1,2,0"],
+            "--view: scale must be 1e-3 to 1e9, got 0",
+        ),
+        (
+            vec!["--view", "1,2"],
+            "--view: expected x,y,scale (three numbers)",
+        ),
+        (
+            vec!["--view", "1,2,3", "--backend", "vector"],
+            "--view renders with the exact walk",
+        ),
+    ] {
+        let mut all = vec!["render", input.as_str(), "-o", out.as_str()];
+        all.extend(args);
+        assert_fails_with(&marbling(&all, None), message);
+    }
+}
+
+#[test]
 fn render_reads_stdin_and_writes_stdout() {
     let o = marbling(&["render", "-", "-o", "-"], Some(GOOD));
     assert!(o.status.success(), "{}", stderr(&o));
