@@ -11,7 +11,7 @@ import path from 'node:path';
 import zlib from 'node:zlib';
 import { PNG } from 'pngjs';
 import {
-  DESKTOP, MARBLING, READY_MS, attr, clickControl, crop, decode, differing, dropFile, example,
+  DESKTOP, MARBLING, READY_MS, SHOTS, attr, clickControl, crop, decode, differing, dropFile, example,
   linkFragment, sharedBrowser, sheet, shootSheet, twoColourPng, waitOps, waitReady,
 } from './harness.mjs';
 
@@ -265,7 +265,57 @@ async function readyAfterZoom(browser, site, backend) {
   await context.close();
 }
 
+/** A drop pulled by a tine through its rim point (80, 40): the rim comes to a tip at
+ * (100, 40), where a view a million times deep still shows ink and paper. */
+const TIP = {
+  version: 1, width: 120, height: 80, background: '#f3ead7',
+  ops: [
+    { type: 'drop', center: [60, 40], radius: 20, color: '#1d3557' },
+    { type: 'tine', origin: [0, 40], direction: [1, 0], alpha: 20, lambda: 5 },
+  ],
+};
+
+/** A link holding a view 10⁶× deep (`&v=x,y,zoom`) on a first visit: at data-ready the
+ * middle of the canvas is `marbling render --view` of the same window. */
+async function deepLink(browser, site, backend) {
+  const hash = `${linkFragment(TIP, `tip-${backend}`)}&v=99.99999,40.00002,1000000`;
+  const { context, page, errors } = await freshVisit(browser, site, hash, SMALL);
+  await waitOps(page, TIP.ops.length);
+  const status = await attr(page, 'data-status');
+  assert.ok(status.includes('zoom 1000000×'), status);
+  // A 150×100 CSS px shot (the design's 3:2) centred on the view's centre.
+  await page.mouse.move(2, 2);
+  await page.waitForTimeout(300);
+  await waitReady(page);
+  const s = await sheet(page);
+  const [cx, cy] = [s.x + 99.99999 * s.scale, s.y + 40.00002 * s.scale];
+  const clip = { x: Math.round(cx - 75), y: Math.round(cy - 50), width: 150, height: 100 };
+  const shot = decode(await page.screenshot({ clip, timeout: READY_MS }));
+  const centre = (x0, y0) => `${x0 + 75 / s.scale},${y0 + 50 / s.scale},${s.scale}`;
+  const [x0, y0] = [(clip.x - s.x) / s.scale, (clip.y - s.y) / s.scale];
+  const render = (name, view) => {
+    const file = tmp(name);
+    fs.writeFileSync(`${file}.json`, JSON.stringify(TIP));
+    execFileSync(MARBLING, ['render', `${file}.json`, '-o', file, '--view', view, '--width', '150']);
+    return decode(fs.readFileSync(file));
+  };
+  const cpu = render(`deep-${backend}.png`, centre(x0, y0));
+  const off = differing(cpu, shot, 24);
+  console.log(`${backend}: a link 10⁶× deep: ${(100 * off).toFixed(2)} % of 150×100 px differ from marbling render --view`);
+  assert.ok(off <= 0.01, `${(100 * off).toFixed(2)} % of the deep view differs from the CLI render`);
+  const colours = new Set();
+  for (let i = 0; i < shot.data.length; i += 4) colours.add(shot.data.readUInt32BE(i));
+  assert.ok(colours.size > 2, 'the deep view shows one colour');
+  // The comparator sees a window 20 pixels aside.
+  const aside = render(`deep-aside-${backend}.png`, centre(x0 + 20 / s.scale, y0));
+  assert.ok(differing(aside, shot, 24) > 0.05, 'a window 20 px aside should differ');
+  fs.writeFileSync(path.join(SHOTS, "deep-link.png"), PNG.sync.write(shot));
+  assert.deepEqual(errors, []);
+  await context.close();
+}
+
 describe('data-ready on webgpu', () => {
   const shared = sharedBrowser('webgpu');
   test('data-ready after a zoom means the exact frame of that view is on screen', () => readyAfterZoom(shared.browser, shared.site, 'webgpu'));
+  test('a link 10⁶× deep shows the exact window the CLI renders', () => deepLink(shared.browser, shared.site, 'webgpu'));
 });

@@ -32,6 +32,8 @@ pub enum Action {
     Redo,
     /// Shows the state after the first `n` steps (`None`: all of them).
     View(Option<usize>),
+    /// Puts design point `centre` of the spec in the canvas's middle at its zoom.
+    ZoomTo(marbling_core::ViewSpec),
     /// Restores abandoned branch `i` as a new step.
     Restore(usize),
     /// Restores entry `i` of *Recent designs*.
@@ -83,7 +85,8 @@ impl MarblingApp {
             | Action::Play(_)
             | Action::Seek { .. }
             | Action::PlayBackward
-            | Action::View(_) => self.editor.pristine,
+            | Action::View(_)
+            | Action::ZoomTo(_) => self.editor.pristine,
             _ => {
                 self.panels.message = None;
                 std::mem::take(&mut self.editor.pristine)
@@ -156,6 +159,10 @@ impl MarblingApp {
             }
             Action::Undo => self.editor.history.undo(),
             Action::Redo => self.editor.history.redo(),
+            Action::ZoomTo(spec) => {
+                self.editor.view_request = Some(spec);
+                return;
+            }
             Action::View(n) => {
                 self.editor.history.view(n);
                 self.editor.playback = None;

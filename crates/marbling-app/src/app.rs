@@ -316,12 +316,20 @@ impl MarblingApp {
                     Err(e) => self.error(crate::shell::message::first_line_of(&e)),
                 }
             }
-            Link::Design(Ok(design)) if *design == *self.editor.history.design() => {}
-            Link::Design(Ok(design)) => self.apply(Action::Load {
-                design: *design,
-                from: "share link".to_owned(),
-                from_link: true,
-            }),
+            Link::Design(Ok(design)) => {
+                if *design != *self.editor.history.design() {
+                    self.apply(Action::Load {
+                        design: *design,
+                        from: "share link".to_owned(),
+                        from_link: true,
+                    });
+                }
+                match links::view_of(&fragment) {
+                    Some(Ok(view)) => self.editor.view_request = Some(view),
+                    Some(Err(e)) => self.error(e),
+                    None => {}
+                }
+            }
             Link::Design(Err(e)) => self.error(crate::shell::message::first_line_of(&e)),
         }
     }

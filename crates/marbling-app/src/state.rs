@@ -18,7 +18,7 @@ use crate::shell::message::Message;
 use crate::shell::mode::Mode;
 use crate::store::export::{ExportSize, PngExport};
 use crate::store::{prefs::Prefs, recent::Recent};
-use marbling_core::Design;
+use marbling_core::{Design, ViewSpec};
 use std::borrow::Cow;
 use std::collections::VecDeque;
 use std::sync::{Arc, Mutex};
@@ -49,6 +49,11 @@ pub struct Editor {
     /// height in points): while `view` is still that one, a resized window, a changed
     /// pixel ratio or a canvas grown or shrunk by a panel fits it again.
     pub fit: Option<(ViewState, [f64; 5])>,
+    /// A view asked for by a link's `v=` or the Zoom to box (centre and zoom), set on
+    /// the canvas at its next layout.
+    pub view_request: Option<ViewSpec>,
+    /// The canvas's size at the last layout, points.
+    pub canvas_size: [f64; 2],
     /// Two fingers are on the canvas: the view follows them unsnapped (snapping every
     /// frame would let the pinch's anchor drift), and is snapped when they lift.
     pub pinching: bool,
@@ -83,6 +88,8 @@ impl Editor {
             recent: std::collections::VecDeque::new(),
             view: None,
             fit: None,
+            view_request: None,
+            canvas_size: [0.0; 2],
             pinching: false,
             fingers: Default::default(),
             active: None,
@@ -230,6 +237,8 @@ pub struct Hooks {
 pub struct Panels {
     /// A line shown in the status bar; errors also go to `data-error`.
     pub message: Option<Message>,
+    /// The status bar's Zoom to box (src/marbling/zoom_to.rs).
+    pub zoom_to: crate::marbling::zoom_to::ZoomTo,
     /// The History section (src/marbling/history/panel.rs).
     pub history: crate::marbling::history::panel::HistoryPanel,
     /// Where an asynchronous file pick delivers.
@@ -268,6 +277,7 @@ impl Default for Panels {
     fn default() -> Self {
         Self {
             message: None,
+            zoom_to: Default::default(),
             history: Default::default(),
             pick: PickSlot::default(),
             pictures: Default::default(),

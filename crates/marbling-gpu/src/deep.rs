@@ -10,6 +10,19 @@ use marbling_core::{Antialias, CompiledOp, Op, Point, Walker};
 /// records of every tile would not fit the device's textures).
 pub const DEEP_TILE: u32 = 64;
 
+/// Largest error of a sample's position the plain f32 walk may make, output pixels.
+pub const F32_TOLERANCE: f64 = 0.05;
+
+/// True when a view at `scale` output pixels per design pixel of a sheet whose longest
+/// side is `extent` design pixels needs the deep walk: the f32 walk rounds a sample's
+/// design position by up to half an f32 step there, ulp(extent)/2, and beyond
+/// [`F32_TOLERANCE`] of a pixel that shows (from about 1,600× on a 640-px sheet, 200×
+/// on a 4,096-px one).
+pub fn needs_deep(extent: f64, scale: f64) -> bool {
+    let ulp = extent.max(1.0).log2().floor().exp2() * f64::from(f32::EPSILON);
+    0.5 * ulp * scale > F32_TOLERANCE
+}
+
 /// Where a target's pixels lie in the design, in f64: its top-left corner shows design
 /// point `origin`, `scale` output pixels per design pixel.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -192,6 +205,13 @@ mod tests {
             );
             assert!(ok, "record {slot}: a {expected} step on a {kind:?} record");
         }
+    }
+
+    #[test]
+    fn deep_starts_where_f32_steps_pass_a_twentieth_of_a_pixel() {
+        assert!(!needs_deep(640.0, 1600.0) && needs_deep(640.0, 1700.0));
+        assert!(!needs_deep(4096.0, 200.0) && needs_deep(4096.0, 210.0));
+        assert!(!needs_deep(640.0, 1.0));
     }
 
     #[test]

@@ -62,6 +62,10 @@ impl MarblingApp {
             self.editor.view = Some(v);
             self.editor.fit = Some((v, canvas_key));
         }
+        self.editor.canvas_size = size;
+        if let Some(spec) = self.editor.view_request.take() {
+            self.editor.view = Some(ViewState::centred(spec, size));
+        }
         let view = self.editor.view.unwrap_or_default();
         let pointer = response.hover_pos();
         let local = |p: Pos2| [f64::from(p.x - rect.min.x), f64::from(p.y - rect.min.y)];

@@ -20,3 +20,4 @@ pub(crate) mod stroke;
 pub(crate) mod tool_panel;
 pub(crate) mod tools;
 pub(crate) mod view;
+pub(crate) mod zoom_to;

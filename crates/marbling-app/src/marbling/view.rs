@@ -1,11 +1,12 @@
 //! The canvas view: which part of the design is on screen and how large.
 
-use marbling_core::{Design, Point};
+use marbling_core::{Design, Point, ViewSpec};
 
 /// Zoom limits, screen points per design pixel.
 pub const MIN_ZOOM: f64 = 0.02;
-/// Zoomed in far enough to inspect edges: every render is still exact.
-pub const MAX_ZOOM: f64 = 400.0;
+/// A million screen points per design pixel: past f32's reach the canvas walks by
+/// perturbation from f64 references (marbling-gpu's deep walk), so edges stay exact.
+pub const MAX_ZOOM: f64 = 1e6;
 
 /// Screen mapping of the design: `zoom` points per design pixel, `origin` the design
 /// point at the canvas's top-left corner.
@@ -76,6 +77,36 @@ impl ViewState {
         self.origin = Point::new(anchor.x - at[0] / self.zoom, anchor.y - at[1] / self.zoom);
     }
 
+    /// The view of `spec` (its centre in the middle of a canvas of `size` points, its
+    /// scale the zoom, clamped to the zoom limits).
+    pub fn centred(spec: ViewSpec, size: [f64; 2]) -> Self {
+        let zoom = spec.scale.clamp(MIN_ZOOM, MAX_ZOOM);
+        Self {
+            zoom,
+            origin: Point::new(
+                spec.centre.x - size[0] / (2.0 * zoom),
+                spec.centre.y - size[1] / (2.0 * zoom),
+            ),
+        }
+    }
+
+    /// This view as a centre and zoom, on a canvas of `size` points.
+    pub fn spec(self, size: [f64; 2]) -> ViewSpec {
+        ViewSpec {
+            centre: self.to_design([size[0] / 2.0, size[1] / 2.0]),
+            scale: self.zoom,
+        }
+    }
+
+    /// How the status bar says the zoom: a percentage up to 10,000 %, then a factor.
+    pub fn zoom_label(self) -> String {
+        if self.zoom < 100.0 {
+            format!("zoom {:.0} %", self.zoom * 100.0)
+        } else {
+            format!("zoom {:.0}×", self.zoom)
+        }
+    }
+
     /// Moves the view by a screen displacement (points): the design follows the pointer.
     pub fn pan(&mut self, delta: [f64; 2]) {
         self.origin.x -= delta[0] / self.zoom;
@@ -103,5 +134,22 @@ mod tests {
         v.pan([10.0, -20.0]);
         let moved = v.to_screen(before);
         assert!((moved[0] - 133.0).abs() < 1e-9 && (moved[1] - 436.0).abs() < 1e-9);
+    }
+
+    #[test]
+    fn a_view_centred_on_a_spec_gives_that_spec_back_at_a_million_times() {
+        let spec = ViewSpec {
+            centre: Point::new(123.456_789_012, 98.765_432_1),
+            scale: 1e6,
+        };
+        let size = [900.0, 640.0];
+        let v = ViewState::centred(spec, size);
+        let back = v.spec(size);
+        assert!((back.centre - spec.centre).hypot() < 1e-10, "{back:?}");
+        assert_eq!(back.scale, 1e6);
+        assert_eq!(v.zoom_label(), "zoom 1000000×");
+        let mut far = v;
+        far.zoom_about(10.0, [1.0, 2.0]);
+        assert_eq!(far.zoom, MAX_ZOOM, "zoom stops at the limit");
     }
 }

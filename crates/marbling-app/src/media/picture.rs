@@ -108,7 +108,7 @@ impl Pictures {
                 let design = frame.editor.history.design();
                 match with_link_sized_picture(design, MAX_PICTURE_LINK_CHARS) {
                     Some(small) => {
-                        let link = crate::store::links::design_link(&small);
+                        let link = crate::store::links::design_link(&small, None);
                         let p = small.background_image.as_ref().map(|b| b.pixels());
                         let (w, h) = p.map_or((0, 0), |p| (p.width, p.height));
                         ui.ctx().copy_text(link.clone());

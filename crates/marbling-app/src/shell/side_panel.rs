@@ -104,7 +104,13 @@ impl MarblingApp {
             self.control("copy-link", &copy);
             with_frame!(self, |f| self.panels.qr.button_ui(ui, &mut f));
             if copy.clicked() {
-                let link = crate::store::links::design_link(self.editor.history.design());
+                // A zoomed or panned view goes with the link; the fitted one does not.
+                let view = match (self.editor.view, self.editor.fit) {
+                    (Some(v), Some((fitted, _))) if v == fitted => None,
+                    (Some(v), _) => Some(v.spec(self.editor.canvas_size)),
+                    (None, _) => None,
+                };
+                let link = crate::store::links::design_link(self.editor.history.design(), view);
                 let fragment = link.split_once('#').map_or(0, |(_, f)| f.len());
                 if self.editor.history.design().background_image.is_some()
                     && fragment > marbling_core::MAX_PICTURE_LINK_CHARS
@@ -273,11 +279,12 @@ impl MarblingApp {
                 said.push(text);
             }
             if let Some(v) = &self.editor.view {
-                said.push(format!("zoom {:.0} %", v.zoom * 100.0));
-                ui.label(format!("zoom {:.0} %", v.zoom * 100.0));
+                said.push(v.zoom_label());
+                ui.label(v.zoom_label());
                 if ui.small_button("fit").clicked() {
                     self.editor.view = None;
                 }
+                with_frame!(self, |f| self.panels.zoom_to.ui(ui, &mut f));
             }
             if let Some(m) = &self.panels.message {
                 let color = if m.error {

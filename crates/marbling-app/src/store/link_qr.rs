@@ -152,9 +152,9 @@ fn make(
                 "even the shortest form makes a link longer than a QR code holds ({MAX_QR_LINK_BYTES} characters): share the link or the JSON file"
             )
         })?;
-        design_link(&short)
+        design_link(&short, None)
     } else {
-        design_link(design)
+        design_link(design, None)
     };
     let qr = link_qr(&link).map_err(|e| {
         if shortest.0 {

@@ -1,12 +1,26 @@
 //! What the address bar's fragment holds: a design (`#d=…`), a noise (`#n=…`), or
 //! nothing to open. Reading a link never touches the app: the frame loop applies it.
 
-use marbling_core::{Design, decode_noise_share, decode_share, share_fragment};
+use marbling_core::{Design, ViewSpec, decode_noise_share, decode_share, share_fragment};
 use marbling_noise::NoiseSpec;
 
-/// The share link that opens `design` in this playground (its address and `#d=…`).
-pub(crate) fn design_link(design: &Design) -> String {
-    format!("{}#{}", crate::platform::base_url(), share_fragment(design))
+/// The share link that opens `design` in this playground (its address and `#d=…`),
+/// with `&v=x,y,zoom` when a view is given (a deep spot shared as it is seen).
+pub(crate) fn design_link(design: &Design, view: Option<ViewSpec>) -> String {
+    let view = view.map(|v| format!("&v={v}")).unwrap_or_default();
+    format!(
+        "{}#{}{view}",
+        crate::platform::base_url(),
+        share_fragment(design)
+    )
+}
+
+/// The view a fragment's `v=x,y,zoom` part asks for (the design point at the canvas's
+/// centre and screen points per design pixel), or why it cannot be had; `None` when
+/// the fragment has none.
+pub(crate) fn view_of(fragment: &str) -> Option<Result<ViewSpec, String>> {
+    let text = fragment.split('&').find_map(|p| p.strip_prefix("v="))?;
+    Some(ViewSpec::parse(text).map_err(|e| format!("share link: {e}")))
 }
 
 /// What a fragment asks for, or why it cannot be had.
@@ -64,6 +78,22 @@ mod tests {
             other => panic!("{other:?}"),
         }
         assert!(matches!(read("x=1&y=2"), Link::None));
+        let view = ViewSpec {
+            centre: marbling_core::Point::new(12.5, 7.25),
+            scale: 250_000.0,
+        };
+        let link = design_link(&design, Some(view));
+        let fragment = link.split_once('#').map_or("", |(_, f)| f);
+        assert!(fragment.ends_with("&v=12.5,7.25,250000"), "{fragment}");
+        assert_eq!(view_of(fragment), Some(Ok(view)));
+        assert!(matches!(read(fragment), Link::Design(Ok(_))));
+        assert_eq!(view_of(&d), None);
+        assert_eq!(
+            view_of("d=x&v=1,2"),
+            Some(Err(
+                "share link: view: expected x,y,scale (three numbers), got \"1,2\"".to_owned()
+            ))
+        );
         assert!(!is_link("x=1"));
         match read("d=%%") {
             Link::Design(Err(e)) => assert!(e.contains("base64url"), "{e}"),

@@ -274,15 +274,28 @@ impl CanvasGpu {
             self.exact
                 .set_live_image(device, queue, prepared, shown.prefix(), live)
                 .map_err(|e| e.to_string())?;
-            prepared.set_view(
-                queue,
-                &View {
-                    scale: req.scale,
-                    offset: [req.origin[0] * req.scale, req.origin[1] * req.scale],
-                    antialias: req.antialias,
-                },
-            );
             prepared.set_turbulence(queue, req.stream.as_ref().map(|s| s.layers));
+            let extent = f64::from(design.width.max(design.height));
+            if marbling_gpu::deep::needs_deep(extent, req.scale) {
+                let view = marbling_gpu::deep::DeepView {
+                    origin: marbling_core::Point::new(req.origin[0], req.origin[1]),
+                    scale: req.scale,
+                    size: req.size,
+                    antialias: req.antialias,
+                };
+                self.exact
+                    .set_deep_view(device, queue, prepared, &view)
+                    .map_err(|e| e.to_string())?;
+            } else {
+                prepared.set_view(
+                    queue,
+                    &View {
+                        scale: req.scale,
+                        offset: [req.origin[0] * req.scale, req.origin[1] * req.scale],
+                        antialias: req.antialias,
+                    },
+                );
+            }
         }
         let region = sheet_region(design, req);
         self.refining = Some((req.clone(), Refinement::new(region)));

@@ -1,0 +1,59 @@
+//! The status bar's *Zoom to* box: a design point and a zoom typed as `x, y, zoom`
+//! (the numbers a share link's `v=` holds), the view then centred there.
+
+use crate::action::Action;
+use crate::frame::Frame;
+use crate::marbling::view::ViewState;
+use marbling_core::ViewSpec;
+
+/// The box's state: closed, or open with the text being typed.
+#[derive(Debug, Default)]
+pub(crate) struct ZoomTo {
+    /// The text in the open box.
+    text: Option<String>,
+}
+
+impl ZoomTo {
+    /// The *Zoom to…* button, and the box while it is open (filled with the current
+    /// view); Enter or *Go* asks for the typed view, a bad one is said in the status
+    /// line and the box stays open.
+    pub(crate) fn ui(&mut self, ui: &mut egui::Ui, frame: &mut Frame<'_>) {
+        let current = frame
+            .editor
+            .view
+            .map(|v: ViewState| v.spec(frame.editor.canvas_size));
+        let Some(text) = &mut self.text else {
+            let open = ui
+                .small_button("Zoom to…")
+                .on_hover_text("Centre a design point at a zoom (up to 1000000×): x, y, zoom");
+            frame.control("zoom-to", &open);
+            if open.clicked() {
+                self.text = Some(current.map(|v| v.to_string()).unwrap_or_default());
+            }
+            return;
+        };
+        let field = ui.add(
+            egui::TextEdit::singleline(text)
+                .desired_width(170.0)
+                .hint_text("x, y, zoom"),
+        );
+        frame.control("zoom-to-text", &field);
+        let go = ui.small_button("Go");
+        frame.control("zoom-to-go", &go);
+        let close = ui.small_button("✕").on_hover_text("Close the Zoom to box");
+        frame.control("zoom-to-close", &close);
+        let entered = field.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter));
+        if go.clicked() || entered {
+            match ViewSpec::parse(text) {
+                Ok(spec) => {
+                    frame.act(Action::ZoomTo(spec));
+                    frame.info(format!("zoomed to {spec}"));
+                    self.text = None;
+                }
+                Err(e) => frame.error(format!("Zoom to: {e}")),
+            }
+        } else if close.clicked() {
+            self.text = None;
+        }
+    }
+}
