@@ -40,7 +40,9 @@ impl ZoomTo {
         frame.control("zoom-to-text", &field);
         let go = ui.small_button("Go");
         frame.control("zoom-to-go", &go);
-        let close = ui.small_button("✕").on_hover_text("Close the Zoom to box");
+        let close = ui
+            .small_button("Close")
+            .on_hover_text("Close the Zoom to box");
         frame.control("zoom-to-close", &close);
         let entered = field.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter));
         if go.clicked() || entered {
