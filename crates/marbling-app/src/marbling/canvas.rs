@@ -84,7 +84,9 @@ impl MarblingApp {
             rect.min + Vec2::new(tl[0] as f32, tl[1] as f32),
             rect.min + Vec2::new(br[0] as f32, br[1] as f32),
         );
-        let placement = CanvasPlacement::new(rect, sheet, ppp);
+        let (left, top) = (f64::from(rect.min.x), f64::from(rect.min.y));
+        let sheet_f64 = [left + tl[0], top + tl[1], left + br[0], top + br[1]];
+        let placement = CanvasPlacement::new(rect, sheet_f64, ppp);
         if self.rendering.gpu {
             self.paint_design(ui, frame, rect, placement, &view);
         } else {
@@ -117,6 +119,8 @@ impl MarblingApp {
         let design_pointer = pointer.map(|p| view.to_design(local(p)));
         // For automation: the sheet's top-left on the page and the CSS pixels per design
         // pixel (egui points are CSS pixels; the hooks use no other unit).
+        // (In f64: at 10⁶× the sheet's corner lies 10⁸ points off, where an egui (f32)
+        // coordinate is 8 points coarse.)
         self.hooks.sheet_on_page = Some([
             placement.sheet_px[0] / ppp,
             placement.sheet_px[1] / ppp,

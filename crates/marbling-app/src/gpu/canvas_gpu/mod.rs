@@ -508,16 +508,15 @@ pub struct CanvasPlacement {
 }
 
 impl CanvasPlacement {
-    /// Where a canvas at `rect` (points) with the sheet at `sheet` (points) is drawn at
+    /// Where a canvas at `rect` (points) with the sheet's corners at `sheet` (min x,
+    /// min y, max x, max y, page points in f64: 10⁸ points off at 10⁶× zoom) is drawn at
     /// `ppp` physical pixels per point: the canvas corner rounded as egui rounds its
     /// viewport, the sheet relative to it.
-    pub fn new(rect: Rect, sheet: Rect, ppp: f64) -> Self {
-        let corner = |p: Pos2| [f64::from(p.x) * ppp, f64::from(p.y) * ppp];
-        let canvas_px = corner(rect.min).map(f64::round);
-        let [x0, y0] = corner(sheet.min);
-        let [x1, y1] = corner(sheet.max);
-        let [rx, ry] = corner(rect.min);
+    pub fn new(rect: Rect, sheet: [f64; 4], ppp: f64) -> Self {
+        let [rx, ry] = [f64::from(rect.min.x) * ppp, f64::from(rect.min.y) * ppp];
+        let canvas_px = [rx.round(), ry.round()];
         let (dx, dy) = (canvas_px[0] - rx, canvas_px[1] - ry);
+        let [x0, y0, x1, y1] = sheet.map(|v| v * ppp);
         Self {
             canvas_px,
             sheet_px: [x0 + dx, y0 + dy, x1 + dx, y1 + dy],

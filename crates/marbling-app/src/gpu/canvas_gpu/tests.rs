@@ -219,7 +219,7 @@ fn the_canvas_corner_is_rounded_and_the_sheet_moves_with_it() {
     // (as egui rounds its viewport); the sheet keeps its place relative to it.
     let p = CanvasPlacement::new(
         rect(67.0, 10.0, 400.0, 300.0),
-        rect(77.0, 20.0, 177.0, 80.0),
+        [77.0, 20.0, 177.0, 80.0],
         1.5,
     );
     assert_eq!(p.canvas_px, [101.0, 15.0]);
