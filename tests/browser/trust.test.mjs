@@ -276,40 +276,55 @@ const TIP = {
 };
 
 /** A link holding a view 10⁶× deep (`&v=x,y,zoom`) on a first visit: at data-ready the
- * middle of the canvas is `marbling render --view` of the same window. */
+ * middle of the canvas is `marbling render --view` of the same window; again after a
+ * pan at that depth. */
 async function deepLink(browser, site, backend) {
   const hash = `${linkFragment(TIP, `tip-${backend}`)}&v=99.99999,40.00002,1000000`;
   const { context, page, errors } = await freshVisit(browser, site, hash, SMALL);
   await waitOps(page, TIP.ops.length);
   const status = await attr(page, 'data-status');
   assert.ok(status.includes('zoom 1000000×'), status);
-  // A 150×100 CSS px shot (the design's 3:2) centred on the view's centre.
   await page.mouse.move(2, 2);
   await page.waitForTimeout(300);
   await waitReady(page);
-  const s = await sheet(page);
-  const [cx, cy] = [s.x + 99.99999 * s.scale, s.y + 40.00002 * s.scale];
+  const first = await sheet(page);
+  // A 150×100 CSS px box (the design's 3:2) on the page, centred on the link's point.
+  const [cx, cy] = [first.x + 99.99999 * first.scale, first.y + 40.00002 * first.scale];
   const clip = { x: Math.round(cx - 75), y: Math.round(cy - 50), width: 150, height: 100 };
-  const shot = decode(await page.screenshot({ clip, timeout: READY_MS }));
-  const centre = (x0, y0) => `${x0 + 75 / s.scale},${y0 + 50 / s.scale},${s.scale}`;
-  const [x0, y0] = [(clip.x - s.x) / s.scale, (clip.y - s.y) / s.scale];
   const render = (name, view) => {
     const file = tmp(name);
     fs.writeFileSync(`${file}.json`, JSON.stringify(TIP));
     execFileSync(MARBLING, ['render', `${file}.json`, '-o', file, '--view', view, '--width', '150']);
     return decode(fs.readFileSync(file));
   };
-  const cpu = render(`deep-${backend}.png`, centre(x0, y0));
-  const off = differing(cpu, shot, 24);
-  console.log(`${backend}: a link 10⁶× deep: ${(100 * off).toFixed(2)} % of 150×100 px differ from marbling render --view`);
-  assert.ok(off <= 0.01, `${(100 * off).toFixed(2)} % of the deep view differs from the CLI render`);
-  const colours = new Set();
-  for (let i = 0; i < shot.data.length; i += 4) colours.add(shot.data.readUInt32BE(i));
-  assert.ok(colours.size > 2, 'the deep view shows one colour');
-  // The comparator sees a window 20 pixels aside.
-  const aside = render(`deep-aside-${backend}.png`, centre(x0 + 20 / s.scale, y0));
-  assert.ok(differing(aside, shot, 24) > 0.05, 'a window 20 px aside should differ');
-  fs.writeFileSync(path.join(SHOTS, "deep-link.png"), PNG.sync.write(shot));
+  /** The box's screenshot against the CLI's render of the window it shows now. */
+  const check = async (what) => {
+    const s = await sheet(page);
+    const shot = decode(await page.screenshot({ clip, timeout: READY_MS }));
+    const [x0, y0] = [(clip.x - s.x) / s.scale, (clip.y - s.y) / s.scale];
+    const centre = (x, y) => `${x + 75 / s.scale},${y + 50 / s.scale},${s.scale}`;
+    const cpu = render(`deep-${what}-${backend}.png`, centre(x0, y0));
+    const off = differing(cpu, shot, 24);
+    console.log(`${backend}: 10⁶× deep, ${what}: ${(100 * off).toFixed(2)} % of 150×100 px differ from marbling render --view`);
+    assert.ok(off <= 0.01, `${what}: ${(100 * off).toFixed(2)} % of the deep view differs from the CLI render`);
+    const colours = new Set();
+    for (let i = 0; i < shot.data.length; i += 4) colours.add(shot.data.readUInt32BE(i));
+    assert.ok(colours.size > 2, `${what}: the deep view shows one colour`);
+    // The comparator sees a window 20 pixels aside.
+    const aside = render(`deep-aside-${what}-${backend}.png`, centre(x0 + 20 / s.scale, y0));
+    assert.ok(differing(aside, shot, 24) > 0.05, `${what}: a window 20 px aside should differ`);
+    return shot;
+  };
+  fs.writeFileSync(path.join(SHOTS, 'deep-link.png'), PNG.sync.write(await check('the link')));
+  // Pan by a middle-button drag: 40 px left, 10 down; the new frame is exact too.
+  await page.mouse.move(cx, cy);
+  await page.mouse.down({ button: 'middle' });
+  await page.mouse.move(cx - 40, cy + 10, { steps: 4 });
+  await page.mouse.up({ button: 'middle' });
+  await page.mouse.move(2, 2);
+  await page.waitForFunction((x) => Number(document.body.dataset.view.split(',')[0]) < x - 30, first.x, { timeout: READY_MS });
+  await waitReady(page);
+  await check('after a pan');
   assert.deepEqual(errors, []);
   await context.close();
 }
