@@ -46,6 +46,12 @@ pub struct BenchArgs {
     /// only one on WebGL2) instead of the compute pass headless renders use.
     #[arg(long)]
     pub fragment: bool,
+    /// GPU only: exact frames of a window of `--size` centred on the sheet at each of
+    /// these zooms (output pixels per design pixel); where f32 cannot place samples
+    /// (`marbling_gpu::deep::needs_deep`) by the deep walk, its per-tile f64 reference
+    /// walks counted in the frame (what the app pays for each new view).
+    #[arg(long, value_delimiter = ',', default_value = "1")]
+    pub zoom: Vec<f64>,
 }
 
 /// A synthetic design mix.

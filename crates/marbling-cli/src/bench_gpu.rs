@@ -8,8 +8,11 @@ use crate::backend::gpu_renderer;
 use crate::bench::BenchArgs;
 use anyhow::Result;
 use marbling_core::synth::{Mix, random_design};
-use marbling_core::{Antialias, Op, Point, Tine, Vec2};
-use marbling_gpu::{GpuRenderer, OUTPUT_FORMAT, PreviewRenderer, View};
+use marbling_core::{Antialias, Design, Op, Point, Tine, Vec2};
+use marbling_gpu::deep::{DeepView, needs_deep};
+use marbling_gpu::{
+    GpuRenderer, OUTPUT_FORMAT, PreparedDesign, PreviewRenderer, RenderTarget, View,
+};
 use std::time::Instant;
 
 /// The renderer `args` ask for (`--fragment`: the fragment pipeline).
@@ -51,8 +54,8 @@ pub fn exact(args: &BenchArgs) -> Result<()> {
     let gpu = renderer(args)?;
     header(&gpu, args, "exact frames");
     println!(
-        "{:<12} {:>7} {:>10} {:>9} {:>18}",
-        "design", "ops", "seconds", "fps", "op-samples/s"
+        "{:<12} {:>7} {:>9} {:>10} {:>9} {:>18}",
+        "design", "ops", "zoom", "seconds", "fps", "op-samples/s"
     );
     let (w, h) = (args.size.width, args.size.height);
     let target = gpu.target(w, h);
@@ -62,26 +65,76 @@ pub fn exact(args: &BenchArgs) -> Result<()> {
         for &n in &args.ops {
             let design = random_design(7, w, h, n, mix);
             let mut prepared = gpu.prepare(&design)?;
-            let view = View {
-                scale: 1.0,
-                offset: [0.0; 2],
-                antialias: args.aa,
-            };
-            gpu.draw(&mut prepared, &warm, &view);
-            gpu.wait()?;
-            let best = best_of(args.repeat, || {
-                gpu.draw(&mut prepared, &target, &view);
-                Ok(gpu.wait()?)
-            })?;
-            let work = f64::from(w) * f64::from(h) * args.aa.samples().len() as f64 * n as f64;
-            println!(
-                "{name:<12} {n:>7} {best:>10.4} {:>9.2} {:>18.3e}",
-                1.0 / best,
-                work / best
-            );
+            for &zoom in &args.zoom {
+                let best = exact_frame(&gpu, &mut prepared, &design, args, zoom, &target, &warm)?;
+                let work = f64::from(w) * f64::from(h) * args.aa.samples().len() as f64 * n as f64;
+                let deep = if needs_deep(f64::from(w.max(h)), zoom) {
+                    " deep"
+                } else {
+                    ""
+                };
+                println!(
+                    "{name:<12} {n:>7} {:>9} {best:>10.4} {:>9.2} {:>18.3e}{deep}",
+                    format!("{zoom:e}"),
+                    1.0 / best,
+                    work / best
+                );
+            }
         }
     }
     Ok(())
+}
+
+/// Seconds of the best exact frame of `design` at `zoom` (a window of the target's size
+/// centred on the sheet): the view set (deep: the reference walks) and the draw.
+fn exact_frame(
+    gpu: &GpuRenderer,
+    prepared: &mut PreparedDesign,
+    design: &Design,
+    args: &BenchArgs,
+    zoom: f64,
+    target: &RenderTarget,
+    warm: &RenderTarget,
+) -> Result<f64> {
+    let (w, h) = (args.size.width, args.size.height);
+    let centre = Point::new(
+        f64::from(design.width) / 2.0,
+        f64::from(design.height) / 2.0,
+    );
+    let origin = Point::new(
+        centre.x - f64::from(w) / (2.0 * zoom),
+        centre.y - f64::from(h) / (2.0 * zoom),
+    );
+    let ctx = gpu.context();
+    let deep = needs_deep(f64::from(design.width.max(design.height)), zoom);
+    let set = |prepared: &mut PreparedDesign| -> Result<()> {
+        if deep {
+            let view = DeepView {
+                origin,
+                scale: zoom,
+                size: [w, h],
+                antialias: args.aa,
+            };
+            gpu.exact()
+                .set_deep_view(&ctx.device, &ctx.queue, prepared, &view)?;
+        } else {
+            let view = View {
+                scale: zoom,
+                offset: [origin.x * zoom, origin.y * zoom],
+                antialias: args.aa,
+            };
+            prepared.set_view(&ctx.queue, &view);
+        }
+        Ok(())
+    };
+    set(prepared)?;
+    gpu.record_draw(prepared, warm);
+    gpu.wait()?;
+    best_of(args.repeat, || {
+        set(prepared)?;
+        gpu.record_draw(prepared, target);
+        Ok(gpu.wait()?)
+    })
 }
 
 /// The op being "dragged" in frame `i`: a tine sweeping across the canvas.

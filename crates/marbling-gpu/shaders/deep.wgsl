@@ -169,9 +169,11 @@ fn deep_trace(at: vec2<f32>) -> vec4<f32> {
         let kind = u32(r.a.x);
         var span = 1u;
         var s = vec3<f32>(d, DEEP_MOVED);
+        // Schema v3's kinds only in variants with them (V3_ENABLED): fewer branches in
+        // every v1 walk on a CPU-emulated GPU.
         if kind == KIND_DROP || kind == KIND_SPRAY {
             s = deep_drop(r, q, d);
-        } else if kind == KIND_COMB || kind == KIND_TINES {
+        } else if kind == KIND_COMB || (V3_ENABLED && kind == KIND_TINES) {
             s = deep_comb(vec2<f32>(r.a.w, r.b.x), r.b.y, r.b.z, q, d);
             if kind == KIND_TINES {
                 span = 1u + (u32(r.b.w) + 7u) / 8u;
@@ -180,16 +182,18 @@ fn deep_trace(at: vec2<f32>) -> vec4<f32> {
             s = deep_wave(r, q, d);
         } else if kind == KIND_CIRCULAR || kind == KIND_VORTEX {
             s = deep_swirl(r, q, d);
-        } else if kind == KIND_RIGID {
-            s = vec3<f32>(turned(d, -r.a.w, r.b.x), DEEP_MOVED);
-        } else if kind == KIND_JIGGLE {
-            s = deep_jiggle(r, q, d);
-        } else {
-            s = deep_linear(q, d);
-            if kind == KIND_FLOW {
-                span = 1u + (2u * u32(r.b.x) + 7u) / 8u;
+        } else if V3_ENABLED {
+            if kind == KIND_RIGID {
+                s = vec3<f32>(turned(d, -r.a.w, r.b.x), DEEP_MOVED);
+            } else if kind == KIND_JIGGLE {
+                s = deep_jiggle(r, q, d);
             } else {
-                span = u32(op_record(k - 1u).b.x);
+                s = deep_linear(q, d);
+                if kind == KIND_FLOW {
+                    span = 1u + (2u * u32(r.b.x) + 7u) / 8u;
+                } else {
+                    span = u32(op_record(k - 1u).b.x);
+                }
             }
         }
         if s.z == DEEP_COVERED {

@@ -118,6 +118,12 @@ impl GpuRenderer {
     /// submits; call [`GpuRenderer::wait`] to wait for the GPU.
     pub fn draw(&self, design: &mut PreparedDesign, target: &RenderTarget, view: &View) {
         design.set_view(&self.ctx.queue, view);
+        self.record_draw(design, target);
+    }
+
+    /// Draws `design` into `target` with the view it holds (set with
+    /// [`PreparedDesign::set_view`] or [`ExactRenderer::set_deep_view`]) and submits.
+    pub fn record_draw(&self, design: &PreparedDesign, target: &RenderTarget) {
         let mut encoder = self
             .ctx
             .device
