@@ -9,6 +9,7 @@ mod input;
 mod link;
 mod loop_file;
 mod noise;
+mod output;
 mod palette;
 mod pattern;
 mod print;

@@ -74,10 +74,6 @@ pub fn run(args: &RenderArgs, design: &Design, sheet: &str) -> Result<()> {
         args.aa,
         start.elapsed().as_secs_f64()
     );
-    if args.output == "-" {
-        eprintln!("{summary}");
-    } else {
-        println!("{summary}");
-    }
+    crate::output::say(&args.output, &summary);
     Ok(())
 }

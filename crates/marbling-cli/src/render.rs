@@ -205,10 +205,6 @@ pub fn run(args: &RenderArgs) -> Result<()> {
         },
         elapsed.as_secs_f64()
     );
-    if args.output == "-" {
-        eprintln!("{summary}");
-    } else {
-        println!("{summary}");
-    }
+    crate::output::say(&args.output, &summary);
     Ok(())
 }

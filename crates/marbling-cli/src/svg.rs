@@ -129,10 +129,6 @@ pub fn run(args: &SvgArgs) -> Result<()> {
         opts.scale,
         elapsed.as_secs_f64()
     );
-    if args.output == "-" {
-        eprintln!("{summary}");
-    } else {
-        println!("{summary}");
-    }
+    crate::output::say(&args.output, &summary);
     Ok(())
 }

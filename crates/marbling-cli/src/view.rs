@@ -48,10 +48,6 @@ pub fn run(args: &RenderArgs, design: &Design, spec: &str) -> Result<()> {
         args.backend.name(),
         elapsed.as_secs_f64()
     );
-    if args.output == "-" {
-        eprintln!("{summary}");
-    } else {
-        println!("{summary}");
-    }
+    crate::output::say(&args.output, &summary);
     Ok(())
 }

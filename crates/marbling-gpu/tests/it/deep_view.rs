@@ -2,7 +2,7 @@
 //! render of the same window at 10⁴, 10⁵ and 10⁶ zoom, and the plain f32 walk shown to
 //! fail there (so the comparison can tell the two apart).
 
-use crate::common::{renderer, scaled};
+use crate::common::{renderer, rounded_to_f32, scaled};
 use marbling_core::compare::compare;
 use marbling_core::synth::{Mix, random_design};
 use marbling_core::{Antialias, Design, Point, RgbaImage, Traced, Walker, Window, render_window};
@@ -109,4 +109,28 @@ fn the_deep_walk_matches_the_f64_render_at_a_million_times_and_the_plain_walk_do
 fn plain_window(gpu: &GpuRenderer, design: &Design, window: &Window) -> RgbaImage {
     gpu.render_window_f32(design, window, Antialias::Rgss)
         .unwrap_or_else(|e| panic!("plain: {e}"))
+}
+
+#[test]
+fn on_a_chaotic_design_the_deep_walk_stays_within_the_f32_chaos_baseline() {
+    let Some(gpu) = renderer() else { return };
+    // Full-strength combs stretch ink exponentially: rounding the design's own numbers to
+    // f32 (what any f32 renderer receives) already moves edges; that is the baseline.
+    let design = random_design(31, 400, 300, 300, Mix::CombHeavy);
+    let window = Window::centred(edge_point(&design), 1e5, SIDE, SIDE);
+    let render = |d: &Design| {
+        render_window(d, &window, Antialias::Rgss).unwrap_or_else(|e| panic!("cpu: {e}"))
+    };
+    let cpu = render(&design);
+    let fraction = |img: &RgbaImage| compare(&cpu, img, THRESHOLD).map_or(1.0, |d| d.fraction());
+    let baseline = fraction(&render(&rounded_to_f32(design.clone())));
+    let deep = fraction(
+        &gpu.render_window(&design, &window, Antialias::Rgss)
+            .unwrap_or_else(|e| panic!("gpu: {e}")),
+    );
+    println!("chaotic comb-heavy at 1e5: deep {deep}, f32-rounded design {baseline}");
+    assert!(
+        deep <= baseline + BUDGET,
+        "deep walk {deep} of pixels differ, beyond the f32 baseline {baseline} + {BUDGET}"
+    );
 }
