@@ -24,6 +24,28 @@ pub const ACTIVE_FRAME_MS: f64 = 33.0;
 /// exact frame, and the page still answers within a tenth of a second.
 pub const IDLE_FRAME_MS: f64 = 100.0;
 
+/// Where a page's frames are slower than [`IDLE_FRAME_MS`] on their own (a software or
+/// weak GPU), an idle frame may take this many times the interval measured at the
+/// floor's work ([`MIN_UNITS`]): refinement then gets about half of each frame instead
+/// of the floor's sliver. Measured on SwiftShader (2 cores, the app at 1000×660): frames
+/// of 76 ms on their own, 126 ms at the floor; the first exact frame of the Stone
+/// pattern 22 → 11–16 s (WebGL2), 28 → 15–21 s (WebGPU).
+pub const IDLE_STRETCH: f64 = 2.0;
+
+/// What is kept per frame of the interval measured at the floor once the work is above
+/// it: a page that got faster is seen again (the aim falls back to the floor and is
+/// measured anew) within a few hundred frames, long after a refinement ends.
+const FLOOR_FADE: f64 = 0.998;
+
+/// How the user is using the page, which sets the frame interval aimed at.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Pace {
+    /// Pointer moving or pressed, keys: [`ACTIVE_FRAME_MS`].
+    Active,
+    /// Nothing: [`IDLE_FRAME_MS`], stretched by [`IDLE_STRETCH`] on slow pages.
+    Idle,
+}
+
 /// What the first frame draws before anything was measured, op-samples (about the
 /// idle aim's worth on SwiftShader, the slowest GPU the app meets; a real GPU gets to
 /// its own budget in a few frames of growth).
@@ -56,11 +78,17 @@ pub fn per_pixel(cost: u64, samples: usize) -> u64 {
 #[derive(Clone, Debug)]
 pub struct FrameBudget {
     units: f64,
+    /// The frame interval last measured with the work at [`MIN_UNITS`], ms (faded by
+    /// [`FLOOR_FADE`] a frame since); 0 before any.
+    floor_ms: f64,
 }
 
 impl Default for FrameBudget {
     fn default() -> Self {
-        Self { units: PRIOR_UNITS }
+        Self {
+            units: PRIOR_UNITS,
+            floor_ms: 0.0,
+        }
     }
 }
 
@@ -70,18 +98,59 @@ impl FrameBudget {
         self.units as u64
     }
 
-    /// A frame that drew tiles was followed by the next one `interval_ms` later; the
-    /// aim is `target_ms`. The work grows or shrinks by the square root of the ratio,
-    /// by at most [`MAX_STEP`] a frame: the measurement lags a frame or two behind the
-    /// work, so bolder steps overshoot (measured: worst gaps of 600 ms with ×2 steps).
-    pub fn record_frame(&mut self, interval_ms: f64, target_ms: f64) {
+    /// The frame interval aimed at for `pace`, ms.
+    pub fn aim_ms(&self, pace: Pace) -> f64 {
+        match pace {
+            Pace::Active => ACTIVE_FRAME_MS,
+            Pace::Idle => IDLE_FRAME_MS.max(IDLE_STRETCH * self.floor_ms),
+        }
+    }
+
+    /// A frame that drew tiles at `pace` was followed by the next one `interval_ms`
+    /// later. The work grows or shrinks by the square root of the ratio of the aim to
+    /// the interval, by at most [`MAX_STEP`] a frame: the measurement lags a frame or
+    /// two behind the work, so bolder steps overshoot (measured: worst gaps of 600 ms
+    /// with ×2 steps).
+    pub fn record_frame(&mut self, interval_ms: f64, pace: Pace) {
         if interval_ms.is_nan() || interval_ms <= 0.0 {
             return;
         }
-        let factor = (target_ms / interval_ms)
+        if self.units <= MIN_UNITS {
+            self.floor_ms = interval_ms;
+        } else {
+            self.floor_ms *= FLOOR_FADE;
+        }
+        let factor = (self.aim_ms(pace) / interval_ms)
             .sqrt()
             .clamp(1.0 / MAX_STEP, MAX_STEP);
         self.units = (self.units * factor).max(MIN_UNITS);
+    }
+}
+
+/// One [`FrameBudget`] per [`Pace`]: when the user starts acting, the first frame draws
+/// the active budget's work, not the (larger) idle one's.
+#[derive(Clone, Debug, Default)]
+pub struct PacedBudget {
+    active: FrameBudget,
+    idle: FrameBudget,
+}
+
+impl PacedBudget {
+    /// The budget of `pace`.
+    pub fn of(&self, pace: Pace) -> &FrameBudget {
+        match pace {
+            Pace::Active => &self.active,
+            Pace::Idle => &self.idle,
+        }
+    }
+
+    /// [`FrameBudget::record_frame`] on the budget of `pace`.
+    pub fn record_frame(&mut self, interval_ms: f64, pace: Pace) {
+        match pace {
+            Pace::Active => &mut self.active,
+            Pace::Idle => &mut self.idle,
+        }
+        .record_frame(interval_ms, pace);
     }
 }
 
@@ -242,43 +311,79 @@ mod tests {
 
     /// A model of a page: a frame takes `fixed` ms besides the tiles, and the GPU does
     /// `rate` op-samples per ms; the budget must settle where frames take the target.
-    fn settle(fixed: f64, rate: f64, target: f64) -> (f64, f64) {
+    fn settle(fixed: f64, rate: f64, pace: Pace, frames: usize) -> (f64, f64) {
         let mut b = FrameBudget::default();
         let mut interval = 0.0;
-        for _ in 0..200 {
+        for _ in 0..frames {
             interval = fixed + b.units() as f64 / rate;
-            b.record_frame(interval, target);
+            b.record_frame(interval, pace);
         }
         (interval, b.units() as f64)
     }
 
     #[test]
-    fn the_budget_settles_where_frames_take_the_target() {
+    fn the_budget_settles_where_frames_take_the_aim() {
         // SwiftShader-like: 25 ms a frame besides, 5e4 op-samples per ms.
-        let (interval, units) = settle(25.0, 5e4, IDLE_FRAME_MS);
+        let (interval, units) = settle(25.0, 5e4, Pace::Idle, 200);
         assert!((interval - IDLE_FRAME_MS).abs() < 1.0, "{interval}");
         assert!((units - 75.0 * 5e4).abs() < 5e4, "{units}");
         // A fast GPU at 60 frames per second: the tiles take the rest of 33 ms.
-        let (interval, _) = settle(16.7, 5e7, ACTIVE_FRAME_MS);
+        let (interval, _) = settle(16.7, 5e7, Pace::Active, 200);
         assert!((interval - ACTIVE_FRAME_MS).abs() < 0.5, "{interval}");
-        // A page slower than the target on its own: the work shrinks to its floor but
-        // never stops.
-        let (_, units) = settle(150.0, 5e4, ACTIVE_FRAME_MS);
+        // A page slower than the aim on its own while the user acts: the work shrinks
+        // to its floor but never stops.
+        let (_, units) = settle(150.0, 5e4, Pace::Active, 200);
         assert_eq!(units, MIN_UNITS);
+    }
+
+    #[test]
+    fn on_a_slow_page_an_idle_frame_stretches_to_twice_the_floors_interval() {
+        // SwiftShader at 1000×660: 76 ms a frame on its own, 4e4 op-samples per ms.
+        let (fixed, rate) = (76.0, 4e4);
+        let floor = fixed + MIN_UNITS / rate;
+        let frame =
+            |b: &mut FrameBudget, pace| b.record_frame(fixed + b.units() as f64 / rate, pace);
+        let mut b = FrameBudget::default();
+        for _ in 0..40 {
+            frame(&mut b, Pace::Idle);
+        }
+        let interval = fixed + b.units() as f64 / rate;
+        // Within the fade of 40 frames (0.998^40 = 0.92).
+        assert!(
+            (interval / (IDLE_STRETCH * floor) - 1.0).abs() < 0.1,
+            "{interval}"
+        );
+        // Refinement per ms of frame: 1.7 times the floor's.
+        assert!(
+            b.units() as f64 / interval > 1.6 * MIN_UNITS / floor,
+            "{b:?}"
+        );
+        // The measure fades: a hundred frames later the aim has come down (0.998^100).
+        let aim = b.aim_ms(Pace::Idle);
+        for _ in 0..100 {
+            frame(&mut b, Pace::Idle);
+        }
+        let faded = b.aim_ms(Pace::Idle) / aim;
+        assert!((0.8..0.84).contains(&faded), "{faded}");
+        // While the user acts, frames aim at the active interval (the floor, here).
+        for _ in 0..10 {
+            frame(&mut b, Pace::Active);
+        }
+        assert_eq!(b.units() as f64, MIN_UNITS);
     }
 
     #[test]
     fn the_budget_moves_by_bounded_steps() {
         let mut b = FrameBudget::default();
-        b.record_frame(1.0, 100.0);
+        b.record_frame(1.0, Pace::Idle);
         assert_eq!(b.units(), (PRIOR_UNITS * MAX_STEP) as u64);
         let mut b = FrameBudget::default();
-        b.record_frame(10_000.0, 100.0);
+        b.record_frame(10_000.0, Pace::Idle);
         let shrunk = (PRIOR_UNITS / MAX_STEP) as u64;
         assert_eq!(b.units(), shrunk);
         // No interval measured: nothing changes.
-        b.record_frame(0.0, 100.0);
-        b.record_frame(f64::NAN, 100.0);
+        b.record_frame(0.0, Pace::Idle);
+        b.record_frame(f64::NAN, Pace::Idle);
         assert_eq!(b.units(), shrunk);
     }
 

@@ -3,13 +3,13 @@
 //! device, read back tile by tile asynchronously (a browser cannot block on the GPU),
 //! one tile in flight at a time, then PNG-encoded and handed to the user. Each tile is
 //! drawn in parts over successive frames, as much a frame as keeps frames at
-//! [`IDLE_FRAME_MS`] (the canvas's [`FrameBudget`]), so no submission holds the GPU for
+//! [`Pace::Idle`]'s interval (a [`FrameBudget`] like the canvas's), so no submission holds the GPU for
 //! long and the page stays live.
 //!
 //! The pixels are those of `marbling render --backend gpu` at the same scale: the same
 //! WGSL pass, sample positions and sRGB handling, so an export matches the CLI.
 
-use crate::gpu::refine::{FrameBudget, IDLE_FRAME_MS, Refinement, per_pixel};
+use crate::gpu::refine::{FrameBudget, Pace, Refinement, per_pixel};
 use crate::platform;
 use crate::shell::mode::Mode;
 use marbling_core::print::Print;
@@ -294,7 +294,7 @@ impl PngExport {
     fn draw_part(&mut self, device: &wgpu::Device, queue: &wgpu::Queue) {
         let now = crate::platform::now_ms();
         if let Some(last) = self.last_draw_ms {
-            self.budget.record_frame(now - last, IDLE_FRAME_MS);
+            self.budget.record_frame(now - last, Pace::Idle);
         }
         self.last_draw_ms = Some(now);
         let per = per_pixel(self.prepared.walk_cost(), self.antialias.samples().len());

@@ -17,7 +17,7 @@ pub struct CanvasCallback {
     /// Woken when GPU work the UI waits for has finished.
     pub ctx: egui::Context,
     /// True while the user acts (pointer moving or pressed, keys): frames then aim at
-    /// [`ACTIVE_FRAME_MS`] with one tile each, otherwise at [`IDLE_FRAME_MS`] with
+    /// [`Pace::Active`]'s interval with one tile each, otherwise at [`Pace::Idle`]'s with
     /// [`TILES_WHILE_IDLE`] (one submission each, so none holds the GPU for long).
     pub active: bool,
 }
@@ -53,12 +53,12 @@ impl CanvasCallback {
                 when_done(queue, &status.exact_done, status.work.exact, &self.ctx);
             }
         }
-        let (tiles, target_ms) = if self.active {
-            (1, ACTIVE_FRAME_MS)
+        let (tiles, pace) = if self.active {
+            (1, Pace::Active)
         } else {
-            (TILES_WHILE_IDLE, IDLE_FRAME_MS)
+            (TILES_WHILE_IDLE, Pace::Idle)
         };
-        gpu.begin_frame(crate::platform::now_ms(), target_ms);
+        gpu.begin_frame(crate::platform::now_ms(), pace);
         let mut drew = false;
         for _ in 0..tiles {
             if !gpu.may_submit() {
@@ -91,9 +91,9 @@ impl CanvasCallback {
             drew = true;
         }
         if drew {
-            gpu.last_tile_frame_ms = Some(crate::platform::now_ms());
+            gpu.last_tile_frame = Some((crate::platform::now_ms(), pace));
         }
-        status.work.frame_units = gpu.budget.units();
+        status.work.frame_units = gpu.budget.of(pace).units();
         status.work.caches = gpu.caches_built;
         status.work.ops_written = gpu.ops_written;
         let refinement = gpu.refining.as_ref().map(|(_, r)| r);

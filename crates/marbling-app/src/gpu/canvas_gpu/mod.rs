@@ -13,9 +13,7 @@
 //! tiles. While a tool is dragged, the live preview is drawn straight into egui's pass
 //! over the sheet instead.
 
-use crate::gpu::refine::{
-    ACTIVE_FRAME_MS, FrameBudget, IDLE_FRAME_MS, MAX_IN_FLIGHT, PixelRect, Refinement, per_pixel,
-};
+use crate::gpu::refine::{MAX_IN_FLIGHT, Pace, PacedBudget, PixelRect, Refinement, per_pixel};
 use crate::marbling::shown::Shown;
 use eframe::egui_wgpu;
 use egui::{Pos2, Rect};
@@ -181,9 +179,13 @@ pub struct CanvasGpu {
     ops_written: u64,
     /// The design whose preview cache could not be made (not tried again).
     cache_failed: Option<u64>,
-    budget: FrameBudget,
-    /// When the last frame that drew tiles began, ms (its interval steers the budget).
-    last_tile_frame_ms: Option<f64>,
+    /// The tiles' work per frame, one budget per pace.
+    budget: PacedBudget,
+    /// When the last frame that drew tiles began, ms, and its pace (its interval steers
+    /// that pace's budget).
+    last_tile_frame: Option<(f64, Pace)>,
+    /// This frame's pace.
+    pace: Pace,
     /// Tiles submitted and not heard of yet.
     in_flight: Arc<AtomicUsize>,
     show: Show,
@@ -206,8 +208,9 @@ impl CanvasGpu {
             caches_built: 0,
             ops_written: 0,
             cache_failed: None,
-            budget: FrameBudget::default(),
-            last_tile_frame_ms: None,
+            budget: PacedBudget::default(),
+            last_tile_frame: None,
+            pace: Pace::Idle,
             in_flight: Arc::default(),
             show: Show::Exact,
         }
@@ -331,18 +334,19 @@ impl CanvasGpu {
         self.in_flight.load(Ordering::SeqCst) < MAX_IN_FLIGHT
     }
 
-    /// Starts a frame at `now_ms`: a frame that follows one that drew tiles steers the
-    /// budget towards `target_ms`.
-    fn begin_frame(&mut self, now_ms: f64, target_ms: f64) {
-        if let Some(last) = self.last_tile_frame_ms.take() {
-            self.budget.record_frame(now_ms - last, target_ms);
+    /// Starts a frame at `now_ms` at `pace`: a frame that follows one that drew tiles
+    /// steers the budget of that frame's pace.
+    fn begin_frame(&mut self, now_ms: f64, pace: Pace) {
+        if let Some((last, drawn_at)) = self.last_tile_frame.take() {
+            self.budget.record_frame(now_ms - last, drawn_at);
         }
+        self.pace = pace;
     }
 
     /// The largest tile of a render of ops costing `cost` ([`Op::walk_cost`]) with
     /// `samples` samples per pixel that fits a `tiles`-th of this frame's budget, pixels.
     fn tile_pixels(&self, cost: u64, samples: usize, tiles: usize) -> u64 {
-        (self.budget.units() / tiles.max(1) as u64 / per_pixel(cost, samples)).max(1)
+        (self.budget.of(self.pace).units() / tiles.max(1) as u64 / per_pixel(cost, samples)).max(1)
     }
 
     /// Draws the next tile of the exact frame, a `tiles`-th of the frame's budget; true
