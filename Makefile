@@ -10,7 +10,6 @@ MARBLING := target/release/marbling
 
 .PHONY: run dist icons test gallery audit setup-rust setup-gpu setup-web setup-browser fmt-check clippy unit wasm-check bench bench-gpu web browser-test noise-gallery bench-noise bench-noise-export bench-svg
 
-TRUNK_VERSION := 0.21.14
 # Must equal the wasm-bindgen version in Cargo.lock (see crates/marbling-app/Cargo.toml).
 WASM_BINDGEN_VERSION := 0.2.130
 CARGO_BIN := $(HOME)/.cargo/bin
@@ -18,8 +17,7 @@ export PATH := $(CARGO_BIN):$(PATH)
 
 ## Builds the web app and serves it on http://127.0.0.1:8080 (Ctrl+C stops it).
 run: web
-	@echo "serving the playground on http://127.0.0.1:8080"
-	trunk serve --release --offline --address 127.0.0.1 --port 8080
+	node tools/build/serve.mjs dist 8080
 
 ## Rust toolchain pieces: the wasm32 target, rustfmt and clippy.
 setup-rust:
@@ -34,9 +32,8 @@ setup-gpu:
 	  $(SUDO) apt-get update -qq && $(SUDO) DEBIAN_FRONTEND=noninteractive apt-get install -y -qq mesa-vulkan-drivers libvulkan1 >/dev/null; \
 	fi
 
-## Trunk and wasm-bindgen-cli, compiled from crates.io when missing or of another version.
+## wasm-bindgen-cli, compiled from crates.io when missing or of another version.
 setup-web: setup-rust
-	@trunk --version 2>/dev/null | grep -q "$(TRUNK_VERSION)" || cargo install --locked trunk@$(TRUNK_VERSION)
 	@wasm-bindgen --version 2>/dev/null | grep -q "$(WASM_BINDGEN_VERSION)" || cargo install wasm-bindgen-cli --version $(WASM_BINDGEN_VERSION)
 
 ## Debian's Chromium and the npm packages of the browser tests.
@@ -44,11 +41,12 @@ setup-browser:
 	@command -v chromium >/dev/null || { $(SUDO) apt-get update -qq && $(SUDO) DEBIAN_FRONTEND=noninteractive apt-get install -y -qq chromium >/dev/null; }
 	@[ -d tests/browser/node_modules/playwright-core ] && [ -d tests/browser/node_modules/pngjs ] || (cd tests/browser && npm ci --no-audit --no-fund)
 
-## The web app in dist/: the `web` profile (Cargo.toml, .cargo/config.toml), then
-## tools/build/post_build.mjs (no name section, precompressed .br/.gz, the service
-## worker's list). Prints the module's sizes.
+## The web app in dist/ (tools/build/build.mjs): the `web` profile (Cargo.toml,
+## .cargo/config.toml), wasm-bindgen, index.html and web/, then tools/build/post_build.mjs
+## (no name section, precompressed .br/.gz, the service worker's list). Prints the
+## module's sizes.
 web: setup-web
-	trunk build --release --offline
+	node tools/build/build.mjs
 
 ## The static site in dist/ (relative paths: host the folder as it is, under any path).
 dist: web

@@ -1,6 +1,6 @@
 // End-to-end tests of the web playground in Debian's Chromium, on both GPU paths:
 // WebGPU (SwiftShader Vulkan) and WebGL2 (ANGLE on SwiftShader): loading, tools, undo,
-// share links and autosave. Run by `make browser-test` after `trunk build --release`.
+// share links and autosave. Run by `make browser-test` after `make web`.
 import { after, before, describe, test } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';

@@ -384,11 +384,11 @@ test('installable and offline: manifest, icons, and the service worker serves th
   // Each build's service worker lists that build's files under a version of its own, so
   // installing a new build's worker replaces the old cache; the module is listed in its
   // compressed forms only, and its name section is gone (tools/build/post_build.mjs on a
-  // staging folder, as Trunk runs it).
+  // staging folder, as tools/build/build.mjs runs it).
   const stage = fs.mkdtempSync(path.join(os.tmpdir(), 'marbling-stage-'));
   const stageBuild = () => {
     fs.copyFileSync(path.join(ROOT, 'web/sw.js'), path.join(stage, 'sw.js'));
-    execFileSync(process.execPath, [path.join(ROOT, 'tools/build/post_build.mjs')], { env: { ...process.env, TRUNK_STAGING_DIR: stage }, stdio: 'pipe' });
+    execFileSync(process.execPath, [path.join(ROOT, 'tools/build/post_build.mjs'), stage], { stdio: 'pipe' });
     const sw = fs.readFileSync(path.join(stage, 'sw.js'), 'utf8');
     return { version: /const BUILD = '([0-9a-f]{16})'/.exec(sw)?.[1], files: JSON.parse(/const FILES = (\[.*\]);/.exec(sw)[1].replace(/'/g, '"')) };
   };

@@ -1,4 +1,4 @@
-// Shared by the browser tests: a static server for dist/, Chromium on each GPU path,
+// Shared by the browser tests: the static server of dist/ (tools/build/serve.mjs), Chromium on each GPU path,
 // pixel comparison of screenshots, and readers of the app's automation hooks on <body>
 // (the `data-*` attributes listed in the README; positions in CSS px).
 import assert from 'node:assert/strict';
@@ -6,10 +6,12 @@ import { after, before } from 'node:test';
 import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
 import os from 'node:os';
-import http from 'node:http';
 import path from 'node:path';
 import { chromium } from 'playwright-core';
 import { PNG } from 'pngjs';
+import { serve } from '../../tools/build/serve.mjs';
+
+export { serve };
 
 export const ROOT = path.resolve(import.meta.dirname, '../..');
 export const DIST = process.env.MARBLING_DIST ?? path.join(ROOT, 'dist');
@@ -25,41 +27,6 @@ export const BACKENDS = {
     '--use-angle=swiftshader', '--enable-unsafe-swiftshader'],
   webgl2: ['--use-angle=swiftshader', '--enable-unsafe-swiftshader'],
 };
-
-/**
- * Serves `dir` on 127.0.0.1 (a free port), as a plain static server does: no compression
- * negotiated, a content-length on every file. Resolves to its base URL and `sent`, the
- * body bytes sent per path (the test of a first visit's weight reads it).
- */
-export function serve(dir) {
-  const types = { '.html': 'text/html', '.js': 'text/javascript', '.wasm': 'application/wasm',
-    '.png': 'image/png', '.jpg': 'image/jpeg', '.json': 'application/json', '.css': 'text/css',
-    '.svg': 'image/svg+xml', '.webmanifest': 'application/manifest+json' };
-  const sent = new Map();
-  const server = http.createServer((req, res) => {
-    const url = new URL(req.url, 'http://x');
-    const file = path.join(dir, url.pathname === '/' ? 'index.html' : decodeURIComponent(url.pathname));
-    if (!file.startsWith(dir) || !fs.existsSync(file) || fs.statSync(file).isDirectory()) {
-      res.writeHead(404).end();
-      return;
-    }
-    const { size, mtime } = fs.statSync(file);
-    const modified = new Date(Math.floor(mtime.getTime() / 1000) * 1000);
-    const since = Date.parse(req.headers['if-modified-since'] ?? '');
-    if (since >= modified.getTime()) {
-      res.writeHead(304).end();
-      return;
-    }
-    res.writeHead(200, { 'content-type': types[path.extname(file)] || 'application/octet-stream', 'content-length': size, 'last-modified': modified.toUTCString() });
-    if (req.method === 'HEAD') {
-      res.end();
-      return;
-    }
-    sent.set(url.pathname, (sent.get(url.pathname) ?? 0) + size);
-    fs.createReadStream(file).pipe(res);
-  });
-  return new Promise((resolve) => server.listen(0, '127.0.0.1', () => resolve({ server, sent, url: `http://127.0.0.1:${server.address().port}/` })));
-}
 
 export const decode = (buf) => PNG.sync.read(buf);
 
@@ -134,7 +101,7 @@ export function sharedBrowser(backend) {
 /** Chromium with the flags of `backend` (and `extra` flags), and the site served from
  * `dir` (dist/ unless given). */
 export async function launch(backend, extra = [], dir = DIST) {
-  assert.ok(fs.existsSync(path.join(dir, 'index.html')), `${dir} has no index.html: run trunk build --release first`);
+  assert.ok(fs.existsSync(path.join(dir, 'index.html')), `${dir} has no index.html: run make web first`);
   const site = await serve(dir);
   const browser = await chromium.launch({ executablePath: CHROMIUM, headless: true, args: [...COMMON, ...BACKENDS[backend], ...extra] });
   return { site, browser };

@@ -1,5 +1,5 @@
-// Trunk's post-build hook (Trunk.toml), run in the repo root on Trunk's staging directory
-// (TRUNK_STAGING_DIR), which becomes dist/:
+// The last step of the web build (tools/build/build.mjs), run on its staging folder (the
+// argument), which then becomes dist/:
 //   1. The module's `name` and `producers` sections are dropped (function names for
 //      debuggers: 1.3 MB raw, 0.26 MB of the brotli form).
 //   2. `.br` (brotli, quality 11) and `.gz` (gzip -9) beside the module: index.html's
@@ -15,8 +15,8 @@ import fs from 'node:fs';
 import path from 'node:path';
 import zlib from 'node:zlib';
 
-const staging = process.env.TRUNK_STAGING_DIR;
-if (!staging) throw new Error('post_build.mjs is run by trunk build (TRUNK_STAGING_DIR is unset)');
+const staging = process.argv[2];
+if (!staging) throw new Error('usage: node tools/build/post_build.mjs STAGING_DIR');
 
 /** Every file below `dir`, as paths relative to it with `/` separators, sorted. */
 function files(dir, prefix = '') {
