@@ -8,7 +8,7 @@ CARGO ?= cargo
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 MARBLING := target/release/marbling
 
-.PHONY: run dist icons test gallery audit setup-rust setup-gpu setup-web setup-browser fmt-check clippy unit wasm-check bench bench-gpu web browser-test noise-gallery bench-noise bench-noise-export bench-svg
+.PHONY: run dist icons test test-long gallery audit setup-rust setup-gpu setup-web setup-browser fmt-check clippy unit wasm-check bench bench-gpu web browser-test noise-gallery bench-noise bench-noise-export bench-svg
 
 # Must equal the wasm-bindgen version in Cargo.lock (see crates/marbling-app/Cargo.toml).
 WASM_BINDGEN_VERSION := 0.2.130
@@ -67,10 +67,17 @@ icons: $(MARBLING)
 	$(MARBLING) render web/icon.json --width 32 -o web/favicon-32.png
 	$(MARBLING) svg web/icon.json -o web/icon.svg
 
-## End-to-end tests in headless Chromium on WebGPU and WebGL2 (SwiftShader).
+## End-to-end tests in headless Chromium on WebGPU and WebGL2 (SwiftShader): the short
+## tier (tests/browser/harness.mjs, `longOnly`).
 browser-test: web setup-browser
 	$(CARGO) build -p marbling-cli
 	cd tests/browser && MARBLING_BIN=$(CURDIR)/target/debug/marbling npm test
+
+## Every browser test, the long tier too (second backends and screens, tile schedules,
+## drag frames): about twice the short tier's time.
+test-long: web setup-browser
+	$(CARGO) build -p marbling-cli
+	cd tests/browser && MARBLING_LONG=1 MONKEY_SEEDS=7,11 MARBLING_BIN=$(CURDIR)/target/debug/marbling npm test
 
 fmt-check: setup-rust
 	$(CARGO) fmt --all -- --check

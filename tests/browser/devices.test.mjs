@@ -12,7 +12,7 @@ import os from 'node:os';
 import path from 'node:path';
 import zlib from 'node:zlib';
 import {
-  DIST, MARBLING, READY_MS, ROOT, SHOTS, attr, controls, crop, decode, differing, example, launch,
+  DIST, LONG, MARBLING, READY_MS, ROOT, SHOTS, attr, controls, crop, decode, differing, example, launch,
   linkFragment, openPage, serve, sheet, shootSheet, waitOps, waitReady,
 } from './harness.mjs';
 
@@ -306,7 +306,7 @@ test('the player with Explain on fits every screen: controls inside and apart, t
     ['teacher', { width: 1440, height: 900 }, {}],
     ['phone', PHONE, touchDevice(2)],
     ['landscape-phone', PHONE_LANDSCAPE, touchDevice(2)],
-  ];
+  ].filter(([name]) => LONG || name === 'laptop' || name === 'phone');
   for (const [name, viewport, device] of screens) {
     const { page, context, errors } = await openPage(browser, site, link, viewport, device);
     const press = async (control) => {

@@ -10,7 +10,7 @@ import path from 'node:path';
 import { PNG } from 'pngjs';
 import zlib from 'node:zlib';
 import {
-  BACKENDS, DESKTOP, MARBLING, READY_MS, SHOTS, attr, clickControl, controls, crop, decode, differing, download, example,
+  BACKENDS, DESKTOP, MARBLING, longOnly, READY_MS, SHOTS, attr, clickControl, controls, crop, decode, differing, download, example,
   launch, openPage, sheet, shootSheet, waitOps, waitReady,
 } from './harness.mjs';
 
@@ -171,7 +171,7 @@ for (const backend of Object.keys(BACKENDS)) {
       await context.close();
     });
 
-    test('Export PNG at 2× equals `marbling render --scale 2`', async () => {
+    test('Export PNG at 2× equals `marbling render --scale 2`', backend === 'webgl2' ? longOnly : {}, async () => {
       const { page, context, errors } = await openPage(browser, site);
       await clickControl(page, 'export-size-2x');
       const png = await download(page, 'export-png');
@@ -416,7 +416,7 @@ for (const backend of Object.keys(BACKENDS)) {
       await context.close();
     });
 
-    test('phasor noise from a link on the canvas, its relief lit on the plane, and a 16-bit normal map', { skip: backend !== 'webgpu' }, async () => {
+    test('phasor noise from a link on the canvas, its relief lit on the plane, and a 16-bit normal map', backend === 'webgpu' ? longOnly : { skip: true }, async () => {
       const link = (spec) => `#n=${zlib.deflateRawSync(Buffer.from(JSON.stringify(spec))).toString('base64url')}`;
       const phasor = { type: 'phasor', profile: 'square', frequency: 0.04, orientation: 0.5, bandwidth: 0.02, impulses: 3, seed: 5 };
       // Three kernels per point and a small page: SwiftShader draws the phasor in ~10 s.
@@ -465,7 +465,7 @@ for (const backend of Object.keys(BACKENDS)) {
       await context.close();
     });
 
-    test('the Noise panel: a seamless export, a layer on 2×2 tiles, and Khlebnikov et al. 2013 weather data', { skip: backend !== 'webgpu' }, async () => {
+    test('the Noise panel: a seamless export, a layer on 2×2 tiles, and Khlebnikov et al. 2013 weather data', backend === 'webgpu' ? longOnly : { skip: true }, async () => {
       // A laptop's page (clickControl scrolls the Noise panel to what lies below).
       const { page, context, errors } = await openPage(browser, site, '', { width: 1000, height: 900 });
       await clickControl(page, 'mode-noise');

@@ -20,7 +20,7 @@ import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
-import { MARBLING, READY_MS, attr, launch, openPage, sheet } from './harness.mjs';
+import { MARBLING, READY_MS, attr, launch, longOnly, openPage, sheet } from './harness.mjs';
 import { sweep as wiggle } from './probe.mjs';
 
 const design = path.join(os.tmpdir(), `marbling-perf-${process.pid}.json`);
@@ -44,7 +44,7 @@ const SECONDS = Number(process.env.PERF_SECONDS ?? 3);
 const OPS = Number(process.env.PERF_OPS ?? 300);
 
 for (const { name, backend, flags } of SETUPS) {
-  describe(`drag frames on ${name}`, () => {
+  describe(`drag frames on ${name}`, longOnly, () => {
     let browser;
     let site;
     before(async () => {

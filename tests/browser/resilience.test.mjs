@@ -2,7 +2,7 @@
 // the renderer on a fresh canvas and keeps the design and its undo history.
 import { after, before, describe, test } from 'node:test';
 import assert from 'node:assert/strict';
-import { BACKENDS, READY_MS, attr, differing, example, launch, openPage, sheet, shootSheet, waitOps } from './harness.mjs';
+import { BACKENDS, READY_MS, longOnly, attr, differing, example, launch, openPage, sheet, shootSheet, waitOps } from './harness.mjs';
 
 const STONE = example('stone').design;
 
@@ -19,7 +19,7 @@ async function loseDevice(page, backend) {
 }
 
 for (const backend of Object.keys(BACKENDS)) {
-  describe(`device loss on ${backend}`, () => {
+  describe(`device loss on ${backend}`, backend === 'webgpu' ? longOnly : {}, () => {
     let browser;
     let site;
     before(async () => {

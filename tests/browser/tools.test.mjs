@@ -12,7 +12,7 @@ import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import {
-  attr, linkFragment, MARBLING, READY_MS, SHOTS, clickControl, crop, decode, differing, download, launch, sheet, shootSheet, waitOps, waitReady,
+  attr, linkFragment, longOnly, MARBLING, READY_MS, SHOTS, clickControl, crop, decode, differing, download, launch, sheet, shootSheet, waitOps, waitReady,
 } from './harness.mjs';
 
 const SMALL = {
@@ -237,7 +237,7 @@ describe('v3 tools on webgl2', () => {
     await context.close();
   });
 
-  test('flow: a drag streams the ink as one v4 op, the CLI picture, one undo', async () => {
+  test('flow: a drag streams the ink as one v4 op, the CLI picture, one undo', longOnly, async () => {
     const design = {
       version: 1, width: 160, height: 120, background: '#f4ecd8',
       ops: [
