@@ -11,7 +11,17 @@ use marbling_core::ViewSpec;
 pub(crate) struct ZoomTo {
     /// The text in the open box.
     text: Option<String>,
+    /// Why the typed view was refused (the text then shows red, this on hover), until
+    /// the text changes.
+    refused: Option<String>,
 }
+
+/// The widest the text field gets, points.
+const FIELD_WIDTH: f32 = 170.0;
+/// The narrowest, points (a short window gives it what is left of the status bar).
+const FIELD_MIN_WIDTH: f32 = 70.0;
+/// What the Go and Close buttons beside the field take, points.
+const BUTTONS_WIDTH: f32 = 90.0;
 
 impl ZoomTo {
     /// The *Zoom to…* button, and the box while it is open (filled with the current
@@ -32,11 +42,21 @@ impl ZoomTo {
             }
             return;
         };
-        let field = ui.add(
-            egui::TextEdit::singleline(text)
-                .desired_width(170.0)
-                .hint_text("x, y, zoom"),
-        );
+        // Go and Close stay on screen in a short status bar: the field takes what is left.
+        let width = (ui.available_width() - BUTTONS_WIDTH).clamp(FIELD_MIN_WIDTH, FIELD_WIDTH);
+        let mut edit = egui::TextEdit::singleline(text)
+            .desired_width(width)
+            .hint_text("x, y, zoom");
+        if self.refused.is_some() {
+            edit = edit.text_color(egui::Color32::from_rgb(255, 110, 110));
+        }
+        let mut field = ui.add(edit);
+        if field.changed() {
+            self.refused = None;
+        }
+        if let Some(why) = &self.refused {
+            field = field.on_hover_text(why.as_str());
+        }
         frame.control("zoom-to-text", &field);
         let go = ui.small_button("Go");
         frame.control("zoom-to-go", &go);
@@ -51,11 +71,17 @@ impl ZoomTo {
                     frame.act(Action::ZoomTo(spec));
                     frame.info(format!("zoomed to {spec}"));
                     self.text = None;
+                    self.refused = None;
                 }
-                Err(e) => frame.error(format!("Zoom to: {e}")),
+                Err(e) => {
+                    let why = format!("Zoom to: {e}");
+                    self.refused = Some(why.clone());
+                    frame.error(why);
+                }
             }
         } else if close.clicked() {
             self.text = None;
+            self.refused = None;
         }
     }
 }
