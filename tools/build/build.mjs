@@ -22,8 +22,8 @@ const MARKER = '<!-- the module -->';
 const run = (cmd, args) => execFileSync(cmd, args, { cwd: ROOT, stdio: 'inherit' });
 
 run(process.env.CARGO ?? 'cargo', ['build', '--target', 'wasm32-unknown-unknown', '--profile', 'web', '-p', NAME, '--bin', NAME, ...process.argv.slice(2)]);
-const target = process.env.CARGO_TARGET_DIR ?? path.join(ROOT, 'target');
-const stage = fs.mkdtempSync(path.join(ROOT, 'target', 'dist-stage-'));
+const target = path.resolve(ROOT, process.env.CARGO_TARGET_DIR ?? 'target');
+const stage = fs.mkdtempSync(path.join(target, 'dist-stage-'));
 try {
   const bindgen = path.join(stage, 'bindgen');
   run('wasm-bindgen', ['--target', 'web', '--no-typescript', '--out-dir', bindgen, '--out-name', NAME,
