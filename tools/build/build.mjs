@@ -53,7 +53,13 @@ try {
 
   run(process.execPath, [path.join(ROOT, 'tools/build/post_build.mjs'), site]);
   fs.rmSync(DIST, { recursive: true, force: true });
-  fs.renameSync(site, DIST);
+  // A copy where the target folder lies on another file system than the checkout.
+  try {
+    fs.renameSync(site, DIST);
+  } catch (e) {
+    if (e.code !== 'EXDEV') throw e;
+    fs.cpSync(site, DIST, { recursive: true });
+  }
   console.error(`dist/ built (${NAME}-${hash})`);
 } finally {
   fs.rmSync(stage, { recursive: true, force: true });
