@@ -8,7 +8,7 @@ import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import { PNG } from 'pngjs';
-import { BACKENDS, LONG, MARBLING, READY_MS, SHOTS, attr, clickControl, controls, crop, decode, differing, download, example, launch, openPage, sheet, shootSheet, waitOps } from './harness.mjs';
+import { BACKENDS, MARBLING, longOnly, READY_MS, SHOTS, attr, clickControl, controls, crop, decode, differing, download, example, launch, openPage, sheet, shootSheet, waitOps } from './harness.mjs';
 
 const STONE = example('stone').design;
 
@@ -45,7 +45,6 @@ for (const backend of Object.keys(BACKENDS)) {
 
     const open = (hash = '') => openPage(browser, site, hash);
     const webgpuOnly = backend === 'webgpu' ? {} : { skip: 'the tile schedule does not depend on the backend' };
-    const long = LONG ? {} : { skip: 'long tier: make test-long' };
     const webgl2Only = backend === 'webgl2' ? {} : { skip: 'UI, storage and links: tested on webgl2 (WebGPU loads, renders links, the 3D view and the tile schedule)' };
 
     test('loads without console errors on the expected backend', async () => {
@@ -64,7 +63,7 @@ for (const backend of Object.keys(BACKENDS)) {
       await context.close();
     });
 
-    test('the 3D view shows the design on a vase, every pixel walked by the GPU', backend === 'webgl2' ? long : {}, async () => {
+    test('the 3D view shows the design on a vase, every pixel walked by the GPU', backend === 'webgl2' ? longOnly : {}, async () => {
       const { page, context, errors } = await open();
       // Closed whatever happens: a turning view left open would starve the next tests.
       try {
@@ -311,7 +310,7 @@ for (const backend of Object.keys(BACKENDS)) {
     // the picture is then the CLI's. An edit after that shows the preview at once (the
     // design before the edit, with the new drop walked over it) while the tiles sharpen
     // it. Small sizes keep it cheap on SwiftShader (a 180×135-px sheet).
-    test('a 5,000-op link refines in tiles, the preview stands in, ready only at the end', { ...webgpuOnly, ...long }, async () => {
+    test('a 5,000-op link refines in tiles, the preview stands in, ready only at the end', { ...webgpuOnly, ...longOnly }, async () => {
       const file = path.join(os.tmpdir(), `marbling-5000-${process.pid}.json`);
       fs.writeFileSync(file, JSON.stringify(manyOps(5000)));
       const link = execFileSync(MARBLING, ['link', file, '--base', site.url]).toString().trim();
@@ -378,7 +377,7 @@ for (const backend of Object.keys(BACKENDS)) {
       await context.close();
     });
 
-    test('autosave survives a reload', { ...webgl2Only, ...long }, async () => {
+    test('autosave survives a reload', { ...webgl2Only, ...longOnly }, async () => {
       const { page, context } = await open();
       const s = await sheet(page);
       await page.mouse.click(s.x + 100, s.y + 100);
@@ -391,7 +390,7 @@ for (const backend of Object.keys(BACKENDS)) {
       await context.close();
     });
 
-    test('a malformed link shows an error and keeps the page usable', { ...webgl2Only, ...long }, async () => {
+    test('a malformed link shows an error and keeps the page usable', { ...webgl2Only, ...longOnly }, async () => {
       const { page, context } = await open('#d=this-is-not-a-design');
       const error = await attr(page, 'data-error');
       assert.match(error ?? '', /^share link: /);

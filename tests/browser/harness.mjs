@@ -24,7 +24,7 @@ export const READY_MS = 240_000;
  * The long tier: `make test-long` (MARBLING_LONG=1) runs every test; `make test` (and CI)
  * skips the ones given `longOnly`, which repeat on a second backend or a second screen
  * what the short tier checks once, or measure rather than check (tile schedules, drag
- * frames), so that a fresh machine's `make test` stays under an hour on SwiftShader.
+ * frames), to keep `make test` short on SwiftShader.
  */
 export const LONG = process.env.MARBLING_LONG === '1';
 /** Test options of a test of the long tier. */

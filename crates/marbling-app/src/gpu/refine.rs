@@ -29,7 +29,7 @@ pub const IDLE_FRAME_MS: f64 = 100.0;
 /// floor's work ([`MIN_UNITS`]): refinement then gets about half of each frame instead
 /// of the floor's sliver. Measured on SwiftShader (2 cores, the app at 1000×660): frames
 /// of 76 ms on their own, 126 ms at the floor; the first exact frame of the Stone
-/// pattern 22 → 11–16 s (WebGL2), 28 → 15–21 s (WebGPU).
+/// pattern 22 → 11–16 s (WebGL2), 28 → 11–21 s (WebGPU) (`tests/browser/boot-bench.mjs`).
 pub const IDLE_STRETCH: f64 = 2.0;
 
 /// What is kept per frame of the interval measured at the floor once the work is above
