@@ -155,14 +155,37 @@ export async function controls(page) {
 }
 
 /**
+ * Scrolls the panel by `dy` CSS pixels with the wheel over it (over the listed control,
+ * other than the canvas, nearest the middle of the window's height) and waits two frames.
+ */
+async function scrollPanel(page, all, dy) {
+  const { height } = page.viewportSize();
+  const inPanel = Object.entries(all)
+    .filter(([n, r]) => n !== 'canvas' && r.y >= 0 && r.y + r.h <= height)
+    .sort(([, a], [, b]) => Math.abs(a.y - height / 2) - Math.abs(b.y - height / 2));
+  if (inPanel.length === 0) return;
+  const [, r] = inPanel[0];
+  const frames = Number(await attr(page, 'data-frames'));
+  await page.mouse.move(r.x + r.w / 2, r.y + r.h / 2);
+  await page.mouse.wheel(0, dy);
+  await page.waitForFunction((n) => Number(document.body.dataset.frames) >= n, frames + 2, { timeout: READY_MS });
+}
+
+/**
  * Clicks the control named `name` (a real click through egui), first scrolling the
- * panel under it with the wheel when it lies below or above the viewport.
+ * panel under it with the wheel when it lies below or above the viewport, or back up
+ * (then down) when an earlier scroll hid it under the panel's fixed rows.
  */
 export async function clickControl(page, name) {
   const { height } = page.viewportSize();
   let c;
   for (let tries = 0; ; tries++) {
-    const all = await controls(page);
+    let all = await controls(page);
+    for (const dy of [-3000, 6000]) {
+      if (all[name]) break;
+      await scrollPanel(page, all, dy);
+      all = await controls(page);
+    }
     c = all[name];
     assert.ok(c, `no control ${name} in data-controls (have: ${Object.keys(all).join(', ')})`);
     const y = c.y + c.h / 2;

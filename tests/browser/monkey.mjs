@@ -110,15 +110,7 @@ export async function run(browser, site, { seed, events }) {
   if ((await controls(page))['player-close']) await clickControl(page, 'player-close');
   // The 3D view's window floats over the canvas: closed from the panel.
   if ((await controls(page))['view3d-sphere']) await clickControl(page, 'view3d');
-  // The wheel may have scrolled the side panel past its File row: scrolled back up over
-  // the panel, as a user would.
-  const shown = await controls(page);
-  if (!shown['save-json'] && shown['copy-link']) {
-    const c = shown['copy-link'];
-    await page.mouse.move(c.x + c.w / 2, c.y + c.h / 2);
-    await page.mouse.wheel(0, -3000);
-    await page.waitForFunction(() => /(^|;)save-json=/.test(document.body.dataset.controls ?? ''), null, { timeout: READY_MS });
-  }
+  // clickControl scrolls the side panel back to its File row when the wheel moved it.
   let saved;
   try {
     saved = (await download(page, 'save-json')).bytes.toString('utf8');
