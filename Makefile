@@ -68,15 +68,17 @@ icons: $(MARBLING)
 	$(MARBLING) svg web/icon.json -o web/icon.svg
 
 ## End-to-end tests in headless Chromium on WebGPU and WebGL2 (SwiftShader): the short
-## tier (tests/browser/harness.mjs, `longOnly`).
+## tier (tests/browser/harness.mjs, `longOnly`). The CLI that renders their references
+## is target/debug/marbling as `cargo test --workspace` builds it (the test profile):
+## after `unit` nothing is compiled again.
 browser-test: web setup-browser
-	$(CARGO) build -p marbling-cli
+	$(CARGO) test --workspace --no-run
 	cd tests/browser && MARBLING_BIN=$(CURDIR)/target/debug/marbling npm test
 
 ## Every browser test, the long tier too (second backends and screens, tile schedules,
 ## drag frames): about twice the short tier's time.
 test-long: web setup-browser
-	$(CARGO) build -p marbling-cli
+	$(CARGO) test --workspace --no-run
 	cd tests/browser && MARBLING_LONG=1 MONKEY_SEEDS=7,11 MARBLING_BIN=$(CURDIR)/target/debug/marbling npm test
 
 fmt-check: setup-rust

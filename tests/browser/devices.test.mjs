@@ -202,6 +202,25 @@ test('a phone: bottom sheet, 44-px targets, tap, drag, pinch, pan, a second fing
   assert.ok(Math.abs(panned.x - zoomed.x + 50) <= 3 && Math.abs(panned.y - zoomed.y + 70) <= 3, 'the view did not follow the fingers');
   assert.equal(await attr(page, 'data-ops'), String(n + 2), 'navigating committed ops');
 
+  // Zoomed, the status bar holds finger-sized *fit* and *Zoom to…*; the open box takes
+  // a row of its own with its field, Go and Close on the screen.
+  const fingerSized = async (names) => {
+    const all = await controls(page);
+    for (const name of names) {
+      const r = all[name];
+      assert.ok(r, `no ${name} in data-controls`);
+      assert.ok(r.h >= 44 && r.x >= 0 && r.x + r.w <= PHONE.width && r.y + r.h <= PHONE.height,
+        `${name} at ${r.x},${r.y} ${r.w}×${r.h} on a ${PHONE.width}×${PHONE.height} screen`);
+    }
+  };
+  await fingerSized(['zoom-to']);
+  await tap('zoom-to');
+  await page.waitForFunction(() => /(^|;)zoom-to-close=/.test(document.body.dataset.controls ?? ''), null, { timeout: READY_MS });
+  await fingerSized(['zoom-to-text', 'zoom-to-go', 'zoom-to-close']);
+  await page.screenshot({ path: path.join(SHOTS, 'phone-zoom-to.png'), timeout: READY_MS });
+  await tap('zoom-to-close');
+  await page.waitForFunction(() => /(^|;)zoom-to=/.test(document.body.dataset.controls ?? ''), null, { timeout: READY_MS });
+
   // The sheet's tabs: History's Undo takes the comb back; the arrow collapses the sheet
   // and the canvas grows; Noise opens the noise playground.
   await tap('sheet-history');

@@ -20,10 +20,26 @@ pub(crate) struct ZoomTo {
 const FIELD_WIDTH: f32 = 170.0;
 /// The narrowest, points (a short window gives it what is left of the status bar).
 const FIELD_MIN_WIDTH: f32 = 70.0;
-/// What the Go and Close buttons beside the field take, points.
+/// What the Go and Close buttons beside the field take, points: small buttons, and
+/// buttons of the touch layouts' size ([`crate::shell::layout::TOUCH_TARGET`] high).
 const BUTTONS_WIDTH: f32 = 90.0;
+const TOUCH_BUTTONS_WIDTH: f32 = 130.0;
+
+/// A button of the status bar: small on a desktop, finger-sized on touch layouts.
+pub(crate) fn status_button(ui: &mut egui::Ui, touch: bool, text: &str) -> egui::Response {
+    if touch {
+        ui.button(text)
+    } else {
+        ui.small_button(text)
+    }
+}
 
 impl ZoomTo {
+    /// Whether the box is open (on touch layouts it takes a row of its own).
+    pub(crate) fn is_open(&self) -> bool {
+        self.text.is_some()
+    }
+
     /// The *Zoom to…* button, and the box while it is open (filled with the current
     /// view); Enter or *Go* asks for the typed view, a bad one is said in the status
     /// line and the box stays open.
@@ -32,9 +48,9 @@ impl ZoomTo {
             .editor
             .view
             .map(|v: ViewState| v.spec(frame.editor.canvas_size));
+        let touch = frame.layout.touch();
         let Some(text) = &mut self.text else {
-            let open = ui
-                .small_button("Zoom to…")
+            let open = status_button(ui, touch, "Zoom to…")
                 .on_hover_text("Centre a design point at a zoom (up to 1000000×): x, y, zoom");
             frame.control("zoom-to", &open);
             if open.clicked() {
@@ -43,7 +59,12 @@ impl ZoomTo {
             return;
         };
         // Go and Close stay on screen in a short status bar: the field takes what is left.
-        let width = (ui.available_width() - BUTTONS_WIDTH).clamp(FIELD_MIN_WIDTH, FIELD_WIDTH);
+        let buttons = if touch {
+            TOUCH_BUTTONS_WIDTH
+        } else {
+            BUTTONS_WIDTH
+        };
+        let width = (ui.available_width() - buttons).clamp(FIELD_MIN_WIDTH, FIELD_WIDTH);
         let mut edit = egui::TextEdit::singleline(text)
             .desired_width(width)
             .hint_text("x, y, zoom");
@@ -58,11 +79,9 @@ impl ZoomTo {
             field = field.on_hover_text(why.as_str());
         }
         frame.control("zoom-to-text", &field);
-        let go = ui.small_button("Go");
+        let go = status_button(ui, touch, "Go");
         frame.control("zoom-to-go", &go);
-        let close = ui
-            .small_button("Close")
-            .on_hover_text("Close the Zoom to box");
+        let close = status_button(ui, touch, "Close").on_hover_text("Close the Zoom to box");
         frame.control("zoom-to-close", &close);
         let entered = field.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter));
         if go.clicked() || entered {

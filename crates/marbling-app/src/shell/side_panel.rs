@@ -4,6 +4,7 @@
 use crate::action::Action;
 use crate::app::MarblingApp;
 use crate::frame::with_frame;
+use crate::marbling::zoom_to::status_button;
 use crate::platform;
 use crate::shell::mode::Mode;
 use crate::shell::sections::{self, Section};
@@ -251,7 +252,22 @@ impl MarblingApp {
         // One row, always the same height (a second row would move the canvas's edge
         // under the user's finger); the message comes last.
         let mut said = Vec::new();
+        let touch = self.panels.layout.touch();
+        if touch {
+            // Finger-sized buttons, and the row as tall whether or not they show.
+            crate::shell::layout::touch_spacing(ui);
+            if self.panels.zoom_to.is_open() && self.editor.view.is_some() {
+                // An open Zoom to box takes its own row above: a phone's one row holds
+                // the size, the zoom and fit, not the field, Go and Close beside them.
+                ui.horizontal(|ui| with_frame!(self, |f| self.panels.zoom_to.ui(ui, &mut f)));
+            }
+        }
         ui.horizontal(|ui| {
+            if touch {
+                ui.set_min_height(crate::shell::layout::TOUCH_TARGET);
+                // The buttons first, where a narrow screen does not cut them off.
+                self.zoom_controls(ui, true, &mut said);
+            }
             let (w, h) = self.editor.shown.size();
             let what = match self.editor.mode {
                 Mode::Noise => format!("{} noise", self.noise.settings().spec.source.type_name()),
@@ -261,8 +277,9 @@ impl MarblingApp {
                     n => format!("{n} ops"),
                 },
             };
-            said.push(format!("{w}×{h} · {what} · {}", self.rendering.backend));
-            ui.label(said[0].as_str());
+            let size = format!("{w}×{h} · {what} · {}", self.rendering.backend);
+            ui.label(size.as_str());
+            said.insert(0, size);
             if previewing && self.rendering.fast_paint.preview_reduced() {
                 said.push("· preview 1 sample/px".to_owned());
                 ui.label("· preview 1 sample/px").on_hover_text(
@@ -278,13 +295,8 @@ impl MarblingApp {
                 ui.label(text.as_str());
                 said.push(text);
             }
-            if let Some(v) = &self.editor.view {
-                said.push(v.zoom_label());
-                ui.label(v.zoom_label());
-                if ui.small_button("fit").clicked() {
-                    self.editor.view = None;
-                }
-                with_frame!(self, |f| self.panels.zoom_to.ui(ui, &mut f));
+            if !touch {
+                self.zoom_controls(ui, false, &mut said);
             }
             if let Some(m) = &self.panels.message {
                 let color = if m.error {
@@ -297,5 +309,19 @@ impl MarblingApp {
             }
         });
         self.hooks.status = said.join(" ");
+    }
+
+    /// The zoom, *fit* and the Zoom to box, while the view is zoomed or panned (on touch
+    /// layouts an open box is drawn in its own row instead).
+    fn zoom_controls(&mut self, ui: &mut egui::Ui, touch: bool, said: &mut Vec<String>) {
+        let Some(v) = &self.editor.view else { return };
+        said.push(v.zoom_label());
+        ui.label(v.zoom_label());
+        if status_button(ui, touch, "fit").clicked() {
+            self.editor.view = None;
+        }
+        if !(touch && self.panels.zoom_to.is_open()) {
+            with_frame!(self, |f| self.panels.zoom_to.ui(ui, &mut f));
+        }
     }
 }
