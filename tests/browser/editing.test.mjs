@@ -275,11 +275,17 @@ for (const backend of Object.keys(BACKENDS)) {
       await page.waitForTimeout(500);
       await page.screenshot({ path: path.join(SHOTS, 'player-explain.png'), timeout: READY_MS });
       // Record films the making from the first step (MediaRecorder on the canvas);
-      // stopping it downloads the WebM.
+      // stopping it downloads the WebM. The row keeps its place meanwhile (Close stays
+      // under the pointer).
+      const closeAt = async () => JSON.stringify((await controls(page))['player-close']);
+      const closeBefore = await closeAt();
       await clickControl(page, 'player-record');
       await page.waitForFunction(() => /^0\.\d+\//.test(document.body.dataset.player ?? ''), null, { timeout: READY_MS });
       await page.waitForTimeout(1500);
+      assert.equal(await closeAt(), closeBefore, 'Close moved when the recording started');
       const video = await download(page, 'player-record');
+      await page.waitForTimeout(300);
+      assert.equal(await closeAt(), closeBefore, 'Close moved when the recording stopped');
       assert.match(video.name, /^marbling-\d+ops-320x200\.webm$/);
       assert.ok(video.bytes.length > 1000 && video.bytes.readUInt32BE(0) === 0x1a45dfa3, `not a WebM (${video.bytes.length} bytes)`);
       // A looping recording (reverse on, the 1 s hold, the speed at its top): the making,
@@ -288,7 +294,9 @@ for (const backend of Object.keys(BACKENDS)) {
       await page.waitForFunction(() => /(^|;)player-reverse=/.test(document.body.dataset.controls ?? ''), null, { timeout: READY_MS });
       await clickControl(page, 'player-reverse');
       const speed = (await controls(page))['player-speed'];
-      await page.mouse.click(speed.x + speed.w - 2, speed.y + speed.h / 2);
+      // The control's rectangle holds the rail (egui's 100-point slider width), the
+      // value and the unit: the click goes near the rail's right end.
+      await page.mouse.click(speed.x + 96, speed.y + speed.h / 2);
       let looped = null;
       const loopDownload = page.waitForEvent('download', { timeout: READY_MS }).then((d) => { looped = d; });
       await clickControl(page, 'player-record');
@@ -302,7 +310,7 @@ for (const backend of Object.keys(BACKENDS)) {
       const last = seen.findLastIndex(([, v]) => at(v) === steps);
       assert.ok(first >= 0, `the loop never reached the end: ${seen.map(([, v]) => v).join(' ')}`);
       assert.ok(seen[last][0] - seen[first][0] >= 800, `the finished design was held ${seen[last][0] - seen[first][0]} ms, not 1 s`);
-      assert.ok(seen.slice(last).some(([, v]) => at(v) > 0 && at(v) < steps), 'the making was not played backwards');
+      assert.ok(seen.slice(last).some(([, v]) => at(v) > 0 && at(v) < steps), `the making was not played backwards: ${[...new Set(seen.map(([, v]) => v))].join(" ")}`);
       assert.equal(at(await attr(page, 'data-player')), 0, 'the loop ended away from the bare tank');
       const loopFile = fs.readFileSync(await looped.path());
       assert.ok(loopFile.length > 1000 && loopFile.readUInt32BE(0) === 0x1a45dfa3, `the loop is not a WebM (${loopFile.length} bytes)`);

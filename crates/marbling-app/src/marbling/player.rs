@@ -208,6 +208,18 @@ impl Player {
         frame: &mut Frame<'_>,
     ) {
         let recording = self.recording.is_some();
+        // One width for both labels, so that stopping does not move Close under the
+        // pointer.
+        let widest = ui
+            .painter()
+            .layout_no_wrap(
+                "Stop recording".to_owned(),
+                egui::TextStyle::Button.resolve(ui.style()),
+                egui::Color32::WHITE,
+            )
+            .size()
+            .x
+            + 2.0 * ui.spacing().button_padding.x;
         let record = ui
             .add(
                 egui::Button::new(if recording {
@@ -216,7 +228,7 @@ impl Player {
                     "Record"
                 })
                 .selected(recording)
-                .min_size(row),
+                .min_size(vec2(widest, row.y)),
             )
             .on_hover_text("Film the making from the first step to a WebM video");
         frame.control("player-record", &record);
@@ -237,10 +249,15 @@ impl Player {
             }
         }
         // A landscape phone keeps its player to two rows (the canvas needs the height):
-        // it records with the hold and direction set elsewhere.
-        if !recording && frame.layout != crate::shell::layout::Layout::Landscape {
+        // it records with the hold and direction set elsewhere. While recording they stay
+        // in place, greyed, so the row does not move.
+        if frame.layout != crate::shell::layout::Layout::Landscape {
+            // As the click above left it: egui hit-tests a click against the last
+            // frame's widgets, so a stale state would swallow the next click.
+            let recording = self.recording.is_some();
             let hold = ui
-                .add(
+                .add_enabled(
+                    !recording,
                     egui::DragValue::new(&mut self.ending.hold)
                         .range(0.0..=MAX_HOLD_S)
                         .speed(0.1)
@@ -249,7 +266,10 @@ impl Player {
                 .on_hover_text("Seconds the video stays on the finished design");
             frame.control("player-hold", &hold);
             let reverse = ui
-                .checkbox(&mut self.ending.reverse, "reverse")
+                .add_enabled(
+                    !recording,
+                    egui::Checkbox::new(&mut self.ending.reverse, "reverse"),
+                )
                 .on_hover_text("Then the making backwards, so the video loops without a jump");
             frame.control("player-reverse", &reverse);
         }
