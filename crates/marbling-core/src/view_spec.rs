@@ -84,6 +84,27 @@ impl ViewSpec {
             scale,
         })
     }
+
+    /// `x,y,scale` for people to read and type: the centre to a hundredth of an output
+    /// pixel, the scale to six significant digits (a link keeps `Display`'s every digit).
+    pub fn to_rounded_string(&self) -> String {
+        let magnitude = self.scale.log10();
+        let centre_decimals = (magnitude + 2.0).ceil().clamp(0.0, 17.0) as usize;
+        let scale_decimals = (5.0 - magnitude.floor()).clamp(0.0, 17.0) as usize;
+        let trim = |text: String| -> String {
+            if text.contains('.') {
+                text.trim_end_matches('0').trim_end_matches('.').to_owned()
+            } else {
+                text
+            }
+        };
+        format!(
+            "{},{},{}",
+            trim(format!("{:.*}", centre_decimals, self.centre.x)),
+            trim(format!("{:.*}", centre_decimals, self.centre.y)),
+            trim(format!("{:.*}", scale_decimals, self.scale))
+        )
+    }
 }
 
 /// `x,y,scale` with every digit f64 needs to read back the same numbers.
@@ -96,6 +117,41 @@ impl fmt::Display for ViewSpec {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_rounded_view_reads_back_within_a_hundredth_of_a_pixel() {
+        let short = ViewSpec {
+            centre: Point::new(206.048_950_357_967_39, 171.3),
+            scale: 2.45,
+        };
+        assert_eq!(short.to_rounded_string(), "206.049,171.3,2.45");
+        for (x, y, scale) in [
+            (99.999_990_123_4, 40.000_020_987_6, 500_000.123_456),
+            (-3.141_592_653_589_79, 1e6 / 3.0, 0.001_234_567),
+            (512.0, 384.0, 1.0),
+            (0.000_001_25, -7.5, 987_654_321.0),
+        ] {
+            let v = ViewSpec {
+                centre: Point::new(x, y),
+                scale,
+            };
+            let text = v.to_rounded_string();
+            let back = ViewSpec::parse(&text).map_err(|e| e.to_string());
+            let Ok(back) = back else {
+                panic!("{text}: {back:?}");
+            };
+            let moved = (back.centre - v.centre).hypot() * v.scale;
+            assert!(
+                moved <= 0.01 * 2f64.sqrt(),
+                "{text}: moved {moved} output px"
+            );
+            assert!(
+                (back.scale / v.scale - 1.0).abs() <= 5e-6,
+                "{text}: scale {}",
+                back.scale
+            );
+        }
+    }
 
     #[test]
     fn a_view_reads_back_exactly_what_it_wrote() {

@@ -54,7 +54,7 @@ impl ZoomTo {
                 .on_hover_text("Centre a design point at a zoom (up to 1000000×): x, y, zoom");
             frame.control("zoom-to", &open);
             if open.clicked() {
-                self.text = Some(current.map(|v| v.to_string()).unwrap_or_default());
+                self.text = Some(current.map(|v| v.to_rounded_string()).unwrap_or_default());
             }
             return;
         };
