@@ -202,8 +202,8 @@ test('a phone: bottom sheet, 44-px targets, tap, drag, pinch, pan, a second fing
   assert.ok(Math.abs(panned.x - zoomed.x + 50) <= 3 && Math.abs(panned.y - zoomed.y + 70) <= 3, 'the view did not follow the fingers');
   assert.equal(await attr(page, 'data-ops'), String(n + 2), 'navigating committed ops');
 
-  // Zoomed, the status bar holds finger-sized *fit* and *Zoom to…*; the open box takes
-  // a row of its own with its field, Go and Close on the screen.
+  // Zoomed, the status bar holds a finger-sized *Zoom to…*; the open box takes a row of
+  // its own with its field, Go and Close on the screen.
   const fingerSized = async (names) => {
     const all = await controls(page);
     for (const name of names) {

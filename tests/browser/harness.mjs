@@ -173,8 +173,9 @@ async function scrollPanel(page, all, dy) {
 
 /**
  * Clicks the control named `name` (a real click through egui), first scrolling the
- * panel under it with the wheel when it lies below or above the viewport, or back up
- * (then down) when an earlier scroll hid it under the panel's fixed rows.
+ * panel under it with the wheel when it lies below or above the viewport, or up (then
+ * down) when it is not listed: a scroll can leave its centre just outside its scroll
+ * area, where `data-controls` leaves it out.
  */
 export async function clickControl(page, name) {
   const { height } = page.viewportSize();

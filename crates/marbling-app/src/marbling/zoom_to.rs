@@ -4,6 +4,7 @@
 use crate::action::Action;
 use crate::frame::Frame;
 use crate::marbling::view::ViewState;
+use crate::shell::layout::status_button;
 use marbling_core::ViewSpec;
 
 /// The box's state: closed, or open with the text being typed.
@@ -20,19 +21,10 @@ pub(crate) struct ZoomTo {
 const FIELD_WIDTH: f32 = 170.0;
 /// The narrowest, points (a short window gives it what is left of the status bar).
 const FIELD_MIN_WIDTH: f32 = 70.0;
-/// What the Go and Close buttons beside the field take, points: small buttons, and
-/// buttons of the touch layouts' size ([`crate::shell::layout::TOUCH_TARGET`] high).
+/// What the Go and Close buttons beside the field take, points (small buttons).
 const BUTTONS_WIDTH: f32 = 90.0;
+/// The same on touch layouts ([`crate::shell::layout::TOUCH_TARGET`]-high buttons).
 const TOUCH_BUTTONS_WIDTH: f32 = 130.0;
-
-/// A button of the status bar: small on a desktop, finger-sized on touch layouts.
-pub(crate) fn status_button(ui: &mut egui::Ui, touch: bool, text: &str) -> egui::Response {
-    if touch {
-        ui.button(text)
-    } else {
-        ui.small_button(text)
-    }
-}
 
 impl ZoomTo {
     /// Whether the box is open (on touch layouts it takes a row of its own).

@@ -70,6 +70,15 @@ pub fn touch_spacing(ui: &mut egui::Ui) {
     s.item_spacing = egui::vec2(8.0, 6.0);
 }
 
+/// A button of the status bar: small on a desktop, finger-sized on touch layouts.
+pub(crate) fn status_button(ui: &mut egui::Ui, touch: bool, text: &str) -> egui::Response {
+    if touch {
+        ui.button(text)
+    } else {
+        ui.small_button(text)
+    }
+}
+
 /// The bottom sheet's tabs: each shows part of the side panel.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum SheetTab {

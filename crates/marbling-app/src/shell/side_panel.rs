@@ -4,8 +4,8 @@
 use crate::action::Action;
 use crate::app::MarblingApp;
 use crate::frame::with_frame;
-use crate::marbling::zoom_to::status_button;
 use crate::platform;
+use crate::shell::layout::status_button;
 use crate::shell::mode::Mode;
 use crate::shell::sections::{self, Section};
 use crate::store::export::ExportSize;
