@@ -214,9 +214,9 @@ impl MarblingApp {
                 return;
             }
             Action::Restore(i) => self.editor.history.restore(i),
-            Action::OpenRecent(i) => match self.session.recent.design(i) {
+            Action::OpenRecent(i) => match self.session.recent().design(i) {
                 Ok(d) => {
-                    let label = self.session.recent.entries[i].label.clone();
+                    let label = self.session.recent().entries[i].label.clone();
                     self.replace_document(d, format!("restored recent design ({label})"));
                     self.info("restored a recent design (Undo goes back)");
                     true
@@ -291,7 +291,7 @@ impl MarblingApp {
     fn after_change(&mut self) {
         self.editor.playback = None;
         self.refresh();
-        self.session.autosave_pending = true;
+        self.session.design_changed();
     }
 
     /// A sheet of another size (New, Open, or undoing either) is fitted to the canvas.
@@ -306,10 +306,7 @@ impl MarblingApp {
         let current = self.editor.history.design();
         if !current.ops.is_empty() || current.uses_v2() {
             let kept = current.clone();
-            self.session
-                .recent
-                .push(&kept, format!("before {label}"), platform::now_ms());
-            self.session.recent_pending = true;
+            self.session.keep_recent(&kept, format!("before {label}"));
         }
         self.editor.mode = Mode::Marbling;
         self.editor.active = None;
@@ -349,8 +346,8 @@ mod tests {
         assert_eq!(a.editor.shown.op_count(), 30);
         a.apply(Action::NewSheet);
         assert!(a.editor.history.design().ops.is_empty());
-        assert_eq!(a.session.recent.entries.len(), 1);
-        assert!(a.session.autosave_pending && a.session.recent_pending);
+        assert_eq!(a.session.recent().entries.len(), 1);
+        assert!(a.session.owes_autosave() && a.session.owes_recent());
         a.editor.view = Some(crate::marbling::view::ViewState::fit(
             &a.editor.shown.design,
             [800.0, 600.0],
@@ -433,7 +430,7 @@ mod tests {
             .to_string()
         );
         assert_eq!(a.editor.history.design(), &d);
-        assert!(!a.session.autosave_pending);
+        assert!(!a.session.owes_autosave());
     }
 
     /// A status message is about the last thing done: the next edit takes it away (an

@@ -2,6 +2,7 @@
 
 use crate::History;
 use crate::action::Action;
+use crate::automation::hooks::{Hooks, Seen};
 use crate::frame::{Asked, with_frame};
 use crate::gpu::canvas_gpu::CanvasGpu;
 use crate::gpu::gpu_errors::GpuErrors;
@@ -10,9 +11,10 @@ use crate::marbling::tools::{Gesture, ToolKind};
 use crate::platform;
 use crate::shell::message::Message;
 use crate::shell::mode::Mode;
-use crate::state::{Editor, Hooks, Panels, Rendering, Session};
+use crate::state::{Editor, Panels, Rendering};
 use crate::store::links::{self, Link};
 use crate::store::prefs::Prefs;
+use crate::store::session::Session;
 use crate::store::{autosave, restore};
 use marbling_core::{Design, Rgb8};
 use std::sync::Arc;
@@ -122,8 +124,7 @@ impl MarblingApp {
         for (text, why) in stored.unreadable {
             // Kept where no autosave overwrites it.
             if let Some(text) = text {
-                let keep = (autosave::UNREADABLE_KEY, text);
-                app.session.pending_writes.push(keep);
+                app.session.keep(autosave::UNREADABLE_KEY, text);
             }
             app.error(format!(
                 "the autosave could not be restored ({why}); its text is kept under {}",
@@ -135,14 +136,11 @@ impl MarblingApp {
             Some(Err(e)) => log::warn!("{e}"),
             None => {}
         }
-        app.session.stored_prefs.0 = Some(app.prefs.clone());
         if let Some(Err(e)) = stored.noise.map(|s| s.and_then(|s| app.noise.open(s))) {
             log::warn!("the stored noise setup was not restored: {e}");
         }
-        app.session.stored_noise = Some(app.noise.revision());
-        if let Some(recent) = stored.recent {
-            app.session.recent = recent;
-        }
+        app.session
+            .restored(&app.prefs, app.noise.revision(), stored.recent);
         app.refresh();
         // A first visit (no link, no autosave) lands on the gallery; `?landing=0`
         // (automation) opens the first pattern instead. A link, good or broken, wins
@@ -189,10 +187,9 @@ impl MarblingApp {
             return;
         }
         self.rendering.parked = true;
-        self.rendering.export = None;
+        self.panels.export.drop_png();
         // Written in this frame, whatever the debounce says.
-        self.session.autosave_pending = true;
-        self.session.last_autosave_ms = f64::NEG_INFINITY;
+        self.session.autosave_now();
         recovery::park(self.park_state());
         if cfg!(target_arch = "wasm32") {
             self.info("the GPU device was lost: restarting the renderer…");
@@ -410,11 +407,7 @@ impl eframe::App for MarblingApp {
         let ctx = ui.ctx().clone();
         // Mean interval of the last 60 frames, for the `data-frame-ms` hook.
         let dt = f64::from(ctx.input(|i| i.unstable_dt));
-        if self.hooks.frame_times.len() == 60 {
-            self.hooks.frame_times.pop_front();
-        }
-        self.hooks.frame_times.push_back(dt);
-        self.hooks.frames += 1;
+        self.hooks.count_frame(dt);
         if crate::gpu::device_pixels::fit_backing_store() {
             ctx.request_repaint();
         }
@@ -449,8 +442,7 @@ impl eframe::App for MarblingApp {
         self.handle_shortcuts(&ctx);
         self.advance_playback(&ctx);
         with_frame!(self, |f| self.player.follow_recording(&ctx, &mut f));
-        self.advance_export(frame, &ctx);
-        with_frame!(self, |f| self.rendering.svg.tick(&ctx, &mut f));
+        with_frame!(self, |f| self.panels.export.advance(frame, &ctx, &mut f));
         with_frame!(self, |f| self.noise.tick_export(&ctx, &mut f));
         self.follow_noise();
         self.hooks.controls.clear();
@@ -565,23 +557,29 @@ impl eframe::App for MarblingApp {
             &mut self.hooks.controls,
         );
         with_frame!(self, |f| self.panels.qr.window_ui(&ctx, &mut f));
-        self.autosave(frame, &ctx);
-        let now_s = ctx.input(|i| i.time);
-        if self
-            .hooks
-            .memory
-            .as_ref()
-            .is_none_or(|(at, _)| now_s - at >= crate::automation::memory::EVERY_S)
+        let design = self.editor.history.design_shared();
+        let noise = &self.noise;
+        for e in self
+            .session
+            .write_owed(frame, &ctx, &self.prefs, noise, design)
         {
-            self.hooks.memory = Some((now_s, crate::automation::memory::report(frame)));
+            self.error(e);
         }
-        self.update_hooks(&ctx);
+        self.hooks.sample_memory(ctx.input(|i| i.time), frame);
+        let seen = Seen {
+            editor: &self.editor,
+            prefs: &self.prefs,
+            rendering: &self.rendering,
+            panels: &self.panels,
+            noise: &self.noise,
+        };
+        self.hooks.update(&ctx, seen);
     }
 
     /// Natively eframe calls this on exit: the waiting autosave is written.
     fn save(&mut self, storage: &mut dyn eframe::Storage) {
         let mut u = autosave::unsaved();
-        if self.session.autosave_pending && u.design.is_none() {
+        if self.session.owes_autosave() && u.design.is_none() {
             u.design = Some(self.editor.history.design_shared().clone());
         }
         u.flush(|key, value| {

@@ -1,9 +1,9 @@
-//! The playground's state, in parts that change for different reasons (as the egui demo
-//! structures its apps): the document being edited ([`Editor`]), what is kept in the
-//! page's storage ([`Session`]), the GPU renderer's side ([`Rendering`]), the automation
-//! hooks ([`Hooks`]) and the panels' own state ([`Panels`]); the tool preferences are
-//! [`crate::store::prefs::Prefs`]. Everything that changes the document goes through
-//! `MarblingApp::apply` (src/action.rs).
+//! The playground's shared state, in parts that change for different reasons (as the
+//! egui demo structures its apps): the document being edited ([`Editor`]), the GPU
+//! renderer's side ([`Rendering`]) and the panels ([`Panels`]). Features keep their own
+//! state beside these: storage in `store::session`, the hooks in `automation::hooks`,
+//! the tool preferences in `store::prefs`. Everything that changes the document goes
+//! through `MarblingApp::apply` (src/action.rs).
 
 use crate::History;
 use crate::app::{ActiveGesture, NEW_SIZE};
@@ -16,11 +16,7 @@ use crate::marbling::view::ViewState;
 use crate::platform::PickSlot;
 use crate::shell::message::Message;
 use crate::shell::mode::Mode;
-use crate::store::export::{ExportSize, PngExport};
-use crate::store::{prefs::Prefs, recent::Recent};
 use marbling_core::{Design, ViewSpec};
-use std::borrow::Cow;
-use std::collections::VecDeque;
 use std::sync::{Arc, Mutex};
 
 /// How many shown states [`Editor::recent`] remembers (the GPU holds the preview caches
@@ -120,38 +116,6 @@ impl Editor {
     }
 }
 
-/// What is kept in the page's storage, and what is owed to it.
-pub struct Session {
-    /// True when the design changed since the last autosave.
-    pub autosave_pending: bool,
-    /// When the autosave was last written, ms since 1970.
-    pub last_autosave_ms: f64,
-    /// Storage writes waiting for a frame (key, value).
-    pub pending_writes: Vec<(&'static str, String)>,
-    /// The preferences last stored, and when.
-    pub stored_prefs: (Option<Prefs>, f64),
-    /// The noise setup last stored.
-    pub stored_noise: Option<u64>,
-    /// *Recent designs*.
-    pub recent: Recent,
-    /// True when the recent list must be written.
-    pub recent_pending: bool,
-}
-
-impl Default for Session {
-    fn default() -> Self {
-        Self {
-            autosave_pending: false,
-            last_autosave_ms: f64::NEG_INFINITY,
-            pending_writes: Vec::new(),
-            stored_prefs: (None, f64::NEG_INFINITY),
-            stored_noise: None,
-            recent: Recent::default(),
-            recent_pending: false,
-        }
-    }
-}
-
 /// The GPU renderer's side: what the canvas reports back, device loss and errors, the
 /// live preview's quality, a PNG export in progress.
 pub struct Rendering {
@@ -169,10 +133,6 @@ pub struct Rendering {
     pub parked: bool,
     /// The software-GPU shortcuts and their switch (src/fast_paint/).
     pub fast_paint: crate::fast_paint::FastPaint,
-    /// A PNG export in progress and the file name it will get.
-    pub export: Option<(PngExport, String)>,
-    /// Export SVG and its running trace (src/store/svg_export.rs).
-    pub svg: crate::store::svg_export::SvgExporter,
     /// When the user last acted on the page (egui's clock, seconds): the canvas refines
     /// at its idle pace a while after.
     pub last_input_s: f64,
@@ -198,38 +158,11 @@ impl Rendering {
             gpu_errors: GpuErrors::default(),
             parked: false,
             fast_paint: Default::default(),
-            export: None,
-            svg: Default::default(),
             last_input_s: 0.0,
             video: Default::default(),
             stream: Default::default(),
         }
     }
-}
-
-/// The `<body>` automation hooks and what they are computed from.
-#[derive(Default)]
-pub struct Hooks {
-    /// The attributes as last written.
-    pub written: Vec<(&'static str, Option<String>)>,
-    /// Where this frame drew the panel's main controls (for `data-controls`).
-    pub controls: Vec<(Cow<'static, str>, egui::Rect)>,
-    /// Recent frame intervals, seconds (for `data-frame-ms`).
-    pub frame_times: VecDeque<f64>,
-    /// Frames drawn since start (for `data-frames`).
-    pub frames: u64,
-    /// The sheet's top-left corner on the page and CSS pixels per design pixel.
-    pub sheet_on_page: Option<[f64; 3]>,
-    /// The noise setup and its spec JSON (for `data-noise`, written when it changes).
-    pub noise_json: Option<(u64, String)>,
-    /// The exact frame this frame's canvas asks for (design, size, view, antialiasing,
-    /// live picture); `None` when no canvas is shown. `data-ready` is 1 only when it is
-    /// the frame drawn.
-    pub requested: Option<crate::gpu::canvas_gpu::FrameRequest>,
-    /// `data-memory` (src/automation/memory.rs) and when it was taken (egui's clock, seconds).
-    pub memory: Option<(f64, String)>,
-    /// The status line's text as last drawn (for `data-status`).
-    pub status: String,
 }
 
 /// The panels' own state: the status line, file picks, thumbnails, the panel cache and
@@ -253,8 +186,8 @@ pub struct Panels {
     pub recent: crate::store::recent_panel::RecentPanel,
     /// The size of a new sheet, design pixels.
     pub new_size: [u32; 2],
-    /// The size Export PNG renders at.
-    pub export_size: ExportSize,
+    /// The Export section and the exports under way (src/store/export_panel.rs).
+    pub export: crate::store::export_panel::ExportPanel,
     /// The Ink section and the palettes it imports (src/marbling/ink_panel.rs).
     pub ink: crate::marbling::ink_panel::InkPanel,
     /// *Print…*: the sheet, DPI and bleed of Export for print (src/store/print_panel.rs).
@@ -285,7 +218,7 @@ impl Default for Panels {
             gallery: Default::default(),
             recent: Default::default(),
             new_size: NEW_SIZE,
-            export_size: ExportSize::Screen,
+            export: Default::default(),
             print: Default::default(),
             ink: Default::default(),
             view3d: crate::media::view3d::View3dWindow::default(),

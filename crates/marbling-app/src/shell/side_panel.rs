@@ -8,7 +8,6 @@ use crate::platform;
 use crate::shell::layout::status_button;
 use crate::shell::mode::Mode;
 use crate::shell::sections::{self, Section};
-use crate::store::export::ExportSize;
 use egui::{Color32, RichText};
 
 impl MarblingApp {
@@ -37,7 +36,13 @@ impl MarblingApp {
     pub(crate) fn section(&mut self, section: Section, ui: &mut egui::Ui, frame: &eframe::Frame) {
         match section {
             Section::File => self.file_section(ui),
-            Section::Export => self.export_section(ui, frame),
+            Section::Export => with_frame!(self, |f| self.panels.export.ui(
+                ui,
+                frame,
+                &mut self.panels.print,
+                &mut self.panels.view3d,
+                &mut f
+            )),
             Section::Noise => with_frame!(self, |f| self.noise.ui(ui, &mut f)),
             Section::Surface => {
                 with_frame!(self, |f| crate::noise::panel::surface_ui(ui, &mut f));
@@ -58,7 +63,7 @@ impl MarblingApp {
             Section::Sound => with_frame!(self, |f| self.panels.sound.ui(ui, &mut f)),
             Section::History => with_frame!(self, |f| self.panels.history.ui(ui, &mut f)),
             Section::Recent => {
-                let recent = &self.session.recent;
+                let recent = self.session.recent();
                 with_frame!(self, |f| self.panels.recent.ui(ui, recent, &mut f));
             }
         }
@@ -173,63 +178,6 @@ impl MarblingApp {
         self.control("read-aloud", &read);
         if read.changed() {
             crate::shell::accessibility::set_reading_aloud(ui.ctx(), aloud);
-        }
-    }
-
-    pub(crate) fn export_section(&mut self, ui: &mut egui::Ui, frame: &eframe::Frame) {
-        ui.label(RichText::new("Export").strong());
-        ui.horizontal_wrapped(|ui| {
-            ui.label("PNG size");
-            for size in ExportSize::CHOICES {
-                let r = ui.selectable_value(&mut self.panels.export_size, size, size.label());
-                self.control(size.control_name(), &r);
-            }
-        });
-        let design = self.editor.history.design();
-        let scale = self.panels.export_size.scale(design);
-        let size_text = match marbling_core::output_size(design, scale) {
-            Ok((w, h)) => format!("{w} × {h} px"),
-            Err(e) => e.to_string(),
-        };
-        ui.horizontal_wrapped(|ui| {
-            if let Some((export, _)) = &self.rendering.export {
-                let (w, h) = export.size();
-                ui.label(format!("rendering {w} × {h}…"));
-                let cancel = ui.button("Cancel");
-                self.control("export-cancel", &cancel);
-                if cancel.clicked() {
-                    self.rendering.export = None;
-                    self.info("export cancelled");
-                }
-            } else {
-                if self.rendering.svg.progress().is_none() {
-                    let png = ui
-                        .button("Export PNG")
-                        .on_hover_text(format!("An exact render, {size_text}"));
-                    self.control("export-png", &png);
-                    if png.clicked() {
-                        self.start_png_export(frame);
-                    }
-                }
-                with_frame!(self, |f| self.rendering.svg.ui(ui, &mut f));
-            }
-            with_frame!(self, |f| self.panels.print.toggle_ui(ui, &mut f));
-            let view3d = ui
-                .selectable_label(self.panels.view3d.open, "3D view")
-                .on_hover_text(
-                    "The design on a vase, sphere, cylinder, book or plane, exact at any zoom",
-                );
-            self.control("view3d", &view3d);
-            if view3d.clicked() {
-                self.panels.view3d.open = !self.panels.view3d.open;
-            }
-        });
-        ui.label(RichText::new(size_text).weak());
-        let busy = self.rendering.export.is_some() || self.rendering.svg.progress().is_some();
-        let design = self.editor.history.design();
-        let asked = with_frame!(self, |f| self.panels.print.ui(ui, design, busy, &mut f));
-        if let Some(print) = asked {
-            self.start_print_export(frame, print);
         }
     }
 

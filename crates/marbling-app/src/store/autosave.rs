@@ -8,7 +8,6 @@
 //! [`MIN_INTERVAL_MS`] (`MarblingApp::autosave`, below), the waiting one when the page is
 //! hidden or the window closes, and by the panic hook (src/automation/panic_guard.rs).
 
-use crate::platform;
 use marbling_core::{Design, ImageBackground};
 use serde_json::Value;
 use std::sync::{Arc, Mutex, MutexGuard};
@@ -220,88 +219,6 @@ pub fn newest(slots: [Option<String>; 2], legacy: Option<String>) -> Found {
         found.unreadable.clear();
     }
     found
-}
-
-impl crate::app::MarblingApp {
-    /// Writes what storage is owed: waiting writes, the recent list, and the autosave
-    /// (at most one every [`MIN_INTERVAL_MS`]; the page-hide handler writes
-    /// a waiting one when the page goes away). A full storage drops the oldest recent
-    /// designs first, then says the design was not autosaved.
-    pub(crate) fn autosave(&mut self, frame: &mut eframe::Frame, ctx: &egui::Context) {
-        let now = platform::now_ms();
-        let changed = self.session.stored_prefs.0.as_ref() != Some(&self.prefs);
-        if changed && now - self.session.stored_prefs.1 >= MIN_INTERVAL_MS {
-            self.session
-                .pending_writes
-                .push((crate::store::prefs::KEY, self.prefs.encode()));
-            self.session.stored_prefs = (Some(self.prefs.clone()), now);
-        } else if changed {
-            ctx.request_repaint_after(std::time::Duration::from_secs(1));
-        }
-        let noise = &self.noise;
-        if self.session.stored_noise != Some(noise.revision()) {
-            let json = noise.settings().export_spec().to_value().to_string();
-            self.session
-                .pending_writes
-                .push((crate::noise::settings::KEY, json));
-            self.session.stored_noise = Some(self.noise.revision());
-        }
-        for (key, value) in std::mem::take(&mut self.session.pending_writes) {
-            if let Err(e) = platform::store_string(frame, key, &value) {
-                self.error(format!("{key}: {e}"));
-            }
-        }
-        if std::mem::take(&mut self.session.recent_pending) {
-            while let Err(e) = platform::store_string(
-                frame,
-                crate::store::recent::KEY,
-                &self.session.recent.encode(),
-            ) {
-                if !self.session.recent.drop_oldest() {
-                    self.error(format!("recent designs were not saved: {e}"));
-                    break;
-                }
-            }
-        }
-        if !self.session.autosave_pending {
-            return;
-        }
-        let design = self.editor.history.design_shared();
-        let at_once = design.ops.len() <= WRITE_AT_ONCE_OPS;
-        let wait = self.session.last_autosave_ms + MIN_INTERVAL_MS - now;
-        if wait > 0.0 && !at_once {
-            let mut u = unsaved();
-            if u.design.as_ref().is_none_or(|d| !Arc::ptr_eq(d, design)) {
-                u.design = Some(design.clone());
-            }
-            ctx.request_repaint_after(std::time::Duration::from_secs_f64(wait / 1000.0));
-            return;
-        }
-        self.session.autosave_pending = false;
-        self.session.last_autosave_ms = now;
-        let mut u = unsaved();
-        u.design = None;
-        let seq = u.seq + 1;
-        let text = encode(seq, now, self.editor.history.design());
-        let mut result = platform::store_string(frame, slot(seq), &text);
-        while result.is_err() && self.session.recent.drop_oldest() {
-            let _ = platform::store_string(
-                frame,
-                crate::store::recent::KEY,
-                &self.session.recent.encode(),
-            );
-            result = platform::store_string(frame, slot(seq), &text);
-        }
-        match result {
-            Ok(()) => u.seq = seq,
-            Err(e) => {
-                drop(u);
-                self.error(format!(
-                    "the design was not autosaved ({e}): use Save JSON to keep it"
-                ));
-            }
-        }
-    }
 }
 
 #[cfg(test)]

@@ -1,4 +1,4 @@
-//! Export PNG and SVG (the app's actions are at the end of the file). Export PNG: an
+//! Export PNG (the panel that starts it is src/store/export_panel.rs): an
 //! exact render of the design at a print size on the app's own GPU
 //! device, read back tile by tile asynchronously (a browser cannot block on the GPU),
 //! one tile in flight at a time, then PNG-encoded and handed to the user. Each tile is
@@ -10,9 +10,6 @@
 //! WGSL pass, sample positions and sRGB handling, so an export matches the CLI.
 
 use crate::gpu::refine::{FrameBudget, Pace, Refinement, per_pixel};
-use crate::platform;
-use crate::shell::mode::Mode;
-use marbling_core::print::Print;
 use marbling_core::{Antialias, Design, RgbaImage, Window, output_size};
 use marbling_gpu::{ExactRenderer, PendingRead, PreparedDesign, RenderTarget, View, tile_grid};
 
@@ -328,85 +325,4 @@ pub fn export_file_name(design: &Design, size: (u32, u32), ext: &str) -> String 
         size.0,
         size.1
     )
-}
-
-impl crate::app::MarblingApp {
-    /// Starts Export PNG of the current design at the chosen size.
-    pub(crate) fn start_png_export(&mut self, frame: &eframe::Frame) {
-        let Some(rs) = frame.wgpu_render_state() else {
-            self.error("Export PNG needs the GPU renderer, which is not available");
-            return;
-        };
-        let design: &Design = match self.editor.mode {
-            Mode::Noise => &self.editor.shown.design,
-            Mode::Marbling => self.editor.history.design(),
-        };
-        let scale = self.panels.export_size.scale(design);
-        match PngExport::start(&rs.device, &rs.queue, design, scale, self.prefs.antialias) {
-            Ok(export) => {
-                let name = export_file_name(design, export.size(), "png");
-                let (w, h) = export.size();
-                self.info(format!("exporting {w}×{h} PNG…"));
-                self.rendering.export = Some((export, name));
-            }
-            Err(e) => self.error(format!("Export PNG: {e}")),
-        }
-    }
-
-    /// Starts Export for print of the design: `print`'s window of it, the PNG carrying
-    /// the DPI.
-    pub(crate) fn start_print_export(&mut self, frame: &eframe::Frame, print: Print) {
-        let Some(rs) = frame.wgpu_render_state() else {
-            self.error("Export for print needs the GPU renderer, which is not available");
-            return;
-        };
-        if let Err(e) = print.check() {
-            self.error(format!("Export for print: {e}"));
-            return;
-        }
-        let design = self.editor.history.design();
-        let window = print.window(design);
-        match PngExport::start_window(&rs.device, &rs.queue, design, &window, self.prefs.antialias)
-        {
-            Ok(export) => {
-                let export = export.with_pixels_per_metre(print.pixels_per_metre());
-                let name = format!(
-                    "marbling-{}ops-{:.0}x{:.0}mm-{}dpi.png",
-                    design.ops.len(),
-                    print.sheet.width_mm,
-                    print.sheet.height_mm,
-                    print.dpi
-                );
-                let (w, h) = export.size();
-                self.info(format!("exporting {w}×{h} PNG for print ({print})…"));
-                self.rendering.export = Some((export, name));
-            }
-            Err(e) => self.error(format!("Export for print: {e}")),
-        }
-    }
-
-    /// Moves a running PNG export on by one tile; hands the file over when complete.
-    pub(crate) fn advance_export(&mut self, frame: &eframe::Frame, ctx: &egui::Context) {
-        let Some((mut export, name)) = self.rendering.export.take() else {
-            return;
-        };
-        let Some(rs) = frame.wgpu_render_state() else {
-            self.error("Export PNG: the GPU renderer went away");
-            return;
-        };
-        match export.step(&rs.device, &rs.queue) {
-            Ok(ExportStep::Working { .. }) => {
-                self.rendering.export = Some((export, name));
-                ctx.request_repaint();
-            }
-            Ok(ExportStep::Finished(image)) => match export.encode(&image) {
-                Ok(bytes) => match platform::save_file(&name, "image/png", &bytes) {
-                    Ok(()) => self.info(format!("exported {name}")),
-                    Err(e) => self.error(e),
-                },
-                Err(e) => self.error(format!("Export PNG: {e}")),
-            },
-            Err(e) => self.error(format!("Export PNG: {e}")),
-        }
-    }
 }

@@ -3,6 +3,7 @@
 
 pub(crate) mod autosave;
 pub mod export;
+pub(crate) mod export_panel;
 pub(crate) mod link_qr;
 pub(crate) mod links;
 pub(crate) mod prefs;
@@ -10,5 +11,6 @@ pub(crate) mod print_panel;
 pub(crate) mod recent;
 pub(crate) mod recent_panel;
 pub(crate) mod restore;
+pub(crate) mod session;
 pub(crate) mod svg_export;
 pub(crate) mod thumbnails;
