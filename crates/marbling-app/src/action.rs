@@ -5,7 +5,6 @@
 use crate::app::MarblingApp;
 use crate::gpu::canvas_gpu::StandIn;
 use crate::marbling::history::Surface;
-use crate::platform;
 use crate::shell::mode::Mode;
 use marbling_core::{Design, Op, Rgb8};
 
@@ -34,6 +33,8 @@ pub enum Action {
     View(Option<usize>),
     /// Puts design point `centre` of the spec in the canvas's middle at its zoom.
     ZoomTo(marbling_core::ViewSpec),
+    /// Fits the sheet to the canvas again (*fit*).
+    FitView,
     /// Restores abandoned branch `i` as a new step.
     Restore(usize),
     /// Restores entry `i` of *Recent designs*.
@@ -86,7 +87,8 @@ impl MarblingApp {
             | Action::Seek { .. }
             | Action::PlayBackward
             | Action::View(_)
-            | Action::ZoomTo(_) => self.editor.pristine,
+            | Action::ZoomTo(_)
+            | Action::FitView => self.editor.pristine,
             _ => {
                 self.panels.message = None;
                 std::mem::take(&mut self.editor.pristine)
@@ -142,18 +144,13 @@ impl MarblingApp {
                 true
             }
             Action::NewSheet => {
-                let mut d = crate::app::blank(self.panels.new_size);
+                let size = self.panels.file.new_size();
+                let mut d = crate::app::blank(size);
                 d.background = self
                     .prefs
                     .paper()
                     .unwrap_or(self.editor.history.design().background);
-                self.replace_document(
-                    d,
-                    format!(
-                        "new sheet {}×{}",
-                        self.panels.new_size[0], self.panels.new_size[1]
-                    ),
-                );
+                self.replace_document(d, format!("new sheet {}×{}", size[0], size[1]));
                 self.info("a new design (Undo brings the previous one back)");
                 true
             }
@@ -161,6 +158,10 @@ impl MarblingApp {
             Action::Redo => self.editor.history.redo(),
             Action::ZoomTo(spec) => {
                 self.editor.view_request = Some(spec);
+                return;
+            }
+            Action::FitView => {
+                self.editor.view = None;
                 return;
             }
             Action::View(n) => {
@@ -263,15 +264,8 @@ impl MarblingApp {
         };
         if changed {
             // The address bar's link (a design, or a noise the design may now be marbling)
-            // no longer shows what is on screen: drop it, so a reload shows the edited
-            // design (from the autosave) instead of the link's.
-            if self.editor.last_fragment.as_deref().is_some_and(|f| {
-                f.split('&')
-                    .any(|p| p.starts_with("d=") || p.starts_with("n="))
-            }) {
-                platform::clear_fragment();
-                self.editor.last_fragment = None;
-            }
+            // no longer shows what is on screen.
+            self.address.design_changed();
             self.after_change();
             self.fit_if_resized(shown_size);
             self.set_stand_in(stand_in);

@@ -12,7 +12,7 @@ use crate::platform;
 use crate::shell::message::Message;
 use crate::shell::mode::Mode;
 use crate::state::{Editor, Panels, Rendering};
-use crate::store::links::{self, Link};
+use crate::store::address_bar::AddressBar;
 use crate::store::prefs::Prefs;
 use crate::store::session::Session;
 use crate::store::{autosave, restore};
@@ -49,6 +49,8 @@ pub struct MarblingApp {
     pub(crate) noise: crate::noise::Noise,
     /// The step player's speed, explain view and recording.
     pub(crate) player: crate::marbling::player::Player,
+    /// The fragment the address bar holds.
+    pub(crate) address: AddressBar,
 }
 
 /// Default canvas of a new design, design pixels.
@@ -162,6 +164,7 @@ impl MarblingApp {
             panels: Panels::default(),
             noise: crate::noise::Noise::default(),
             player: Default::default(),
+            address: AddressBar::default(),
         }
     }
 
@@ -170,14 +173,14 @@ impl MarblingApp {
         ParkedState {
             history: self.editor.history.clone(),
             prefs: self.prefs.clone(),
-            last_fragment: self.editor.last_fragment.clone(),
+            last_fragment: self.address.fragment().map(str::to_owned),
         }
     }
 
     fn unpark(&mut self, p: ParkedState) {
         self.editor.history = p.history;
         self.prefs = p.prefs;
-        self.editor.last_fragment = p.last_fragment;
+        self.address.remember(p.last_fragment);
     }
 
     /// Reacts to a lost GPU device once: parks the editing state for the restarted
@@ -264,71 +267,9 @@ impl MarblingApp {
         self.panels.message = Some(Message::info(text.into()));
     }
 
-    /// Opens a design from document text; on failure the current design stays.
-    pub(crate) fn open_json(&mut self, name: &str, bytes: &[u8]) {
-        let Ok(text) = std::str::from_utf8(bytes) else {
-            self.error(format!("{name}: not a text file"));
-            return;
-        };
-        match Design::from_json(text) {
-            Ok(design) => self.apply(Action::Load {
-                design,
-                from: name.to_owned(),
-                from_link: false,
-            }),
-            Err(e) => self.error(format!("{name}: {}", crate::shell::message::first_line(&e))),
-        }
-    }
-
-    /// Loads the design of a `#d=` fragment when the fragment changed; a broken link
-    /// keeps the current design and says what is wrong.
+    /// Opens what the address bar holds when it changed (src/store/address_bar.rs).
     pub(crate) fn check_fragment(&mut self) {
-        if !platform::fragment_changed() {
-            return;
-        }
-        let fragment = platform::fragment();
-        if fragment == self.editor.last_fragment {
-            return;
-        }
-        self.editor.last_fragment = fragment.clone();
-        let Some(fragment) = fragment else {
-            return;
-        };
-        if links::is_link(&fragment) {
-            // What the link holds, or why it cannot be opened, is shown, not the gallery.
-            self.editor.landing = false;
-        }
-        match links::read(&fragment) {
-            Link::None => {}
-            Link::Noise(spec) => {
-                let opened = spec.and_then(|spec| {
-                    let opened = self.noise.open(*spec);
-                    opened.map_err(|e| format!("noise link: {e}"))
-                });
-                match opened {
-                    Ok(()) => {
-                        self.set_mode(Mode::Noise);
-                        self.info("noise link opened");
-                    }
-                    Err(e) => self.error(crate::shell::message::first_line_of(&e)),
-                }
-            }
-            Link::Design(Ok(design)) => {
-                if *design != *self.editor.history.design() {
-                    self.apply(Action::Load {
-                        design: *design,
-                        from: "share link".to_owned(),
-                        from_link: true,
-                    });
-                }
-                match links::view_of(&fragment) {
-                    Some(Ok(view)) => self.editor.view_request = Some(view),
-                    Some(Err(e)) => self.error(e),
-                    None => {}
-                }
-            }
-            Link::Design(Err(e)) => self.error(crate::shell::message::first_line_of(&e)),
-        }
+        with_frame!(self, |f| self.address.follow(&mut self.noise, &mut f));
     }
 
     /// Remembers where a named control was drawn (for the `data-controls` hook): the
@@ -370,15 +311,6 @@ impl MarblingApp {
         }
     }
 
-    fn poll_picked_file(&mut self) {
-        let picked = self.panels.pick.lock().ok().and_then(|mut s| s.take());
-        match picked {
-            Some(Ok((name, bytes))) => self.open_json(&name, &bytes),
-            Some(Err(e)) => self.error(e),
-            None => {}
-        }
-    }
-
     fn advance_playback(&mut self, ctx: &egui::Context) {
         let Some(mut p) = self.editor.playback.filter(|p| p.playing) else {
             return;
@@ -412,10 +344,10 @@ impl eframe::App for MarblingApp {
             ctx.request_repaint();
         }
         self.check_device_lost();
-        self.poll_picked_file();
+        with_frame!(self, |f| self.panels.file.poll(&mut f));
         with_frame!(self, |f| self.panels.pictures.poll(&mut f));
         let pictures = self.panels.pictures.slot();
-        crate::media::picture::route_dropped_files(&ctx, pictures, &self.panels.pick);
+        crate::media::picture::route_dropped_files(&ctx, pictures, self.panels.file.slot());
         let drawn = self.rendering.status.lock().ok().and_then(|s| {
             let live = s.drawn.as_ref().and_then(|r| r.live.as_ref());
             live.map(|f| f.number)
@@ -500,7 +432,16 @@ impl eframe::App for MarblingApp {
         egui::Panel::bottom("marbling_status")
             .frame(egui::Frame::side_top_panel(ui.style()))
             .show_separator_line(false)
-            .show(ui, |ui| self.status_bar(ui));
+            .show(ui, |ui| {
+                let line = crate::shell::status_bar::Line {
+                    message: &mut self.panels.message,
+                    zoom_to: &mut self.panels.zoom_to,
+                    rendering: &self.rendering,
+                    noise: &self.noise,
+                };
+                let said = with_frame!(self, |f| crate::shell::status_bar::ui(ui, line, &mut f));
+                self.hooks.status = said;
+            });
         let clear_color = eframe::App::clear_color(self, &ctx.global_style().visuals);
         self.rendering.fast_paint.panels(
             &ctx,

@@ -6,14 +6,13 @@
 //! through `MarblingApp::apply` (src/action.rs).
 
 use crate::History;
-use crate::app::{ActiveGesture, NEW_SIZE};
+use crate::app::ActiveGesture;
 use crate::gpu::canvas_gpu::{CanvasStatus, StandIn};
 use crate::gpu::gpu_errors::GpuErrors;
 use crate::gpu::recovery::LostFlag;
 use crate::marbling::playback::Playback;
 use crate::marbling::shown::Shown;
 use crate::marbling::view::ViewState;
-use crate::platform::PickSlot;
 use crate::shell::message::Message;
 use crate::shell::mode::Mode;
 use marbling_core::{Design, ViewSpec};
@@ -66,8 +65,6 @@ pub struct Editor {
     pub pristine: bool,
     /// The gallery is shown in place of the canvas (src/shell/landing.rs).
     pub landing: bool,
-    /// The address bar's fragment last loaded.
-    pub last_fragment: Option<String>,
     /// Marbling or the noise playground.
     pub mode: Mode,
 }
@@ -93,7 +90,6 @@ impl Editor {
             playback: None,
             pristine: false,
             landing: false,
-            last_fragment: None,
             mode: Mode::Marbling,
         }
     }
@@ -174,8 +170,8 @@ pub struct Panels {
     pub zoom_to: crate::marbling::zoom_to::ZoomTo,
     /// The History section (src/marbling/history/panel.rs).
     pub history: crate::marbling::history::panel::HistoryPanel,
-    /// Where an asynchronous file pick delivers.
-    pub pick: PickSlot,
+    /// The File section (src/store/file_panel.rs).
+    pub file: crate::store::file_panel::FilePanel,
     /// Pictures as the background (src/media/picture.rs).
     pub pictures: crate::media::picture::Pictures,
     /// *Show QR* and its window (src/store/link_qr.rs).
@@ -184,8 +180,6 @@ pub struct Panels {
     pub gallery: crate::shell::landing::Gallery,
     /// The *Recent designs* section (src/store/recent_panel.rs).
     pub recent: crate::store::recent_panel::RecentPanel,
-    /// The size of a new sheet, design pixels.
-    pub new_size: [u32; 2],
     /// The Export section and the exports under way (src/store/export_panel.rs).
     pub export: crate::store::export_panel::ExportPanel,
     /// The Ink section and the palettes it imports (src/marbling/ink_panel.rs).
@@ -212,12 +206,11 @@ impl Default for Panels {
             message: None,
             zoom_to: Default::default(),
             history: Default::default(),
-            pick: PickSlot::default(),
+            file: Default::default(),
             pictures: Default::default(),
             qr: Default::default(),
             gallery: Default::default(),
             recent: Default::default(),
-            new_size: NEW_SIZE,
             export: Default::default(),
             print: Default::default(),
             ink: Default::default(),
