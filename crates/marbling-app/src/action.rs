@@ -145,7 +145,7 @@ impl MarblingApp {
             }
             Action::NewSheet => {
                 let size = self.panels.file.new_size();
-                let mut d = crate::app::blank(size);
+                let mut d = crate::store::file_panel::blank(size);
                 d.background = self
                     .prefs
                     .paper()

@@ -7,28 +7,18 @@ use crate::frame::{Asked, with_frame};
 use crate::gpu::canvas_gpu::CanvasGpu;
 use crate::gpu::gpu_errors::GpuErrors;
 use crate::gpu::recovery::{self, LostFlag, ParkedState};
-use crate::marbling::tools::{Gesture, ToolKind};
 use crate::platform;
+use crate::shell::layout::SheetTab;
 use crate::shell::message::Message;
 use crate::shell::mode::Mode;
+use crate::shell::sections::{self, Section};
 use crate::state::{Editor, Panels, Rendering};
 use crate::store::address_bar::AddressBar;
 use crate::store::prefs::Prefs;
 use crate::store::session::Session;
 use crate::store::{autosave, restore};
-use marbling_core::{Design, Rgb8};
+use marbling_core::Design;
 use std::sync::Arc;
-
-/// A tool being dragged on the canvas.
-#[derive(Clone, Debug)]
-pub struct ActiveGesture {
-    /// The tool in use.
-    pub tool: ToolKind,
-    /// The pointer's path so far.
-    pub gesture: Gesture,
-    /// Seed of this gesture's random choices (spray droplets).
-    pub seed: u64,
-}
 
 /// The marbling playground: its state in parts (src/state.rs); what changes the
 /// document is [`MarblingApp::apply`] (src/action.rs).
@@ -52,9 +42,6 @@ pub struct MarblingApp {
     /// The fragment the address bar holds.
     pub(crate) address: AddressBar,
 }
-
-/// Default canvas of a new design, design pixels.
-pub const NEW_SIZE: [u32; 2] = [1024, 768];
 
 /// The sheet under the noise preview (where 2×2 tiles leave it uncovered).
 const PREVIEW_PAPER: marbling_core::Rgb8 = marbling_core::Rgb8::new(40, 40, 44);
@@ -95,7 +82,9 @@ impl MarblingApp {
         };
         let fallback = crate::shell::gallery::entries()[0]
             .design()
-            .unwrap_or_else(|_| blank(NEW_SIZE));
+            .unwrap_or_else(|_| {
+                crate::store::file_panel::blank(crate::store::file_panel::NEW_SIZE)
+            });
         let mut app = Self::with_design(fallback, backend, gpu);
         app.panels.gallery = crate::shell::landing::Gallery::with_gpu_texture(gallery_texture);
         app.editor.pristine = true;
@@ -324,6 +313,81 @@ impl MarblingApp {
             ctx.request_repaint();
         }
     }
+    /// Shows the bottom sheet (the portrait layout's controls) as the lowest panel of `ui`
+    /// (the whole window): its tabs, then the open tab's sections.
+    fn bottom_sheet(&mut self, ui: &mut egui::Ui, frame: &mut eframe::Frame) {
+        self.panels.sheet.panel(ui).show(ui, |ui| {
+            crate::shell::layout::touch_spacing(ui);
+            with_frame!(self, |f| self.panels.sheet.tabs_ui(ui, &mut f));
+            if let Some(tab) = self.panels.sheet.open_tab(self.editor.mode) {
+                egui::ScrollArea::vertical()
+                    .auto_shrink([false, false])
+                    .show(ui, |ui| self.sections(ui, frame, Some(tab)));
+            }
+        });
+    }
+
+    /// The panel's sections for the mode, in order (`tab`: those of the bottom sheet's
+    /// tab; on its Tools tab Undo and Redo come first, where a phone's user draws).
+    fn sections(&mut self, ui: &mut egui::Ui, frame: &eframe::Frame, tab: Option<SheetTab>) {
+        if tab == Some(SheetTab::Tools) {
+            ui.horizontal(|ui| {
+                with_frame!(self, |f| crate::marbling::history::panel::undo_redo_ui(
+                    ui, &mut f
+                ));
+            });
+        }
+        for (section, rule) in sections::shown(self.editor.mode, tab) {
+            if rule {
+                ui.separator();
+            }
+            self.section(section, ui, frame);
+        }
+    }
+
+    /// Draws one section of the panel.
+    fn section(&mut self, section: Section, ui: &mut egui::Ui, frame: &eframe::Frame) {
+        match section {
+            Section::File => {
+                let share = crate::store::file_panel::Sharing {
+                    address: &mut self.address,
+                    pictures: &mut self.panels.pictures,
+                    qr: &mut self.panels.qr,
+                };
+                with_frame!(self, |f| self.panels.file.ui(ui, share, &mut f));
+            }
+            Section::Export => with_frame!(self, |f| self.panels.export.ui(
+                ui,
+                frame,
+                &mut self.panels.print,
+                &mut self.panels.view3d,
+                &mut f
+            )),
+            Section::Noise => with_frame!(self, |f| self.noise.ui(ui, &mut f)),
+            Section::Surface => {
+                with_frame!(self, |f| crate::noise::panel::surface_ui(ui, &mut f));
+            }
+            Section::Tool => {
+                with_frame!(self, |f| crate::marbling::tool_panel::ui(ui, &mut f));
+                // Under the Flow tool, and under any other while it shows (its Stop).
+                if self.prefs.tool == crate::marbling::tools::ToolKind::Flow
+                    || self.rendering.stream.is_on()
+                {
+                    with_frame!(self, |f| self.rendering.stream.ui(ui, &mut f));
+                }
+            }
+            Section::Ink => with_frame!(self, |f| self.panels.ink.ui(ui, &mut f)),
+            Section::Picture => with_frame!(self, |f| self.panels.pictures.ui(ui, &mut f)),
+            Section::Video => with_frame!(self, |f| self.rendering.video.ui(ui, &mut f)),
+            Section::Midi => with_frame!(self, |f| self.panels.midi.ui(ui, &mut f)),
+            Section::Sound => with_frame!(self, |f| self.panels.sound.ui(ui, &mut f)),
+            Section::History => with_frame!(self, |f| self.panels.history.ui(ui, &mut f)),
+            Section::Recent => {
+                let recent = self.session.recent();
+                with_frame!(self, |f| self.panels.recent.ui(ui, recent, &mut f));
+            }
+        }
+    }
 }
 
 impl eframe::App for MarblingApp {
@@ -425,7 +489,10 @@ impl eframe::App for MarblingApp {
                     if layout.touch() {
                         crate::shell::layout::touch_spacing(ui);
                     }
-                    egui::ScrollArea::vertical().show(ui, |ui| self.side_panel(ui, frame));
+                    egui::ScrollArea::vertical().show(ui, |ui| {
+                        with_frame!(self, |f| crate::shell::mode::switch_ui(ui, &mut f));
+                        self.sections(ui, frame, None);
+                    });
                 });
         }
         let panel_end = shape_count();
@@ -528,9 +595,4 @@ impl eframe::App for MarblingApp {
             Ok(())
         });
     }
-}
-
-/// A blank design of the given size.
-pub(crate) fn blank(size: [u32; 2]) -> Design {
-    Design::new(size[0], size[1], Rgb8::new(0xf4, 0xec, 0xd8))
 }

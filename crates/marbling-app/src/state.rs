@@ -6,10 +6,10 @@
 //! through `MarblingApp::apply` (src/action.rs).
 
 use crate::History;
-use crate::app::ActiveGesture;
 use crate::gpu::canvas_gpu::{CanvasStatus, StandIn};
 use crate::gpu::gpu_errors::GpuErrors;
 use crate::gpu::recovery::LostFlag;
+use crate::marbling::canvas::ActiveGesture;
 use crate::marbling::playback::Playback;
 use crate::marbling::shown::Shown;
 use crate::marbling::view::ViewState;

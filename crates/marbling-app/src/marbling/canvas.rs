@@ -1,7 +1,7 @@
 //! The canvas: the exactly rendered design, pan and zoom, the tools' gestures and
 //! their footprints.
 
-use crate::app::{ActiveGesture, MarblingApp};
+use crate::app::MarblingApp;
 use crate::fast_paint::FastPaint;
 use crate::gpu::canvas_gpu::{CanvasCallback, CanvasPlacement, FrameRequest, StandIn};
 use crate::marbling::footprint;
@@ -14,6 +14,17 @@ use marbling_core::{Op, Point};
 /// How much the canvas may change in width or height, points, before a fitted view is
 /// fitted again.
 const REFIT_PT: f64 = 24.0;
+
+/// A tool being dragged on the canvas.
+#[derive(Clone, Debug)]
+pub struct ActiveGesture {
+    /// The tool in use.
+    pub tool: ToolKind,
+    /// The pointer's path so far.
+    pub gesture: Gesture,
+    /// Seed of this gesture's random choices (spray droplets).
+    pub seed: u64,
+}
 
 impl MarblingApp {
     /// Draws the canvas and handles its input.

@@ -3,11 +3,9 @@
 //! the open tab, or the arrow, collapses the sheet to its tab row.
 
 use crate::action::Action;
-use crate::app::MarblingApp;
-use crate::frame::{Frame, with_frame};
-use crate::shell::layout::{SHEET_MAX_FRACTION, SheetTab, TOUCH_TARGET, touch_spacing};
+use crate::frame::Frame;
+use crate::shell::layout::{SHEET_MAX_FRACTION, SheetTab, TOUCH_TARGET};
 use crate::shell::mode::Mode;
-use crate::shell::sections;
 
 /// The sheet's chosen tab and whether it is open.
 #[derive(Debug)]
@@ -26,6 +24,25 @@ impl Default for BottomSheet {
 }
 
 impl BottomSheet {
+    /// The sheet as the lowest panel of `ui` (the whole window): its tab row, and when
+    /// open, [`SHEET_MAX_FRACTION`] of the window's height.
+    pub fn panel(&self, ui: &egui::Ui) -> egui::Panel {
+        let panel = egui::Panel::bottom("marbling_sheet")
+            .frame(egui::Frame::side_top_panel(ui.style()))
+            .show_separator_line(false)
+            .resizable(false);
+        if self.open {
+            panel.exact_size((ui.max_rect().height() * SHEET_MAX_FRACTION).round())
+        } else {
+            panel
+        }
+    }
+
+    /// The tab whose sections the open sheet shows in `mode`; `None` when collapsed.
+    pub fn open_tab(&self, mode: Mode) -> Option<SheetTab> {
+        self.open.then(|| self.shown_tab(mode))
+    }
+
     /// Collapses the sheet to its tab row (the player takes its room).
     pub fn close(&mut self) {
         self.open = false;
@@ -42,7 +59,7 @@ impl BottomSheet {
     }
 
     /// The tab row and the collapse arrow, sharing the sheet's width.
-    fn tabs_ui(&mut self, ui: &mut egui::Ui, frame: &mut Frame<'_>) {
+    pub fn tabs_ui(&mut self, ui: &mut egui::Ui, frame: &mut Frame<'_>) {
         let open = self.open;
         let current = self.shown_tab(frame.editor.mode);
         ui.horizontal(|ui| {
@@ -88,50 +105,6 @@ impl BottomSheet {
             SheetTab::Noise => frame.act(Action::SetMode(Mode::Noise)),
             SheetTab::Files => {}
             _ => frame.act(Action::SetMode(Mode::Marbling)),
-        }
-    }
-}
-
-impl MarblingApp {
-    /// Shows the bottom sheet as the lowest panel of `ui` (the whole window): its tabs,
-    /// then the open tab's sections of the side panel.
-    pub(crate) fn bottom_sheet(&mut self, ui: &mut egui::Ui, frame: &mut eframe::Frame) {
-        let open_height = (ui.max_rect().height() * SHEET_MAX_FRACTION).round();
-        let panel = egui::Panel::bottom("marbling_sheet")
-            .frame(egui::Frame::side_top_panel(ui.style()))
-            .show_separator_line(false)
-            .resizable(false);
-        let panel = if self.panels.sheet.open {
-            panel.exact_size(open_height)
-        } else {
-            panel
-        };
-        panel.show(ui, |ui| {
-            touch_spacing(ui);
-            with_frame!(self, |f| self.panels.sheet.tabs_ui(ui, &mut f));
-            if self.panels.sheet.open {
-                egui::ScrollArea::vertical()
-                    .auto_shrink([false, false])
-                    .show(ui, |ui| self.sheet_content(ui, frame));
-            }
-        });
-    }
-
-    fn sheet_content(&mut self, ui: &mut egui::Ui, frame: &mut eframe::Frame) {
-        let tab = self.panels.sheet.shown_tab(self.editor.mode);
-        if tab == SheetTab::Tools {
-            // Undo beside the tools, where a phone's user draws.
-            ui.horizontal(|ui| {
-                with_frame!(self, |f| crate::marbling::history::panel::undo_redo_ui(
-                    ui, &mut f
-                ));
-            });
-        }
-        for (section, rule) in sections::shown(self.editor.mode, Some(tab)) {
-            if rule {
-                ui.separator();
-            }
-            self.section(section, ui, frame);
         }
     }
 }

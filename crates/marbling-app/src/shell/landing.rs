@@ -222,8 +222,10 @@ impl Gallery {
                                 ui.set_width(CARD.x);
                                 let r = match card {
                                     None => {
-                                        let paper =
-                                            crate::app::blank(crate::app::NEW_SIZE).background;
+                                        let paper = crate::store::file_panel::blank(
+                                            crate::store::file_panel::NEW_SIZE,
+                                        )
+                                        .background;
                                         let r = plain_card(ui, paper, "+", 40.0);
                                         ui.label(
                                             RichText::new("Blank sheet").strong().color(LIGHT),

@@ -11,7 +11,6 @@ pub(crate) mod message;
 pub(crate) mod mode;
 pub(crate) mod sections;
 pub(crate) mod shortcuts;
-pub(crate) mod side_panel;
 pub(crate) mod status_bar;
 pub(crate) mod style;
 pub(crate) mod tool_rail;

@@ -11,6 +11,9 @@ use crate::store::address_bar::AddressBar;
 use crate::store::link_qr::LinkQrWindow;
 use marbling_core::Design;
 
+/// Default canvas of a new design, design pixels.
+pub const NEW_SIZE: [u32; 2] = [1024, 768];
+
 /// The File section's state.
 pub(crate) struct FilePanel {
     /// Where a picked or dropped design file delivers.
@@ -23,7 +26,7 @@ impl Default for FilePanel {
     fn default() -> Self {
         Self {
             pick: PickSlot::default(),
-            new_size: crate::app::NEW_SIZE,
+            new_size: NEW_SIZE,
         }
     }
 }
@@ -200,4 +203,9 @@ fn open_json(name: &str, bytes: &[u8], f: &mut Frame<'_>) {
         }),
         Err(e) => f.error(format!("{name}: {}", crate::shell::message::first_line(&e))),
     }
+}
+
+/// A blank design of the given size.
+pub(crate) fn blank(size: [u32; 2]) -> Design {
+    Design::new(size[0], size[1], marbling_core::Rgb8::new(0xf4, 0xec, 0xd8))
 }

@@ -70,7 +70,7 @@ mod tests {
 
     #[test]
     fn a_fragment_is_a_design_a_noise_or_nothing() {
-        let design = crate::app::blank([40, 30]);
+        let design = crate::store::file_panel::blank([40, 30]);
         let d = marbling_core::share_fragment(&design);
         assert!(is_link(&d));
         match read(&d) {

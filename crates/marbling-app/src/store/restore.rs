@@ -51,7 +51,7 @@ mod tests {
 
     #[test]
     fn an_unreadable_autosave_is_kept_with_why_and_the_rest_is_read() {
-        let design = crate::app::blank([20, 10]);
+        let design = crate::store::file_panel::blank([20, 10]);
         let stored: HashMap<&str, String> = HashMap::from([
             (
                 autosave::SLOTS[0],
