@@ -7,6 +7,7 @@ use crate::frame::{Asked, with_frame};
 use crate::gpu::canvas_gpu::CanvasGpu;
 use crate::gpu::gpu_errors::GpuErrors;
 use crate::gpu::recovery::{self, LostFlag, ParkedState};
+use crate::marbling::canvas::Canvas;
 use crate::platform;
 use crate::shell::layout::SheetTab;
 use crate::shell::message::Message;
@@ -261,20 +262,6 @@ impl MarblingApp {
         with_frame!(self, |f| self.address.follow(&mut self.noise, &mut f));
     }
 
-    /// Remembers where a named control was drawn (for the `data-controls` hook): the
-    /// part of it that shows when its scroll area cuts it; not one scrolled out of its
-    /// area whose centre lies on the screen (over some other control); one scrolled past
-    /// the screen's edge is listed whole, for a scroll to bring.
-    pub(crate) fn control(
-        &mut self,
-        name: impl Into<std::borrow::Cow<'static, str>>,
-        response: &egui::Response,
-    ) {
-        if let Some(rect) = crate::frame::shown_rect(response) {
-            self.hooks.controls.push((name.into(), rect));
-        }
-    }
-
     /// Carries out what a feature asked for in its `ui` (src/frame.rs): its controls
     /// are listed, its actions applied in order, then its message shown.
     pub(crate) fn take_asked(&mut self, asked: Asked) {
@@ -313,6 +300,31 @@ impl MarblingApp {
             ctx.request_repaint();
         }
     }
+    /// The canvas: its input first (a released gesture is applied at once, so the frame
+    /// shows the design with it), then its picture (src/marbling/canvas.rs).
+    fn canvas(&mut self, ui: &mut egui::Ui, frame: &mut eframe::Frame) {
+        let sense = egui::Sense::click_and_drag();
+        let response = ui.allocate_exact_size(ui.available_size(), sense).1;
+        let asked = self.canvas_parts().input(ui, &response);
+        self.take_asked(asked);
+        let drawn = self.canvas_parts().paint(ui, frame, &response);
+        self.hooks.requested = drawn.requested;
+        self.hooks.sheet_on_page = drawn.sheet_on_page;
+        self.take_asked(drawn.asked);
+    }
+
+    fn canvas_parts(&mut self) -> Canvas<'_> {
+        Canvas {
+            editor: &mut self.editor,
+            prefs: &mut self.prefs,
+            noise: &mut self.noise,
+            player: &mut self.player,
+            midi: &mut self.panels.midi,
+            sound: &self.panels.sound,
+            rendering: &mut self.rendering,
+        }
+    }
+
     /// Shows the bottom sheet (the portrait layout's controls) as the lowest panel of `ui`
     /// (the whole window): its tabs, then the open tab's sections.
     fn bottom_sheet(&mut self, ui: &mut egui::Ui, frame: &mut eframe::Frame) {

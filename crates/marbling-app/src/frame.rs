@@ -33,6 +33,15 @@ pub(crate) struct Asked {
     pub controls: Vec<(Cow<'static, str>, egui::Rect)>,
 }
 
+impl Asked {
+    /// Remembers where a named control was drawn (see [`Frame::control`]).
+    pub fn control(&mut self, name: impl Into<Cow<'static, str>>, response: &egui::Response) {
+        if let Some(rect) = shown_rect(response) {
+            self.controls.push((name.into(), rect));
+        }
+    }
+}
+
 impl<'a> Frame<'a> {
     /// A frame for a feature that reads `editor` and may set `prefs`.
     pub fn new(editor: &'a Editor, prefs: &'a mut Prefs, layout: Layout) -> Self {
@@ -64,9 +73,7 @@ impl<'a> Frame<'a> {
     /// area whose centre lies on the screen (over some other control); one scrolled past
     /// the screen's edge is listed whole, for a scroll to bring.
     pub fn control(&mut self, name: impl Into<Cow<'static, str>>, response: &egui::Response) {
-        if let Some(rect) = shown_rect(response) {
-            self.asked.controls.push((name.into(), rect));
-        }
+        self.asked.control(name, response);
     }
 
     /// What the feature asked for.

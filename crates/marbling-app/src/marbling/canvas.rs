@@ -1,14 +1,22 @@
 //! The canvas: the exactly rendered design, pan and zoom, the tools' gestures and
 //! their footprints.
 
-use crate::app::MarblingApp;
+use crate::action::Action;
 use crate::fast_paint::FastPaint;
+use crate::frame::Asked;
 use crate::gpu::canvas_gpu::{CanvasCallback, CanvasPlacement, FrameRequest, StandIn};
 use crate::marbling::footprint;
+use crate::marbling::player::Player;
 use crate::marbling::tools::{Gesture, ToolKind, ops_for};
 use crate::marbling::view::ViewState;
+use crate::media::midi::MidiPanel;
+use crate::media::sound::SoundPanel;
+use crate::noise::Noise;
+use crate::shell::message::Message;
+use crate::state::{Editor, Rendering};
+use crate::store::prefs::Prefs;
 use eframe::egui_wgpu;
-use egui::{Color32, PointerButton, Pos2, Rect, Sense, Vec2};
+use egui::{Color32, PointerButton, Pos2, Rect, Vec2};
 use marbling_core::{Op, Point};
 
 /// How much the canvas may change in width or height, points, before a fitted view is
@@ -26,12 +34,47 @@ pub struct ActiveGesture {
     pub seed: u64,
 }
 
-impl MarblingApp {
-    /// Draws the canvas and handles its input.
-    pub(crate) fn canvas(&mut self, ui: &mut egui::Ui, frame: &mut eframe::Frame) {
-        let (rect, response) = ui.allocate_exact_size(ui.available_size(), Sense::click_and_drag());
-        self.control("canvas", &response);
-        let painter = ui.painter_at(rect);
+/// What the canvas reads and changes in a frame: the document's view and gesture (the
+/// canvas is the marbling editor's own), the tool preferences, and the features it
+/// draws for or feels through (the noise preview, the player's explain view, MIDI's
+/// line, sound's pressure, the renderer).
+pub(crate) struct Canvas<'a> {
+    /// The document, its view and the gesture under way.
+    pub editor: &'a mut Editor,
+    /// The tool, its settings and the ink (cycled by drops).
+    pub prefs: &'a mut Prefs,
+    /// The noise playground (its preview over the sheet).
+    pub noise: &'a mut Noise,
+    /// The step player (its explain view and probe).
+    pub player: &'a mut Player,
+    /// MIDI (the line its notes fall on, drawn on the canvas).
+    pub midi: &'a mut MidiPanel,
+    /// Sound (it may press like a pen).
+    pub sound: &'a SoundPanel,
+    /// The GPU renderer's side.
+    pub rendering: &'a mut Rendering,
+}
+
+/// What the canvas drew and asks for in a frame.
+#[derive(Default)]
+pub(crate) struct Drawn {
+    /// Its control, and a message.
+    pub asked: Asked,
+    /// The exact frame it asked the GPU for (`data-ready`), if it painted one.
+    pub requested: Option<FrameRequest>,
+    /// The sheet's top-left on the page and the CSS pixels per design pixel
+    /// (`data-view`).
+    pub sheet_on_page: Option<[f64; 3]>,
+}
+
+impl Canvas<'_> {
+    /// The canvas's input: fits or moves the view, pans and zooms, and drives the tool.
+    /// A released gesture is asked for as an [`Action::Commit`], applied before
+    /// [`Canvas::paint`] so the frame shows the design with it.
+    pub fn input(&mut self, ui: &egui::Ui, response: &egui::Response) -> Asked {
+        let mut asked = Asked::default();
+        asked.control("canvas", response);
+        let rect = response.rect;
         let size = [f64::from(rect.width()), f64::from(rect.height())];
         let ppp = f64::from(ui.ctx().pixels_per_point());
         // Refit, unless the user zoomed or panned, on a new window size or pixel ratio (a
@@ -78,15 +121,29 @@ impl MarblingApp {
             self.editor.view = Some(ViewState::centred(spec, size));
         }
         let view = self.editor.view.unwrap_or_default();
-        let pointer = response.hover_pos();
-        let local = |p: Pos2| [f64::from(p.x - rect.min.x), f64::from(p.y - rect.min.y)];
-
-        self.navigate(ui, &response, rect, ppp);
+        self.navigate(ui, response, rect, ppp);
         let view = self.editor.view.unwrap_or(view);
         if self.editor.mode == crate::shell::mode::Mode::Marbling {
-            self.drive_tool(ui, &response, rect, &view);
+            self.drive_tool(ui, response, rect, &view, &mut asked);
         }
+        asked
+    }
 
+    /// Draws the canvas: the exact frame (or live preview), the noise preview, the
+    /// sheet's outline and the tool's footprint or the player's drawing.
+    pub fn paint(
+        &mut self,
+        ui: &egui::Ui,
+        frame: &mut eframe::Frame,
+        response: &egui::Response,
+    ) -> Drawn {
+        let mut drawn = Drawn::default();
+        let rect = response.rect;
+        let painter = ui.painter_at(rect);
+        let ppp = f64::from(ui.ctx().pixels_per_point());
+        let view = self.editor.view.unwrap_or_default();
+        let pointer = response.hover_pos();
+        let local = |p: Pos2| [f64::from(p.x - rect.min.x), f64::from(p.y - rect.min.y)];
         // The design's rectangle on screen, clipped to the canvas.
         let tl = view.to_screen(Point::ZERO);
         let (w, h) = self.editor.shown.size();
@@ -99,7 +156,7 @@ impl MarblingApp {
         let sheet_f64 = [left + tl[0], top + tl[1], left + br[0], top + br[1]];
         let placement = CanvasPlacement::new(rect, sheet_f64, ppp);
         if self.rendering.gpu {
-            self.paint_design(ui, frame, rect, placement, &view);
+            drawn.requested = self.paint_design(ui, frame, rect, placement, &view);
         } else {
             let [r, g, b] = crate::gpu::canvas_gpu::SURROUND;
             painter.rect_filled(rect, 0.0, Color32::from_rgb(r, g, b));
@@ -115,7 +172,7 @@ impl MarblingApp {
             let d = self.editor.history.design();
             let (size, factor) = ([d.width, d.height], self.noise.factor_at(self.editor.view));
             if let Err(e) = self.noise.paint_preview(ui, &painter, sheet, size, factor) {
-                self.error(e);
+                drawn.asked.message = Some(Message::error(e));
             }
         }
         // The sheet's outline and the tool overlay: untextured shapes, drawn by the
@@ -132,7 +189,7 @@ impl MarblingApp {
         // pixel (egui points are CSS pixels; the hooks use no other unit).
         // (In f64: at 10⁶× the sheet's corner lies 10⁸ points off, where an egui (f32)
         // coordinate is 8 points coarse.)
-        self.hooks.sheet_on_page = Some([
+        drawn.sheet_on_page = Some([
             placement.sheet_px[0] / ppp,
             placement.sheet_px[1] / ppp,
             view.zoom,
@@ -152,8 +209,15 @@ impl MarblingApp {
                 crate::marbling::player_drawing::draw_tool(&painter, rect, &view, op, e, (w, h));
             }
         } else if self.editor.mode == crate::shell::mode::Mode::Marbling {
-            footprint::draw(&painter, rect, &view, self, design_pointer);
-            if let Some(line) = self.panels.midi.shown_line() {
+            footprint::draw(
+                &painter,
+                rect,
+                &view,
+                self.editor,
+                self.prefs,
+                design_pointer,
+            );
+            if let Some(line) = self.midi.shown_line() {
                 // The line MIDI notes fall on: low notes at its start (the dot).
                 let at = |p: Point| {
                     let [x, y] = view.to_screen(p);
@@ -172,6 +236,7 @@ impl MarblingApp {
             painter.layer_id(),
             overlay_start..overlay_end,
         );
+        drawn
     }
 
     /// Pan (middle drag, space + drag, two fingers) and zoom (wheel, pinch).
@@ -230,6 +295,7 @@ impl MarblingApp {
         response: &egui::Response,
         rect: Rect,
         view: &ViewState,
+        asked: &mut Asked,
     ) {
         let (pressed, down, released, pos, dt, space, touches) = ui.input(|i| {
             (
@@ -248,13 +314,13 @@ impl MarblingApp {
             self.editor.active = None;
             return;
         }
-        if self.panels.midi.drawing_line() {
+        if self.midi.drawing_line() {
             // *Draw line* of the MIDI section: this drag is the notes' line, no tool's.
             self.editor.active = None;
             let at = pos
                 .filter(|_| !pressed || response.hovered())
                 .map(to_design);
-            self.panels.midi.draw_line(at, pressed, down);
+            self.midi.draw_line(at, pressed, down);
             if down {
                 ui.ctx().request_repaint();
             }
@@ -293,10 +359,7 @@ impl MarblingApp {
                     1.0
                 };
                 // Sound may press too (src/media/sound.rs).
-                let sound = self
-                    .panels
-                    .sound
-                    .factor(crate::media::sound::Target::Pressure);
+                let sound = self.sound.factor(crate::media::sound::Target::Pressure);
                 let scale = pen * sound.unwrap_or(1.0);
                 if let Some(p) = pos.map(to_design)
                     && active.gesture.end() != p
@@ -319,14 +382,14 @@ impl MarblingApp {
                         let laid = ops.first().map_or(0, Op::counted_ops);
                         self.prefs.ink = inks[laid % inks.len()];
                     }
-                    self.apply(crate::action::Action::Commit(ops));
+                    asked.actions.push(Action::Commit(ops));
                 }
             }
         }
     }
 
     /// The ops the current gesture would add if released now.
-    pub(crate) fn pending_ops(&self) -> Vec<Op> {
+    fn pending_ops(&self) -> Vec<Op> {
         match &self.editor.active {
             Some(a) => ops_for(
                 a.tool,
@@ -348,10 +411,8 @@ impl MarblingApp {
         rect: Rect,
         placement: CanvasPlacement,
         view: &ViewState,
-    ) {
-        if frame.wgpu_render_state().is_none() {
-            return;
-        }
+    ) -> Option<FrameRequest> {
+        frame.wgpu_render_state()?;
         let ppp = f64::from(ui.ctx().pixels_per_point());
         let size = [
             ((f64::from(rect.width()) * ppp).round() as u32).max(1),
@@ -444,7 +505,7 @@ impl MarblingApp {
             live: self.rendering.video.live_frame().cloned(),
             stream,
         };
-        self.hooks.requested = Some(request.exact_frame());
+        let requested = request.exact_frame();
         let acting =
             ui.input(|i| !i.events.is_empty() || i.pointer.any_down() || i.pointer.is_moving());
         if acting {
@@ -461,6 +522,7 @@ impl MarblingApp {
         };
         ui.painter()
             .add(egui_wgpu::Callback::new_paint_callback(rect, callback));
+        Some(requested)
     }
 }
 

@@ -1,10 +1,11 @@
 //! Tool footprints drawn over the canvas: where a click or drag will act, before and
 //! while it happens.
 
-use crate::app::MarblingApp;
 use crate::marbling::drop_patterns::DropPattern;
 use crate::marbling::tools::ToolKind;
 use crate::marbling::view::ViewState;
+use crate::state::Editor;
+use crate::store::prefs::Prefs;
 use egui::{Color32, Painter, Pos2, Rect, Shape, Stroke};
 use marbling_core::{Point, Vec2};
 
@@ -37,11 +38,12 @@ pub fn draw(
     painter: &Painter,
     rect: Rect,
     view: &ViewState,
-    app: &MarblingApp,
+    editor: &Editor,
+    prefs: &Prefs,
     pointer: Option<Point>,
 ) {
-    let s = &app.prefs.settings;
-    let (tool, a, b, held) = match &app.editor.active {
+    let s = &prefs.settings;
+    let (tool, a, b, held) = match &editor.active {
         Some(g) => (
             g.tool,
             g.gesture.start,
@@ -49,13 +51,13 @@ pub fn draw(
             g.gesture.held_seconds,
         ),
         None => match pointer {
-            Some(p) => (app.prefs.tool, p, p, 0.0),
+            Some(p) => (prefs.tool, p, p, 0.0),
             None => return,
         },
     };
     let z = view.zoom as f32;
     let at = |p: Point| screen(rect, view, p);
-    let dragging = app.editor.active.is_some();
+    let dragging = editor.active.is_some();
     let drag = b - a;
     // Direction of motion: the drag, or (hovering) to the right.
     let m = if drag.hypot() >= 1.0 {
@@ -72,11 +74,7 @@ pub fn draw(
                 circle(painter, at(a), r);
             } else {
                 // Ghost drops: exactly where the click lays them (same seed).
-                let seed = app
-                    .editor
-                    .active
-                    .as_ref()
-                    .map_or(app.editor.next_seed, |g| g.seed);
+                let seed = editor.active.as_ref().map_or(editor.next_seed, |g| g.seed);
                 for c in crate::marbling::tools::drop_centers(s, a, b, seed) {
                     circle(painter, at(c), r.max(1.5));
                 }
@@ -87,8 +85,7 @@ pub fn draw(
             let tips = crate::marbling::tools::stylus_tips(s);
             let offsets: Vec<f64> = tips.as_deref().map_or(vec![0.0], <[f64]>::to_vec);
             // The tips sit across the direction of travel (the last stretch of the path).
-            let dir = app
-                .editor
+            let dir = editor
                 .active
                 .as_ref()
                 .and_then(|g| {
@@ -103,7 +100,7 @@ pub fn draw(
             for o in offsets {
                 circle(painter, at(b + across * o), reach.max(3.0));
             }
-            if let Some(g) = &app.editor.active {
+            if let Some(g) = &editor.active {
                 polyline(painter, g.gesture.path.iter().map(|p| at(*p)).collect());
             }
         }
@@ -184,7 +181,7 @@ pub fn draw(
         ToolKind::Flow => {
             if dragging {
                 // Markers streaming as far as the flow released now would take them.
-                let design = app.editor.history.design();
+                let design = editor.history.design();
                 let flow = marbling_core::Op::Flow(crate::marbling::tools::flow(s, drag.hypot()));
                 let size = (design.width, design.height);
                 crate::marbling::player_drawing::draw_tool(painter, rect, view, &flow, 1.0, size);
@@ -206,7 +203,7 @@ pub fn draw(
         }
         ToolKind::Circular | ToolKind::Vortex => {
             let r = if dragging {
-                app.editor.active.as_ref().map_or(0.0, |g| {
+                editor.active.as_ref().map_or(0.0, |g| {
                     g.gesture
                         .path
                         .iter()
