@@ -1,11 +1,17 @@
-//! Everything that changes the design goes through [`MarblingApp::apply`]: panels,
+//! Everything that changes the design goes through [`Editor::apply`]: panels,
 //! keys and the canvas say what the user asked for as an [`Action`], and this file
 //! says what happens then (history step, refresh, autosave, recent designs, link).
 
-use crate::app::MarblingApp;
 use crate::gpu::canvas_gpu::StandIn;
+use crate::marbling::editor::Editor;
 use crate::marbling::history::Surface;
+use crate::noise::Noise;
+use crate::shell::message::Message;
 use crate::shell::mode::Mode;
+use crate::state::Panels;
+use crate::store::address_bar::AddressBar;
+use crate::store::prefs::Prefs;
+use crate::store::session::Session;
 use marbling_core::{Design, Op, Rgb8};
 
 /// What the user asked for.
@@ -75,9 +81,33 @@ pub enum Action {
     },
 }
 
-impl MarblingApp {
+/// What an action may change beside the document: the parts the frame loop lends.
+pub(crate) struct Around<'a> {
+    /// The noise playground (the picture shown in its mode).
+    pub noise: &'a mut Noise,
+    /// Storage: the autosave owed, *Recent designs*.
+    pub session: &'a mut Session,
+    /// The address bar's link (dropped after an edit).
+    pub address: &'a mut AddressBar,
+    /// The panels: the status line, New's size, the phone's sheet and rail.
+    pub panels: &'a mut Panels,
+    /// The tool preferences (the palette's paper for New).
+    pub prefs: &'a Prefs,
+}
+
+impl Around<'_> {
+    fn info(&mut self, text: impl Into<String>) {
+        self.panels.message = Some(Message::info(text.into()));
+    }
+
+    fn error(&mut self, text: impl Into<String>) {
+        self.panels.message = Some(Message::error(text.into()));
+    }
+}
+
+impl Editor {
     /// Carries out `action`: the only place where the design and its history change.
-    pub(crate) fn apply(&mut self, action: Action) {
+    pub(crate) fn apply(&mut self, action: Action, mut around: Around<'_>) {
         // Only a change of the document ends the start-up design's pristine state, and
         // the status line's message about the one before.
         let pristine = match action {
@@ -88,24 +118,24 @@ impl MarblingApp {
             | Action::PlayBackward
             | Action::View(_)
             | Action::ZoomTo(_)
-            | Action::FitView => self.editor.pristine,
+            | Action::FitView => self.pristine,
             _ => {
-                self.panels.message = None;
-                std::mem::take(&mut self.editor.pristine)
+                around.panels.message = None;
+                std::mem::take(&mut self.pristine)
             }
         };
-        let shown_size = self.editor.shown.size();
+        let shown_size = self.shown.size();
         // An edit: the design before it, with the op it added, stands in while the new
         // design's exact frame is drawn. Any other change of state (Undo, Redo, another
         // document): an earlier state that looks the same, found once it is made.
         let stand_in = match &action {
             Action::Load { .. } | Action::NewSheet | Action::OpenRecent(_) => {
                 // A new document is edited at once: the gallery gives way.
-                self.editor.landing = false;
+                self.landing = false;
                 StandIn::other_state(None)
             }
             Action::Commit(ops) => StandIn {
-                key: Some(self.editor.key),
+                key: Some(self.key),
                 op: match ops.as_slice() {
                     [op] if crate::marbling::canvas::previewable(op) => Some(op.clone()),
                     _ => None,
@@ -115,10 +145,10 @@ impl MarblingApp {
             _ => StandIn::other_state(None),
         };
         let changed = match action {
-            Action::Commit(ops) => match self.editor.history.push_ops(ops) {
+            Action::Commit(ops) => match self.history.push_ops(ops) {
                 Ok(()) => true,
                 Err(e) => {
-                    self.error(e.to_string());
+                    around.error(e.to_string());
                     false
                 }
             },
@@ -130,143 +160,151 @@ impl MarblingApp {
                 if pristine {
                     // Nothing to keep (the start-up design nobody touched, maybe never
                     // seen behind the gallery): this design starts the history.
-                    self.editor.view = None;
-                    self.editor.history = crate::History::new(design);
+                    self.view = None;
+                    self.history = crate::History::new(design);
                 } else {
-                    self.replace_document(design, format!("opened {from}"));
+                    self.replace_document(around.session, design, format!("opened {from}"));
                 }
-                self.info(format!("opened {from}"));
+                around.info(format!("opened {from}"));
                 if from_link {
-                    self.after_change();
+                    self.after_change(&mut around);
                     self.fit_if_resized(shown_size);
                     return;
                 }
                 true
             }
             Action::NewSheet => {
-                let size = self.panels.file.new_size();
+                let size = around.panels.file.new_size();
                 let mut d = crate::store::file_panel::blank(size);
-                d.background = self
+                d.background = around
                     .prefs
                     .paper()
-                    .unwrap_or(self.editor.history.design().background);
-                self.replace_document(d, format!("new sheet {}×{}", size[0], size[1]));
-                self.info("a new design (Undo brings the previous one back)");
+                    .unwrap_or(self.history.design().background);
+                self.replace_document(
+                    around.session,
+                    d,
+                    format!("new sheet {}×{}", size[0], size[1]),
+                );
+                around.info("a new design (Undo brings the previous one back)");
                 true
             }
-            Action::Undo => self.editor.history.undo(),
-            Action::Redo => self.editor.history.redo(),
+            Action::Undo => self.history.undo(),
+            Action::Redo => self.history.redo(),
             Action::ZoomTo(spec) => {
-                self.editor.view_request = Some(spec);
+                self.view_request = Some(spec);
                 return;
             }
             Action::FitView => {
-                self.editor.view = None;
+                self.view = None;
                 return;
             }
             Action::View(n) => {
-                self.editor.history.view(n);
-                self.editor.playback = None;
-                self.refresh();
+                self.history.view(n);
+                self.playback = None;
+                self.refresh_saying(&mut around);
                 self.fit_if_resized(shown_size);
                 self.set_stand_in(stand_in);
                 return;
             }
             Action::Play(on) => {
-                self.editor.history.view(None);
-                self.editor.playback = on.then(crate::marbling::playback::Playback::start);
+                self.history.view(None);
+                self.playback = on.then(crate::marbling::playback::Playback::start);
                 // On a phone the player takes the bottom sheet's or the side panel's room
                 // (a tab or the rail opens it again).
                 if on {
-                    match self.panels.layout {
-                        crate::shell::layout::Layout::Portrait => self.panels.sheet.close(),
+                    match around.panels.layout {
+                        crate::shell::layout::Layout::Portrait => around.panels.sheet.close(),
                         crate::shell::layout::Layout::Landscape => {
-                            self.panels.rail.close_panel();
+                            around.panels.rail.close_panel();
                         }
                         crate::shell::layout::Layout::Desktop => {}
                     }
                 }
-                self.refresh();
+                self.refresh_saying(&mut around);
                 self.fit_if_resized(shown_size);
                 return;
             }
             Action::Seek { position, playing } => {
-                let steps = self.editor.history.design().gesture_sizes().len();
+                let steps = self.history.design().gesture_sizes().len();
                 let mut p = crate::marbling::playback::Playback::at(position, steps);
                 p.playing = playing && p.step < steps;
-                self.editor.playback = Some(p);
-                self.refresh();
+                self.playback = Some(p);
+                self.refresh_saying(&mut around);
                 return;
             }
             Action::PlayBackward => {
-                let steps = self.editor.history.design().gesture_sizes().len();
+                let steps = self.history.design().gesture_sizes().len();
                 let mut p = crate::marbling::playback::Playback::at(steps as f64, steps);
                 p.playing = steps > 0;
-                self.editor.playback = Some(p);
-                self.refresh();
+                self.playback = Some(p);
+                self.refresh_saying(&mut around);
                 return;
             }
             Action::SetMode(mode) => {
-                self.set_mode(mode);
+                self.set_mode_saying(mode, &mut around);
                 return;
             }
             Action::ShowGallery(on) => {
-                self.editor.landing = on;
+                self.landing = on;
                 return;
             }
-            Action::Restore(i) => self.editor.history.restore(i),
-            Action::OpenRecent(i) => match self.session.recent().design(i) {
+            Action::Restore(i) => self.history.restore(i),
+            Action::OpenRecent(i) => match around.session.recent().design(i) {
                 Ok(d) => {
-                    let label = self.session.recent().entries[i].label.clone();
-                    self.replace_document(d, format!("restored recent design ({label})"));
-                    self.info("restored a recent design (Undo goes back)");
+                    let label = around.session.recent().entries[i].label.clone();
+                    self.replace_document(
+                        around.session,
+                        d,
+                        format!("restored recent design ({label})"),
+                    );
+                    around.info("restored a recent design (Undo goes back)");
                     true
                 }
                 Err(e) => {
-                    self.error(e);
+                    around.error(e);
                     false
                 }
             },
             Action::SetPaperColor(c) => {
-                let mut paper = self.editor.history.shown_paper();
+                let mut paper = self.history.shown_paper();
                 paper.background = c;
                 paper.background_noise = None;
                 paper.background_image = None;
-                self.editor.history.push_paper(paper, c.to_string(), true);
+                self.history.push_paper(paper, c.to_string(), true);
                 true
             }
             Action::SetBackgroundImage { image, what } => {
-                let mut paper = self.editor.history.shown_paper();
+                let mut paper = self.history.shown_paper();
                 if image.is_some() {
                     paper.background_noise = None;
                 }
                 paper.background_image = image;
-                self.editor.history.push_paper(paper, what.clone(), false);
-                self.set_mode(Mode::Marbling);
-                self.info(format!("design surface: {what}"));
+                self.history.push_paper(paper, what.clone(), false);
+                self.set_mode_saying(Mode::Marbling, &mut around);
+                around.info(format!("design surface: {what}"));
                 true
             }
             Action::SetSurface {
                 surface: (background, overlays),
                 what,
             } => {
-                let mut paper = self.editor.history.shown_paper();
+                let mut paper = self.history.shown_paper();
                 if background.is_some() {
                     paper.background_image = None;
                 }
                 paper.background_noise = background;
                 paper.overlays = overlays;
-                self.editor.history.push_paper(paper, what.clone(), false);
-                self.set_mode(Mode::Marbling);
-                self.info(format!("design surface: {what}"));
+                self.history.push_paper(paper, what.clone(), false);
+                self.set_mode_saying(Mode::Marbling, &mut around);
+                around.info(format!("design surface: {what}"));
                 true
             }
         };
         if changed {
             // The address bar's link (a design, or a noise the design may now be marbling)
             // no longer shows what is on screen.
-            self.address.design_changed();
-            self.after_change();
+            around.address.design_changed();
+            self.after_change(&mut around);
             self.fit_if_resized(shown_size);
             self.set_stand_in(stand_in);
         }
@@ -276,41 +314,54 @@ impl MarblingApp {
     /// a change that is not an edit, an earlier state that looks the same.
     fn set_stand_in(&mut self, mut s: StandIn) {
         if s.paper {
-            s.key = self.editor.earlier_look_alike();
+            s.key = self.earlier_look_alike();
         }
-        self.editor.stand_in = Some((self.editor.key, s));
+        self.stand_in = Some((self.key, s));
     }
 
     /// The design changed: stop playback, redraw, autosave soon.
-    fn after_change(&mut self) {
-        self.editor.playback = None;
-        self.refresh();
-        self.session.design_changed();
+    fn after_change(&mut self, around: &mut Around<'_>) {
+        self.playback = None;
+        self.refresh_saying(around);
+        around.session.design_changed();
     }
 
     /// A sheet of another size (New, Open, or undoing either) is fitted to the canvas.
     fn fit_if_resized(&mut self, before: (u32, u32)) {
-        if self.editor.shown.size() != before {
-            self.editor.view = None;
+        if self.shown.size() != before {
+            self.view = None;
         }
     }
 
     /// A new document step; the design it replaces goes to *Recent designs*.
-    fn replace_document(&mut self, design: Design, label: String) {
-        let current = self.editor.history.design();
+    fn replace_document(&mut self, session: &mut Session, design: Design, label: String) {
+        let current = self.history.design();
         if !current.ops.is_empty() || current.uses_v2() {
             let kept = current.clone();
-            self.session.keep_recent(&kept, format!("before {label}"));
+            session.keep_recent(&kept, format!("before {label}"));
         }
-        self.editor.mode = Mode::Marbling;
-        self.editor.active = None;
-        self.editor.history.push_document(design, label);
+        self.mode = Mode::Marbling;
+        self.active = None;
+        self.history.push_document(design, label);
+    }
+
+    fn refresh_saying(&mut self, around: &mut Around<'_>) {
+        if let Err(e) = self.refresh(around.noise) {
+            around.error(e);
+        }
+    }
+
+    fn set_mode_saying(&mut self, mode: Mode, around: &mut Around<'_>) {
+        if let Err(e) = self.set_mode(mode, around.noise) {
+            around.error(e);
+        }
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::app::MarblingApp;
     use crate::marbling::history::EditError;
     use marbling_core::{MAX_OPS, Point, Spray};
 

@@ -1,25 +1,25 @@
 //! The playground app: state, what changes it, and the frame loop.
 
 use crate::History;
-use crate::action::Action;
+use crate::action::{Action, Around};
 use crate::automation::hooks::{Hooks, Seen};
 use crate::frame::{Asked, with_frame};
 use crate::gpu::canvas_gpu::CanvasGpu;
 use crate::gpu::gpu_errors::GpuErrors;
 use crate::gpu::recovery::{self, LostFlag, ParkedState};
 use crate::marbling::canvas::Canvas;
+use crate::marbling::editor::Editor;
 use crate::platform;
 use crate::shell::layout::SheetTab;
 use crate::shell::message::Message;
 use crate::shell::mode::Mode;
 use crate::shell::sections::{self, Section};
-use crate::state::{Editor, Panels, Rendering};
+use crate::state::{Panels, Rendering};
 use crate::store::address_bar::AddressBar;
 use crate::store::prefs::Prefs;
 use crate::store::session::Session;
 use crate::store::{autosave, restore};
 use marbling_core::Design;
-use std::sync::Arc;
 
 /// The marbling playground: its state in parts (src/state.rs); what changes the
 /// document is [`MarblingApp::apply`] (src/action.rs).
@@ -44,8 +44,6 @@ pub struct MarblingApp {
     pub(crate) address: AddressBar,
 }
 
-/// The sheet under the noise preview (where 2×2 tiles leave it uncovered).
-const PREVIEW_PAPER: marbling_core::Rgb8 = marbling_core::Rgb8::new(40, 40, 44);
 impl MarblingApp {
     /// Creates the app: GPU resources, then the design from a share link, else the
     /// autosave, else the first gallery example.
@@ -193,48 +191,24 @@ impl MarblingApp {
         }
     }
 
-    /// The shown design changed: new key, new snapshot.
+    /// The shown design changed: new key, new snapshot (src/marbling/editor.rs).
     pub(crate) fn refresh(&mut self) {
-        self.editor.key += 1;
-        if self.editor.mode == Mode::Noise {
-            let d = self.editor.history.design();
-            let size = [d.width, d.height];
-            // The CPU preview draws a spec the background cannot hold: the GPU then
-            // draws a bare sheet under it, not the (costly) base noise.
-            let noise = if self.noise.settings().needs_preview() {
-                Ok(marbling_core::Design::new(size[0], size[1], PREVIEW_PAPER))
-            } else {
-                self.noise
-                    .layer_for(self.editor.view)
-                    .and_then(|layer| self.noise.settings().design(size, layer))
-            };
-            match noise {
-                Ok(noise) => {
-                    self.editor.shown = crate::marbling::shown::Shown::all(Arc::new(noise))
-                }
-                Err(e) => self.error(format!("noise: {e}")),
-            }
-            return;
+        if let Err(e) = self.editor.refresh(&mut self.noise) {
+            self.error(e);
         }
-        self.editor.shown = match &self.editor.playback {
-            Some(p) => {
-                let full = self.editor.history.design_shared();
-                p.frame(full, &full.step_bounds())
-            }
-            None => self.editor.history.shown(),
-        };
-        self.editor.remember_shown();
     }
 
-    /// Switches between marbling and the noise playground.
-    pub(crate) fn set_mode(&mut self, mode: Mode) {
-        if mode != self.editor.mode {
-            self.editor.mode = mode;
-            self.editor.playback = None;
-            self.editor.active = None;
-            self.noise.forget_shown();
-            self.refresh();
-        }
+    /// Carries out `action` (src/action.rs): the only place where the design and its
+    /// history change.
+    pub(crate) fn apply(&mut self, action: Action) {
+        let around = Around {
+            noise: &mut self.noise,
+            session: &mut self.session,
+            address: &mut self.address,
+            panels: &mut self.panels,
+            prefs: &self.prefs,
+        };
+        self.editor.apply(action, around);
     }
 
     /// In the noise playground: re-renders when a parameter or the zoom rule's factor

@@ -5,9 +5,9 @@
 //! its own state; everything else it touches goes through here.
 
 use crate::action::Action;
+use crate::marbling::editor::Editor;
 use crate::shell::layout::Layout;
 use crate::shell::message::Message;
-use crate::state::Editor;
 use crate::store::prefs::Prefs;
 use std::borrow::Cow;
 

@@ -1,8 +1,9 @@
 //! The automation hooks: attributes of the page's `<body>` that tests and tools read
 //! (the README lists them). Only changed values are written.
 
+use crate::marbling::editor::Editor;
 use crate::noise::Noise;
-use crate::state::{Editor, Panels, Rendering};
+use crate::state::{Panels, Rendering};
 use crate::store::prefs::Prefs;
 use crate::{platform, recovery};
 use std::borrow::Cow;

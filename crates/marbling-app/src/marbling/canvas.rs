@@ -5,6 +5,7 @@ use crate::action::Action;
 use crate::fast_paint::FastPaint;
 use crate::frame::Asked;
 use crate::gpu::canvas_gpu::{CanvasCallback, CanvasPlacement, FrameRequest, StandIn};
+use crate::marbling::editor::Editor;
 use crate::marbling::footprint;
 use crate::marbling::player::Player;
 use crate::marbling::tools::{Gesture, ToolKind, ops_for};
@@ -13,7 +14,7 @@ use crate::media::midi::MidiPanel;
 use crate::media::sound::SoundPanel;
 use crate::noise::Noise;
 use crate::shell::message::Message;
-use crate::state::{Editor, Rendering};
+use crate::state::Rendering;
 use crate::store::prefs::Prefs;
 use eframe::egui_wgpu;
 use egui::{Color32, PointerButton, Pos2, Rect, Vec2};
@@ -196,7 +197,7 @@ impl Canvas<'_> {
         ]);
         if let Some(p) = self.editor.playback {
             // The player draws the step's tool moving, and the explain view.
-            if let Some(g) = self.player.explain_geometry(&self.editor) {
+            if let Some(g) = self.player.explain_geometry(self.editor) {
                 crate::marbling::player_drawing::draw_explain(
                     &painter.with_clip_rect(sheet),
                     rect,

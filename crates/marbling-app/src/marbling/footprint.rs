@@ -2,9 +2,9 @@
 //! while it happens.
 
 use crate::marbling::drop_patterns::DropPattern;
+use crate::marbling::editor::Editor;
 use crate::marbling::tools::ToolKind;
 use crate::marbling::view::ViewState;
-use crate::state::Editor;
 use crate::store::prefs::Prefs;
 use egui::{Color32, Painter, Pos2, Rect, Shape, Stroke};
 use marbling_core::{Point, Vec2};

@@ -4,6 +4,7 @@
 pub(crate) mod canvas;
 pub(crate) mod colour_words;
 pub(crate) mod drop_patterns;
+pub(crate) mod editor;
 pub(crate) mod explain_geometry;
 pub(crate) mod fingers;
 pub(crate) mod footprint;

@@ -5,9 +5,9 @@
 
 use crate::action::Action;
 use crate::frame::Frame;
+use crate::marbling::editor::Editor;
 use crate::marbling::explain_geometry::{ExplainGeometry, Window};
 use crate::media::recorder::{LoopEnding, MAX_HOLD_S, Next, Phase, Recorder};
-use crate::state::Editor;
 use egui::{Color32, Sense, Slider, Stroke, vec2};
 use marbling_core::{Design, Point};
 use std::sync::Arc;
