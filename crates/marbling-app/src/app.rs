@@ -21,8 +21,9 @@ use crate::store::session::Session;
 use crate::store::{autosave, restore};
 use marbling_core::Design;
 
-/// The marbling playground: its state in parts (src/state.rs); what changes the
-/// document is [`MarblingApp::apply`] (src/action.rs).
+/// The marbling playground: the features it holds, each owning its state, and the
+/// frame loop that lends them what they share; what changes the document is
+/// [`Editor::apply`] (src/action.rs).
 pub struct MarblingApp {
     /// The document being edited and how it is shown.
     pub(crate) editor: Editor,

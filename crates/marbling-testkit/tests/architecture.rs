@@ -107,3 +107,72 @@ fn the_benchmarks_page_stays_short() {
         "docs/BENCHMARKS.md has {lines} lines (at most 500; move detail to docs/perf-log/)"
     );
 }
+
+/// Every `.rs` file under `dir`, recursively, with its text.
+fn sources(dir: &Path) -> Vec<(PathBuf, String)> {
+    let mut out = Vec::new();
+    let mut stack = vec![dir.to_path_buf()];
+    while let Some(d) = stack.pop() {
+        for entry in fs::read_dir(&d).unwrap_or_else(|e| panic!("{}: {e}", d.display())) {
+            let p = entry.expect("a directory entry").path();
+            if p.is_dir() {
+                stack.push(p);
+            } else if p.extension().is_some_and(|e| e == "rs") {
+                let text =
+                    fs::read_to_string(&p).unwrap_or_else(|e| panic!("{}: {e}", p.display()));
+                out.push((p, text));
+            }
+        }
+    }
+    out.sort();
+    out
+}
+
+/// Whether `text` has an inherent `impl` block of the app (`impl MarblingApp {`, under
+/// any path); `impl eframe::App for MarblingApp` is the frame loop's, not one.
+fn impls_the_app(text: &str) -> bool {
+    text.lines().any(|l| {
+        let l = l.trim_start();
+        l.starts_with("impl ") && l.contains("MarblingApp {") && !l.contains(" for ")
+    })
+}
+
+/// The app's state is its features'; only `app.rs`, which holds them, has `impl
+/// MarblingApp` (STYLE.md: features owning their state).
+#[test]
+fn only_app_rs_implements_the_app() {
+    let src = root().join("crates/marbling-app/src");
+    let found: Vec<String> = sources(&src)
+        .into_iter()
+        .filter(|(_, text)| impls_the_app(text))
+        .map(|(p, _)| {
+            p.strip_prefix(&src)
+                .expect("under src")
+                .display()
+                .to_string()
+        })
+        .collect();
+    assert_eq!(found, ["app.rs"], "impl MarblingApp outside app.rs");
+}
+
+/// The check itself: an inherent impl under any path is found; a trait's is not.
+#[test]
+fn an_app_impl_is_found() {
+    assert!(impls_the_app("x\n    impl crate::app::MarblingApp {\n"));
+    assert!(impls_the_app("impl MarblingApp {"));
+    assert!(!impls_the_app("impl eframe::App for MarblingApp {"));
+    assert!(!impls_the_app("let app = MarblingApp::new();"));
+}
+
+/// No Rust source of the workspace passes 600 lines (one idea per file).
+#[test]
+fn no_source_file_passes_600_lines() {
+    let crates = root().join("crates");
+    let long: Vec<String> = sources(&crates)
+        .into_iter()
+        .map(|(p, text)| (p, text.lines().count()))
+        .filter(|(_, n)| *n > 600)
+        .map(|(p, n)| format!("{} ({n} lines)", p.display()))
+        .collect();
+    assert!(long.is_empty(), "over 600 lines: {long:?}");
+}

@@ -12,7 +12,7 @@ use marbling_noise::{
 };
 use marbling_noise::{GaborSpec, WhiteSpec};
 
-/// Named responses for `MarblingApp::control`.
+/// Named responses for `Frame::control` (the `data-controls` hook).
 pub type Controls = Vec<(&'static str, Response)>;
 
 /// A threshold's starting values: level 0, edge width 0.5 σ, not inverted.

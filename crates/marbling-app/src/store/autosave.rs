@@ -5,7 +5,7 @@
 //! A design of at most [`WRITE_AT_ONCE_OPS`] ops is written in the frame of the edit
 //! itself, before that frame is shown: whatever the screen shows survives a reload, a
 //! closed tab or a crash. Larger designs are written at most once every
-//! [`MIN_INTERVAL_MS`] (`MarblingApp::autosave`, below), the waiting one when the page is
+//! [`MIN_INTERVAL_MS`] (`Session::write_owed`, src/store/session.rs), the waiting one when the page is
 //! hidden or the window closes, and by the panic hook (src/automation/panic_guard.rs).
 
 use marbling_core::{Design, ImageBackground};
