@@ -20,11 +20,11 @@
 //! `?fast_paint=on|off` forces it either way (tests); the hook `data-fast-paint` says
 //! which it is and why.
 
-pub mod flat_mesh;
-pub mod flat_overlay;
-pub mod layer_shapes;
-pub mod panel_cache;
-pub mod preview_quality;
+pub(crate) mod flat_mesh;
+pub(crate) mod flat_overlay;
+pub(crate) mod layer_shapes;
+pub(crate) mod panel_cache;
+pub(crate) mod preview_quality;
 
 use marbling_core::Antialias;
 use panel_cache::{PanelCache, PanelGpu};
