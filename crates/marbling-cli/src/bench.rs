@@ -52,6 +52,20 @@ pub struct BenchArgs {
     /// walks counted in the frame (what the app pays for each new view).
     #[arg(long, value_delimiter = ',', default_value = "1")]
     pub zoom: Vec<f64>,
+    /// CPU only: the walk's vector kernels, comma separated: `auto` (the widest unit
+    /// found: AVX2 where the processor has it) and `off` (the build's baseline, SSE2 on
+    /// x86-64), each case run under each in turn (`auto,off`: the two side by side).
+    #[arg(long, value_enum, value_delimiter = ',', default_value = "auto")]
+    pub simd: Vec<SimdArg>,
+}
+
+/// Which vector kernels the CPU walk may use.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum SimdArg {
+    /// The widest vector unit the processor has.
+    Auto,
+    /// The build's baseline only.
+    Off,
 }
 
 /// A synthetic design mix.
@@ -104,13 +118,19 @@ pub fn run(args: &BenchArgs) -> Result<()> {
         args.aa.samples().len()
     );
     println!(
-        "{:<12} {:>7} {:>10} {:>18}",
-        "design", "ops", "seconds", "op-samples/s"
+        "{:<12} {:>7} {:>5} {:>10} {:>18}",
+        "design", "ops", "lanes", "seconds", "op-samples/s"
     );
     let Size { width, height } = args.size;
     for &m in &args.mix {
         let (name, mix) = m.mix();
-        for &n in &args.ops {
+        for (&n, &simd) in args
+            .ops
+            .iter()
+            .flat_map(|n| args.simd.iter().map(move |s| (n, s)))
+        {
+            marbling_core::set_wide_kernels(simd == SimdArg::Auto);
+            let lanes = marbling_core::vector_width();
             let design = random_design(7, width, height, n, mix);
             let opts = RenderOptions {
                 scale: 1.0,
@@ -124,18 +144,26 @@ pub fn run(args: &BenchArgs) -> Result<()> {
             }
             let work =
                 f64::from(width) * f64::from(height) * args.aa.samples().len() as f64 * n as f64;
-            println!("{name:<12} {n:>7} {best:>10.3} {:>18.3e}", work / best);
+            println!(
+                "{name:<12} {n:>7} {lanes:>5} {best:>10.3} {:>18.3e}",
+                work / best
+            );
             if m == MixArg::Stylus {
                 for cull in [true, false] {
                     let start = Instant::now();
                     walk_every_sample(&design, args.aa, cull);
                     let secs = start.elapsed().as_secs_f64();
                     let label = if cull { "walk culled" } else { "walk unculled" };
-                    println!("{label:<12} {n:>7} {secs:>10.3} {:>18.3e}", work / secs);
+                    println!(
+                        "{label:<12} {n:>7} {:>5} {secs:>10.3} {:>18.3e}",
+                        "",
+                        work / secs
+                    );
                 }
             }
         }
     }
+    marbling_core::set_wide_kernels(true);
     Ok(())
 }
 

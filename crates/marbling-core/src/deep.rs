@@ -291,7 +291,7 @@ fn rake_step(at: Point, s: f64, spacing: f64) -> RefStep {
     let j = (s / half).round();
     let kink = s - j * half;
     let shape = if j.rem_euclid(2.0) == 0.0 { 1.0 } else { -1.0 };
-    let distance = crate::compiled::rake_distance(s.abs(), spacing);
+    let distance = crate::compiled::rake_distance(s.abs(), spacing, 1.0 / spacing);
     kink_step(at, distance, kink, shape, half)
 }
 
@@ -396,7 +396,7 @@ mod tests {
     #[test]
     fn a_rakes_kink_formula_matches_the_folded_distance_within_its_reach() {
         let spacing = 17.0;
-        let d = |s: f64| crate::compiled::rake_distance(s.abs(), spacing);
+        let d = |s: f64| crate::compiled::rake_distance(s.abs(), spacing, 1.0 / spacing);
         for k in -300..=300 {
             let s = f64::from(k) * 0.731;
             let step = rake_step(Point::ZERO, s, spacing);

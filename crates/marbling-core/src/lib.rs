@@ -66,4 +66,4 @@ pub use surface::{
 };
 pub use validate::{FieldError, ValidationErrors};
 pub use view_spec::{ViewSpec, ViewSpecError};
-pub use walk::{Batch, Traced, Walker};
+pub use walk::{Batch, Traced, Walker, set_wide_kernels, vector_width};

@@ -277,6 +277,30 @@ fn bench_reports_throughput() {
         text.contains("comb-heavy") && text.contains("drop-heavy") && text.contains("op-samples/s"),
         "{text}"
     );
+    // `--simd auto,off`: each case twice, the second on the baseline's two lanes.
+    let o = marbling(
+        &[
+            "bench",
+            "--size",
+            "32",
+            "--ops",
+            "5",
+            "--mix",
+            "comb-heavy",
+            "--simd",
+            "auto,off",
+        ],
+        None,
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = stdout(&o);
+    let lanes: Vec<&str> = text
+        .lines()
+        .filter(|l| l.starts_with("comb-heavy"))
+        .filter_map(|l| l.split_whitespace().nth(2))
+        .collect();
+    assert_eq!(lanes.len(), 2, "{text}");
+    assert_eq!(lanes[1], "2", "{text}");
 }
 
 #[test]

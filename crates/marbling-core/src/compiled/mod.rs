@@ -14,10 +14,11 @@ use std::f64::consts::TAU;
 use std::sync::Arc;
 
 mod kernels;
+mod trig;
 use kernels::jiggle_forward;
 pub(crate) use kernels::{
-    comb_shift, drop_back, jiggle_back, rake_distance, rigid_move, swirl_turn, tines_shift,
-    wave_shift,
+    CombK, SwirlK, WaveK, comb_shift, drop_back, jiggle_back, rake_distance, rigid_move,
+    swirl_turn, tines_shift, wave_shift,
 };
 
 /// One op with its constants precomputed. Lengths are design pixels. A drop pattern
