@@ -8,7 +8,7 @@ CARGO ?= cargo
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 MARBLING := target/release/marbling
 
-.PHONY: run dist icons test test-long gallery audit setup-rust setup-gpu setup-web setup-browser fmt-check clippy unit wasm-check bench bench-gpu web browser-test noise-gallery bench-noise bench-noise-export bench-svg
+.PHONY: run dist icons test test-long gallery audit setup-rust setup-gpu setup-web setup-browser fmt-check clippy unit wasm-check bench bench-numpy bench-gpu web browser-test noise-gallery bench-noise bench-noise-export bench-svg
 
 # Must equal the wasm-bindgen version in Cargo.lock (see crates/marbling-app/Cargo.toml).
 WASM_BINDGEN_VERSION := 0.2.130
@@ -113,7 +113,12 @@ gallery: $(MARBLING)
 
 ## Throughput of the CPU reference renderer (see docs/BENCHMARKS.md).
 bench: $(MARBLING)
-	$(MARBLING) bench --ops 10,100,1000,10000 --aa none
+	$(MARBLING) bench --ops 10,100,1000,10000 --aa none --simd auto,off --repeat 3
+
+## The same walk in numpy beside `marbling bench` (numpy and pillow from pip).
+bench-numpy: $(MARBLING)
+	python3 -m pip install --quiet numpy pillow
+	python3 benches/numpy_walk.py --marbling $(MARBLING) --ops 1000
 
 ## GPU renderer: exact frames and live-editing frames (see docs/BENCHMARKS.md).
 ## The same commands run on lavapipe and on a real GPU.
