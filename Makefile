@@ -8,7 +8,7 @@ CARGO ?= cargo
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 MARBLING := target/release/marbling
 
-.PHONY: run dist icons test test-long gallery audit setup-rust setup-gpu setup-web setup-browser fmt-check clippy unit wasm-check bench bench-numpy bench-gpu web browser-test noise-gallery bench-noise bench-noise-export bench-svg
+.PHONY: run dist icons test test-long gallery audit setup-rust setup-gpu setup-web setup-browser fmt-check clippy unit wasm-check bench bench-numpy bench-gpu web browser-test noise-gallery bench-noise bench-noise-export bench-fastnoise2 bench-svg
 
 # Must equal the wasm-bindgen version in Cargo.lock (see crates/marbling-app/Cargo.toml).
 WASM_BINDGEN_VERSION := 0.2.130
@@ -138,6 +138,11 @@ noise-gallery: $(MARBLING)
 ## Noise throughput against fastnoise-lite, Gabor ms/megapixel (see docs/BENCHMARKS.md).
 bench-noise: setup-gpu
 	WGPU_BACKEND=vulkan $(CARGO) bench -p marbling-noise --bench noise
+
+## Whole grids beside FastNoise2 v1.1.1 built from its public source (CMake from pip; a
+## network or FASTNOISE2_SOURCE/FASTSIMD_SOURCE checkouts), one thread each.
+bench-fastnoise2:
+	benches/fastnoise2/run.sh
 
 ## Export time of a 4096² noise per type, CPU and GPU (see docs/BENCHMARKS.md).
 bench-noise-export: setup-gpu

@@ -2,13 +2,21 @@
 //! against the `fastnoise-lite` crate on the same grid in the same run, and Gabor
 //! milliseconds per megapixel on the CPU (one thread) and, when an adapter exists, on
 //! the GPU through `sample_noise` (set WGPU_BACKEND=vulkan for lavapipe).
+//!
+//! `-- --grids`: whole grids as FastNoise2 times them (`make bench-fastnoise2` prints
+//! its figures first): M points/s at one thread on a 2048² grid with 0.01 between
+//! points (a 128³ grid for 3D), through the row kernels and point by point.
 
 #[path = "../tests/it/common/gpu.rs"]
 mod gpu;
 
 use fastnoise_lite::{FastNoiseLite, FractalType, NoiseType};
 use marbling_noise::noise_gpu::NoiseGpu;
-use marbling_noise::{Fbm, FbmParams, Gabor, GaborKind, GaborParams, NoiseSpec, perlin2};
+use marbling_noise::rows::{perlin2_row, worley2_row};
+use marbling_noise::{
+    Fbm, FbmParams, Gabor, GaborKind, GaborParams, Metric, NoiseSpec, perlin2, perlin3, value2,
+    worley2,
+};
 use std::hint::black_box;
 use std::time::Instant;
 
@@ -47,7 +55,135 @@ fn ns_per_point_pair(
     (best_a * per, best_b * per)
 }
 
+/// Best-of-7 M points/s of `pass`, which computes `points` values.
+fn rate(points: usize, mut pass: impl FnMut() -> f32) -> f64 {
+    let mut best = f64::INFINITY;
+    for _ in 0..7 {
+        let start = Instant::now();
+        black_box(pass());
+        best = best.min(start.elapsed().as_secs_f64());
+    }
+    points as f64 / best / 1e6
+}
+
+/// The `--grids` table (see the module doc).
+fn grids() {
+    const SIDE: usize = 2048;
+    const STEP: f32 = 0.01;
+    println!(
+        "ours       simd {}, 1 thread, best of 7",
+        if is_avx2() { "AVX2" } else { "baseline" }
+    );
+    let xs: Vec<f32> = (0..SIDE).map(|i| (i as f32 + 0.5) * STEP).collect();
+    let ys = xs.clone();
+    let mut row = vec![0.0_f32; SIDE];
+    let mut row2 = vec![0.0_f32; SIDE];
+    let points = SIDE * SIDE;
+    let print = |name: &str, mps: f64| println!("ours       {name:<24} {mps:8.1} M points/s");
+    print(
+        "perlin2 (row kernel)",
+        rate(points, || {
+            ys.iter().fold(0.0, |acc, &y| {
+                perlin2_row(&xs, y, 1337, [0, 0], &mut row);
+                acc + row[7]
+            })
+        }),
+    );
+    print(
+        "perlin2 (point)",
+        rate(points, || {
+            ys.iter()
+                .map(|&y| xs.iter().map(|&x| perlin2(x, y, 1337)).sum::<f32>())
+                .sum()
+        }),
+    );
+    print(
+        "cellular2 (row kernel)",
+        rate(points, || {
+            ys.iter().fold(0.0, |acc, &y| {
+                worley2_row(&xs, y, 1337, Metric::Euclidean, [0, 0], &mut row, &mut row2);
+                acc + row[7]
+            })
+        }),
+    );
+    print(
+        "cellular2 (point)",
+        rate(points, || {
+            ys.iter()
+                .map(|&y| {
+                    xs.iter()
+                        .map(|&x| worley2(x, y, 1337, Metric::Euclidean, [0, 0])[0])
+                        .sum::<f32>()
+                })
+                .sum()
+        }),
+    );
+    let fbm = Fbm::new(FbmParams {
+        frequency: STEP,
+        octaves: 5,
+        seed: 1337,
+        ..FbmParams::default()
+    });
+    let pixels: Vec<f32> = (0..SIDE).map(|i| i as f32 + 0.5).collect();
+    print(
+        "fbm5-perlin2 (row kernel)",
+        rate(points, || {
+            pixels.iter().fold(0.0, |acc, &y| {
+                fbm.eval_row(&pixels, y, &mut row);
+                acc + row[7]
+            })
+        }),
+    );
+    print(
+        "fbm5-perlin2 (point)",
+        rate(points, || {
+            pixels
+                .iter()
+                .map(|&y| pixels.iter().map(|&x| fbm.eval(x, y)).sum::<f32>())
+                .sum()
+        }),
+    );
+    print(
+        "value2 (point)",
+        rate(points, || {
+            ys.iter()
+                .map(|&y| xs.iter().map(|&x| value2(x, y, 1337)).sum::<f32>())
+                .sum()
+        }),
+    );
+    let side3 = 128;
+    print(
+        "perlin3 (point)",
+        rate(side3 * side3 * side3, || {
+            let mut acc = 0.0;
+            for k in 0..side3 {
+                for j in 0..side3 {
+                    for &x in &xs[..side3] {
+                        acc += perlin3([x, xs[j], xs[k]], 1337);
+                    }
+                }
+            }
+            acc
+        }),
+    );
+}
+
+fn is_avx2() -> bool {
+    #[cfg(target_arch = "x86_64")]
+    {
+        std::arch::is_x86_feature_detected!("avx2")
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        false
+    }
+}
+
 fn main() {
+    if std::env::args().any(|a| a == "--grids") {
+        grids();
+        return;
+    }
     let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
     println!(
         "marbling-noise benchmark: {N}×{N} grid, best of {REPEAT}, 1 thread (nproc {threads})"

@@ -165,6 +165,47 @@ impl Fbm {
         s
     }
 
+    /// [`Fbm::sum`] along a row (`out[i]` at (xs[i], y)), bit for bit: Perlin octaves
+    /// through the row kernel ([`crate::rows::perlin2_row`]).
+    fn sum_row(&self, xs: &[f32], y: f32, out: &mut [f32]) {
+        let out = &mut out[..xs.len()];
+        out.fill(0.0);
+        let mut scaled = vec![0.0; xs.len()];
+        let mut n = vec![0.0; xs.len()];
+        for o in &self.octaves[..self.count] {
+            let p = match self.params.period {
+                None => [0, 0],
+                Some(_) => [o.period, o.period],
+            };
+            for (s, &x) in scaled.iter_mut().zip(xs) {
+                *s = x * o.frequency;
+            }
+            match self.params.basis {
+                Basis::Perlin => {
+                    crate::rows::perlin2_row(&scaled, y * o.frequency, o.seed, p, &mut n)
+                }
+                Basis::Value => {
+                    let p = [o.period, o.period];
+                    for (v, &u) in n.iter_mut().zip(&scaled) {
+                        *v = value2_periodic(u, y * o.frequency, o.seed, p);
+                    }
+                }
+            }
+            for (s, &v) in out.iter_mut().zip(&n) {
+                *s += o.amplitude * v;
+            }
+        }
+    }
+
+    /// [`Fbm::eval`] along a row: `out[i]` = `eval(xs[i], y)`, bit for bit, several
+    /// times faster.
+    pub fn eval_row(&self, xs: &[f32], y: f32, out: &mut [f32]) {
+        self.sum_row(xs, y, out);
+        for v in &mut out[..xs.len()] {
+            *v *= self.inv_std;
+        }
+    }
+
     /// The fBm at (x, y) in output pixels divided by the sum of amplitudes, so it lies
     /// in [−1, 1] whatever the parameters.
     #[inline]

@@ -35,6 +35,7 @@ mod phasor;
 mod ramp;
 pub mod ranges;
 mod render;
+pub mod rows;
 mod spec;
 mod spec_edit;
 mod spec_reader;

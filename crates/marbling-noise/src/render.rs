@@ -14,7 +14,7 @@ use crate::spec::{BlendBase, DecayValue, DriveSource, NoiseSpec, Source, Transfe
 use crate::spec::{CurlSpec, WhiteSpec, WorleySpec};
 use crate::transfer::{SplineDecayTable, hsv_value_blend};
 use crate::white::white2;
-use crate::worley::{Metric, WorleyFeature, worley_normalised};
+use crate::worley::{Metric, WORLEY_MOMENTS, WorleyFeature, worley_normalised};
 use std::sync::Arc;
 
 /// Largest output side accepted by [`Renderer::new`].
@@ -77,6 +77,24 @@ impl Field for Worley {
             [self.period, self.period],
         )
     }
+
+    fn sample_row(&self, xs: &[f32], y: f32, out: &mut [f32]) {
+        let f = self.frequency;
+        let scaled: Vec<f32> = xs.iter().map(|&x| x * f).collect();
+        let mut f2 = vec![0.0; xs.len()];
+        let p = [self.period, self.period];
+        crate::rows::worley2_row(&scaled, y * f, self.seed, self.metric, p, out, &mut f2);
+        let [mean, std] = WORLEY_MOMENTS[self.feature as usize][self.metric as usize];
+        for (o, b) in out.iter_mut().zip(f2).take(xs.len()) {
+            // As `worley_normalised`.
+            let d = match self.feature {
+                WorleyFeature::F1 => *o,
+                WorleyFeature::F2 => b,
+                WorleyFeature::F2MinusF1 => b - *o,
+            };
+            *o = (d - mean) / std;
+        }
+    }
 }
 
 struct White {
@@ -93,6 +111,10 @@ impl Field for White {
 impl Field for Fbm {
     fn sample(&self, x: f32, y: f32) -> f32 {
         self.eval(x, y)
+    }
+
+    fn sample_row(&self, xs: &[f32], y: f32, out: &mut [f32]) {
+        self.eval_row(xs, y, out);
     }
 }
 
@@ -335,23 +357,27 @@ impl Renderer {
         })
     }
 
+    /// Noise n at (x, y) through a node's transfer (or the default grey map).
+    fn transfer(&self, transfer: Option<&Transfer>, n: f32, x: f32, y: f32) -> f32 {
+        match transfer {
+            None => noise_to_grey(n),
+            Some(Transfer::Threshold(t)) => t.apply(n),
+            Some(Transfer::SplineDecay(v)) => {
+                let v = match v {
+                    DecayValue::Constant(v) => *v,
+                    DecayValue::RampX => x / self.frame[0],
+                    DecayValue::Data(r) => r.sample(x, y, self.frame),
+                };
+                self.decay.as_ref().map_or(0.0, |t| t.decay(v).apply(n))
+            }
+            Some(Transfer::Curve(c)) => c.apply(n),
+        }
+    }
+
     fn node_intensity(&self, node: &Node, x: f32, y: f32) -> f32 {
         match node {
             Node::Noise { field, transfer } => {
-                let n = field.sample(x, y);
-                match transfer {
-                    None => noise_to_grey(n),
-                    Some(Transfer::Threshold(t)) => t.apply(n),
-                    Some(Transfer::SplineDecay(v)) => {
-                        let v = match v {
-                            DecayValue::Constant(v) => *v,
-                            DecayValue::RampX => x / self.frame[0],
-                            DecayValue::Data(r) => r.sample(x, y, self.frame),
-                        };
-                        self.decay.as_ref().map_or(0.0, |t| t.decay(v).apply(n))
-                    }
-                    Some(Transfer::Curve(c)) => c.apply(n),
-                }
+                self.transfer(transfer.as_ref(), field.sample(x, y), x, y)
             }
             Node::Product(nodes) => nodes.iter().map(|n| self.node_intensity(n, x, y)).product(),
             Node::Layered { base, layers } => {
@@ -367,16 +393,74 @@ impl Renderer {
         }
     }
 
+    /// [`Renderer::node_intensity`] at each point of a row (`out[i]` at (xs[i], y)),
+    /// bit for bit, through the fields' row kernels.
+    fn node_intensity_row(&self, node: &Node, xs: &[f32], y: f32, out: &mut [f32]) {
+        match node {
+            Node::Noise { field, transfer } => {
+                field.sample_row(xs, y, out);
+                for (o, &x) in out.iter_mut().zip(xs) {
+                    *o = self.transfer(transfer.as_ref(), *o, x, y);
+                }
+            }
+            Node::Product(nodes) => {
+                out.fill(1.0);
+                let mut v = vec![0.0; xs.len()];
+                for n in nodes {
+                    self.node_intensity_row(n, xs, y, &mut v);
+                    for (o, v) in out.iter_mut().zip(&v) {
+                        *o *= v;
+                    }
+                }
+            }
+            Node::Layered { base, layers } => {
+                self.node_intensity_row(base, xs, y, out);
+                let (mut b, mut m) = (vec![0.0; xs.len()], vec![0.0; xs.len()]);
+                for l in layers {
+                    self.node_intensity_row(&l.node, xs, y, &mut b);
+                    match &l.mask {
+                        Some(mask) => self.node_intensity_row(mask, xs, y, &mut m),
+                        None => m.fill(0.0),
+                    }
+                    for ((c, b), m) in out.iter_mut().zip(&b).zip(&m) {
+                        *c = l.combine.apply(*c, *b, *m, l.weight);
+                    }
+                }
+            }
+        }
+    }
+
     /// Intensity in [0, 1] at (x, y), output pixels.
     #[must_use]
     pub fn intensity(&self, x: f32, y: f32) -> f32 {
         self.node_intensity(&self.root, x, y)
     }
 
+    /// [`Renderer::intensity`] at each point of a row: `out[i]` at (xs[i], y), bit for
+    /// bit, several times faster for Perlin fBm and Worley.
+    pub fn intensity_row(&self, xs: &[f32], y: f32, out: &mut [f32]) {
+        self.node_intensity_row(&self.root, xs, y, &mut out[..xs.len()]);
+    }
+
     /// The sRGB colour (components in [0, 1]) at (x, y).
     #[must_use]
     pub fn color(&self, x: f32, y: f32) -> [f32; 3] {
-        let t = self.intensity(x, y);
+        self.color_of(self.intensity(x, y), x, y)
+    }
+
+    /// [`Renderer::color`] at each point of a row, bit for bit.
+    #[must_use]
+    pub fn color_row(&self, xs: &[f32], y: f32) -> Vec<[f32; 3]> {
+        let mut t = vec![0.0; xs.len()];
+        self.intensity_row(xs, y, &mut t);
+        t.iter()
+            .zip(xs)
+            .map(|(&t, &x)| self.color_of(t, x, y))
+            .collect()
+    }
+
+    /// The colour of intensity `t` at (x, y): the blend, the palette or grey.
+    fn color_of(&self, t: f32, x: f32, y: f32) -> [f32; 3] {
         if let Some(b) = &self.spec.blend {
             let base = match &b.base {
                 BlendBase::Color(c) => *c,
@@ -391,13 +475,18 @@ impl Renderer {
         }
     }
 
+    /// The x of each pixel centre of a row: i + 0.5.
+    fn centres(&self) -> Vec<f32> {
+        (0..self.size).map(|i| i as f32 + 0.5).collect()
+    }
+
     /// Pixels of rows `rows` (row-major), 8-bit sRGB.
     #[must_use]
     pub fn render_rows(&self, rows: std::ops::Range<u32>) -> Vec<[u8; 3]> {
         let mut out = Vec::with_capacity(rows.len() * self.size as usize);
+        let xs = self.centres();
         for j in rows {
-            for i in 0..self.size {
-                let c = self.color(i as f32 + 0.5, j as f32 + 0.5);
+            for c in self.color_row(&xs, j as f32 + 0.5) {
                 out.push(c.map(|v| (v.clamp(0.0, 1.0) * 255.0).round() as u8));
             }
         }
@@ -423,13 +512,15 @@ impl Renderer {
         let grey = self.greyscale();
         let channels = if grey { 1 } else { 3 };
         let mut out = Vec::with_capacity(self.size as usize * channels * depth.bytes());
-        for i in 0..self.size {
-            let (x, y) = (i as f32 + 0.5, j as f32 + 0.5);
-            let c = if grey {
-                [self.intensity(x, y); 3]
-            } else {
-                self.color(x, y)
-            };
+        let (xs, y) = (self.centres(), j as f32 + 0.5);
+        let colors = if grey {
+            let mut t = vec![0.0; xs.len()];
+            self.intensity_row(&xs, y, &mut t);
+            t.into_iter().map(|t| [t; 3]).collect()
+        } else {
+            self.color_row(&xs, y)
+        };
+        for c in colors {
             for &v in &c[..channels] {
                 let v = v.clamp(0.0, 1.0);
                 match depth {
@@ -477,11 +568,14 @@ impl Renderer {
 #[must_use]
 pub fn sample_grid(spec: &NoiseSpec, size: u32) -> Option<Vec<f32>> {
     let f = noise_field(spec, size)?;
-    let mut out = Vec::with_capacity((size * size) as usize);
-    for j in 0..size {
-        for i in 0..size {
-            out.push(f.sample(i as f32 + 0.5, j as f32 + 0.5));
-        }
+    let n = size as usize;
+    if n == 0 {
+        return Some(Vec::new());
+    }
+    let xs: Vec<f32> = (0..size).map(|i| i as f32 + 0.5).collect();
+    let mut out = vec![0.0; n * n];
+    for (j, row) in out.chunks_exact_mut(n).enumerate() {
+        f.sample_row(&xs, j as f32 + 0.5, row);
     }
     Some(out)
 }

@@ -7,6 +7,7 @@ mod gabor;
 mod gpu;
 mod noises;
 mod phasor;
+mod rows;
 mod snapshots;
 mod spec_errors;
 mod wgsl;
