@@ -100,21 +100,53 @@ fn cell_span(xs: &[f32]) -> Option<(i32, i32)> {
         .then_some((lo, hi))
 }
 
-/// The position of each point of a chunk in its cell, and the cell all lanes share
-/// (`None` when they do not). `x − ⌊x⌋` equals the point functions' `x − (⌊x⌋ as i32) as
-/// f32` for every x whose cell [`cell_span`] admits (|⌊x⌋| < 2³¹, where the integer
-/// converts back exactly), and NaN for NaN; comparing floors in f32 keeps the loop
-/// free of conversions to integers.
+/// Most cells a chunk may cross and still have its lattice numbers chosen by selects
+/// (one pass per cell) rather than read per lane.
+const FEW: usize = 3;
+
+/// Which cells a chunk's points fall in.
+enum Cells {
+    /// All lanes in cell `ix`.
+    One(i32),
+    /// Lane k in cell `ix + step[k]`, steps in 0..=`span` (span ≤ [`FEW`]).
+    Few {
+        ix: i32,
+        span: usize,
+        step: [f32; LANES],
+    },
+    /// Scattered (or NaN): read per lane.
+    Many,
+}
+
+/// The position of each point of a chunk in its cell, and its cells. `x − ⌊x⌋` equals
+/// the point functions' `x − (⌊x⌋ as i32) as f32` for every x whose cell [`cell_span`]
+/// admits (|⌊x⌋| < 2³¹, where the integer converts back exactly), and NaN for NaN;
+/// comparing floors in f32 keeps the loop free of conversions to integers.
 #[inline(always)]
-fn chunk_cells(xs: &[f32; LANES]) -> ([f32; LANES], Option<i32>) {
-    let mut floor = [0_f32; LANES];
+fn chunk_cells(xs: &[f32; LANES]) -> ([f32; LANES], Cells) {
+    let mut step = [0_f32; LANES];
     let mut fx = [0_f32; LANES];
+    let base = xs[0].floor();
+    let (mut inside, mut span) = (true, 0.0_f32);
     for k in 0..LANES {
-        floor[k] = xs[k].floor();
-        fx[k] = xs[k] - floor[k];
+        let floor = xs[k].floor();
+        fx[k] = xs[k] - floor;
+        step[k] = floor - base;
+        inside &= step[k] >= 0.0 && step[k] <= FEW as f32;
+        span = span.max(step[k]);
     }
-    let same = floor.iter().fold(true, |same, &f| same & (f == floor[0]));
-    (fx, same.then(|| floor_i32(xs[0])))
+    let cells = if !inside {
+        Cells::Many
+    } else if span == 0.0 {
+        Cells::One(floor_i32(xs[0]))
+    } else {
+        Cells::Few {
+            ix: floor_i32(xs[0]),
+            span: span as usize,
+            step,
+        }
+    };
+    (fx, cells)
 }
 
 /// The gradients of a row's two lattice lines: entry c − lo holds those of corner column
@@ -205,28 +237,53 @@ fn perlin2_row_impl(xs: &[f32], y: f32, seed: u32, period: [i32; 2], out: &mut [
     let mut outs = out.chunks_exact_mut(LANES);
     for (x, o) in (&mut chunks).zip(&mut outs) {
         let x: &[f32; LANES] = x.try_into().unwrap_or(&[0.0; LANES]);
-        let (fx, same) = chunk_cells(x);
-        let r = if let Some(ix) = same {
-            let c = (ix - lo) as usize;
-            let g = [
-                [t.gx0[c], t.gy0[c]],
-                [t.gx0[c + 1], t.gy0[c + 1]],
-                [t.gx1[c], t.gy1[c]],
-                [t.gx1[c + 1], t.gy1[c + 1]],
-            ];
-            perlin_chunk(&fx, fy, v, |corner, axis, _| g[corner][axis])
-        } else {
-            let mut g: Corners = [[[0.0; LANES]; 2]; 4];
-            for (k, &x) in x.iter().enumerate() {
-                let c = (floor_i32(x) - lo) as usize;
-                let cols = [(&t.gx0, &t.gy0, c), (&t.gx0, &t.gy0, c + 1)];
-                let rows = [(&t.gx1, &t.gy1, c), (&t.gx1, &t.gy1, c + 1)];
-                for (corner, (tx, ty, c)) in cols.into_iter().chain(rows).enumerate() {
-                    g[corner][0][k] = tx[c];
-                    g[corner][1][k] = ty[c];
-                }
+        let (fx, cells) = chunk_cells(x);
+        // The gradients of corner `corner` (0..4, `perlin_from`'s order) of cell c − lo.
+        let grad = |c: usize, corner: usize| {
+            let c = c + (corner & 1);
+            if corner < 2 {
+                [t.gx0[c], t.gy0[c]]
+            } else {
+                [t.gx1[c], t.gy1[c]]
             }
-            perlin_chunk(&fx, fy, v, |corner, axis, k| g[corner][axis][k])
+        };
+        let r = match cells {
+            Cells::One(ix) => {
+                let c = (ix - lo) as usize;
+                let g: [[f32; 2]; 4] = std::array::from_fn(|corner| grad(c, corner));
+                perlin_chunk(&fx, fy, v, |corner, axis, _| g[corner][axis])
+            }
+            Cells::Few { ix, span, step } => {
+                let c = (ix - lo) as usize;
+                let mut g: Corners = [[[0.0; LANES]; 2]; 4];
+                for j in 0..=span {
+                    for (corner, gc) in g.iter_mut().enumerate() {
+                        let here = grad(c + j, corner);
+                        for (axis, ga) in gc.iter_mut().enumerate() {
+                            for k in 0..LANES {
+                                ga[k] = if step[k] == j as f32 {
+                                    here[axis]
+                                } else {
+                                    ga[k]
+                                };
+                            }
+                        }
+                    }
+                }
+                perlin_chunk(&fx, fy, v, |corner, axis, k| g[corner][axis][k])
+            }
+            Cells::Many => {
+                let mut g: Corners = [[[0.0; LANES]; 2]; 4];
+                for (k, &x) in x.iter().enumerate() {
+                    let c = (floor_i32(x) - lo) as usize;
+                    for (corner, gc) in g.iter_mut().enumerate() {
+                        let here = grad(c, corner);
+                        gc[0][k] = here[0];
+                        gc[1][k] = here[1];
+                    }
+                }
+                perlin_chunk(&fx, fy, v, |corner, axis, k| g[corner][axis][k])
+            }
         };
         o[..LANES].copy_from_slice(&r);
     }
@@ -315,21 +372,41 @@ fn worley_rows(
     let mut o2 = f2.chunks_exact_mut(LANES);
     for ((x, a), b) in (&mut chunks).zip(&mut o1).zip(&mut o2) {
         let x: &[f32; LANES] = x.try_into().unwrap_or(&[0.0; LANES]);
-        let (fx, same) = chunk_cells(x);
-        let (m1, m2) = if let Some(ix) = same {
-            let c = (ix - lo) as usize;
-            let p: [[(f32, f32); 3]; 3] = std::array::from_fn(|dj| {
-                std::array::from_fn(|di| (t.rx[dj][c + di], t.ry[dj][c + di]))
-            });
-            worley_chunk(&fx, fy, dist, |dj, di, _| p[dj][di])
-        } else {
-            let mut cells = [0_usize; LANES];
-            for (c, &x) in cells.iter_mut().zip(x) {
-                *c = (floor_i32(x) - lo) as usize;
+        let (fx, cells) = chunk_cells(x);
+        let (m1, m2) = match cells {
+            Cells::One(ix) => {
+                let c = (ix - lo) as usize;
+                let p: [[(f32, f32); 3]; 3] = std::array::from_fn(|dj| {
+                    std::array::from_fn(|di| (t.rx[dj][c + di], t.ry[dj][c + di]))
+                });
+                worley_chunk(&fx, fy, dist, |dj, di, _| p[dj][di])
             }
-            worley_chunk(&fx, fy, dist, |dj, di, k| {
-                (t.rx[dj][cells[k] + di], t.ry[dj][cells[k] + di])
-            })
+            Cells::Few { ix, span, step } => {
+                let c = (ix - lo) as usize;
+                let mut p = [[([0.0; LANES], [0.0; LANES]); 3]; 3];
+                for j in 0..=span {
+                    for (dj, row) in p.iter_mut().enumerate() {
+                        for (di, (px, py)) in row.iter_mut().enumerate() {
+                            let (rx, ry) = (t.rx[dj][c + j + di], t.ry[dj][c + j + di]);
+                            for k in 0..LANES {
+                                let here = step[k] == j as f32;
+                                px[k] = if here { rx } else { px[k] };
+                                py[k] = if here { ry } else { py[k] };
+                            }
+                        }
+                    }
+                }
+                worley_chunk(&fx, fy, dist, |dj, di, k| (p[dj][di].0[k], p[dj][di].1[k]))
+            }
+            Cells::Many => {
+                let mut cells = [0_usize; LANES];
+                for (c, &x) in cells.iter_mut().zip(x) {
+                    *c = (floor_i32(x) - lo) as usize;
+                }
+                worley_chunk(&fx, fy, dist, |dj, di, k| {
+                    (t.rx[dj][cells[k] + di], t.ry[dj][cells[k] + di])
+                })
+            }
         };
         for k in 0..LANES {
             a[k] = finish(m1[k]);

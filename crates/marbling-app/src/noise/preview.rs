@@ -61,13 +61,13 @@ pub fn picture(
     let w = ((extent[0] * scale).round() as usize).max(1);
     let h = ((extent[1] * scale).round() as usize).max(1);
     let mut pixels = Vec::with_capacity(w * h);
+    let xs: Vec<f32> = (0..w)
+        .map(|i| (i as f32 + 0.5) * extent[0] / w as f32)
+        .collect();
     for j in 0..h {
-        for i in 0..w {
-            let x = (i as f32 + 0.5) * extent[0] / w as f32;
-            let y = (j as f32 + 0.5) * extent[1] / h as f32;
-            let [r, g, b] = renderer
-                .color(x, y)
-                .map(|v| (v.clamp(0.0, 1.0) * 255.0).round() as u8);
+        let y = (j as f32 + 0.5) * extent[1] / h as f32;
+        for c in renderer.color_row(&xs, y) {
+            let [r, g, b] = c.map(|v| (v.clamp(0.0, 1.0) * 255.0).round() as u8);
             pixels.push(Color32::from_rgb(r, g, b));
         }
     }

@@ -45,11 +45,12 @@ impl Heights {
         let start = now();
         while !self.done() {
             let j = self.heights.len() / GRID;
-            for i in 0..GRID {
-                let (x, y) = ((i as f32 + 0.5) * self.cell, (j as f32 + 0.5) * self.cell);
-                self.heights.push(self.renderer.intensity(x, y));
-                self.colors.push(self.renderer.color(x, y));
-            }
+            let xs: Vec<f32> = (0..GRID).map(|i| (i as f32 + 0.5) * self.cell).collect();
+            let y = (j as f32 + 0.5) * self.cell;
+            let mut row = vec![0.0; GRID];
+            self.renderer.intensity_row(&xs, y, &mut row);
+            self.heights.extend(row);
+            self.colors.extend(self.renderer.color_row(&xs, y));
             if now() - start > budget_ms {
                 break;
             }
