@@ -5,7 +5,7 @@ use crate::backend::Backend;
 use crate::size::Size;
 use anyhow::{Result, bail};
 use clap::{Args, ValueEnum};
-use marbling_core::synth::{Mix, random_design};
+use marbling_core::synth::{KINDS, Mix, random_design};
 use marbling_core::{Antialias, RenderOptions, render};
 use std::time::Instant;
 
@@ -57,6 +57,11 @@ pub struct BenchArgs {
     /// x86-64), each case run under each in turn (`auto,off`: the two side by side).
     #[arg(long, value_enum, value_delimiter = ',', default_value = "auto")]
     pub simd: Vec<SimdArg>,
+    /// A cost profile per op kind instead of `--mix`: for each of the 14 kinds a design
+    /// of one drop and then `--ops` − 1 ops of that kind, named by the op's type.
+    /// Samples that meet a drop's ink stop there, so drop-like kinds count work not done.
+    #[arg(long)]
+    pub per_kind: bool,
 }
 
 /// Which vector kernels the CPU walk may use.
@@ -83,6 +88,21 @@ pub enum MixArg {
     /// A few drop patterns, then free-hand styli (on the CPU also timed walking with and
     /// without the stylus's culling).
     Stylus,
+}
+
+/// The designs a run measures, with their names: the `--mix` list, or with
+/// `--per-kind` one design mix per op kind.
+pub fn cases(args: &BenchArgs) -> Vec<(&'static str, Mix)> {
+    if args.per_kind {
+        (0..KINDS)
+            .map(|k| {
+                let d = random_design(7, 64, 64, 2, Mix::Only(k));
+                (d.ops[1].type_name(), Mix::Only(k))
+            })
+            .collect()
+    } else {
+        args.mix.iter().map(|m| m.mix()).collect()
+    }
 }
 
 impl MixArg {
@@ -122,8 +142,7 @@ pub fn run(args: &BenchArgs) -> Result<()> {
         "design", "ops", "lanes", "seconds", "op-samples/s"
     );
     let Size { width, height } = args.size;
-    for &m in &args.mix {
-        let (name, mix) = m.mix();
+    for (name, mix) in cases(args) {
         for (&n, &simd) in args
             .ops
             .iter()
@@ -148,7 +167,7 @@ pub fn run(args: &BenchArgs) -> Result<()> {
                 "{name:<12} {n:>7} {lanes:>5} {best:>10.3} {:>18.3e}",
                 work / best
             );
-            if m == MixArg::Stylus {
+            if mix == Mix::Stylus {
                 for cull in [true, false] {
                     let start = Instant::now();
                     walk_every_sample(&design, args.aa, cull);

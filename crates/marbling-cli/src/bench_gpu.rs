@@ -60,8 +60,7 @@ pub fn exact(args: &BenchArgs) -> Result<()> {
     let (w, h) = (args.size.width, args.size.height);
     let target = gpu.target(w, h);
     let warm = gpu.target(8, 8);
-    for &m in &args.mix {
-        let (name, mix) = m.mix();
+    for (name, mix) in crate::bench::cases(args) {
         for &n in &args.ops {
             let design = random_design(7, w, h, n, mix);
             let mut prepared = gpu.prepare(&design)?;

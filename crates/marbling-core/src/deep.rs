@@ -12,7 +12,7 @@
 //! step's `reach` says how far δ may move s before another kink could be crossed. Past a
 //! reach the walk goes on in absolute f32 from the step's `at`.
 
-use crate::compiled::{CompiledOp, drop_back, jiggle_back};
+use crate::compiled::{CombKernel, CompiledOp, SwirlKernel, WaveKernel, drop_back, jiggle_back};
 use crate::ops::solve_kepler;
 use crate::walk::Walker;
 use kurbo::{Point, Vec2};
@@ -176,14 +176,14 @@ fn step_back(op: &CompiledOp, r: Point, out: &mut Vec<RefStep>) -> Point {
                 moved
             }
         }
-        CompiledOp::Comb {
+        CompiledOp::Comb(CombKernel {
             ax,
             ay,
             nx,
             ny,
             spacing,
             ..
-        } => {
+        }) => {
             let s = (r.x - ax) * nx + (r.y - ay) * ny;
             out.push(if spacing > 0.0 {
                 rake_step(r, s, spacing)
@@ -204,21 +204,21 @@ fn step_back(op: &CompiledOp, r: Point, out: &mut Vec<RefStep>) -> Point {
             out.push(tines_step(r, s, offsets));
             inverse(op, r)
         }
-        CompiledOp::Wave {
+        CompiledOp::Wave(WaveKernel {
             nx, ny, k, phase, ..
-        } => {
+        }) => {
             let theta = (k * (r.x * nx + r.y * ny) + phase).rem_euclid(TAU);
             out.push(RefStep::Wave { at: r, theta });
             inverse(op, r)
         }
-        CompiledOp::Swirl {
+        CompiledOp::Swirl(SwirlKernel {
             cx,
             cy,
             r: ring_radius,
             al,
             lambda,
             vortex,
-        } => {
+        }) => {
             let d = r - Point::new(cx, cy);
             let rho = d.hypot();
             let ring = if vortex { rho } else { rho - ring_radius };

@@ -51,7 +51,13 @@ pub enum Mix {
     AllTypes,
     /// A few drop patterns first, then free-hand styli (one tip or several).
     Stylus,
+    /// One drop first, then only ops of generator kind `k` (`0..KINDS`; the op's
+    /// `type_name` says which): a per-kind cost profile.
+    Only(u8),
 }
+
+/// How many op kinds the generator makes ([`Mix::Only`]'s range).
+pub const KINDS: u8 = 14;
 
 const PALETTE: [Rgb8; 6] = [
     Rgb8::new(0x1d, 0x35, 0x57),
@@ -77,6 +83,8 @@ pub fn random_design(seed: u64, width: u32, height: u32, n_ops: usize, mix: Mix)
             Mix::AllTypes => rng.below(14) as usize,
             Mix::Stylus if i < n_ops / 10 + 1 => 10,
             Mix::Stylus => 13,
+            Mix::Only(_) if i == 0 => 0,
+            Mix::Only(k) => usize::from(k.min(KINDS - 1)),
         };
         let center = Point::new(rng.range(0.0, w), rng.range(0.0, h));
         let color = PALETTE[rng.below(PALETTE.len() as u64) as usize];
@@ -238,4 +246,28 @@ pub fn test_photo(seed: u64, width: u32, height: u32) -> crate::RgbaImage {
         }
     }
     img
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn each_kind_makes_one_op_type_and_the_kinds_differ() {
+        let mut names = Vec::new();
+        for k in 0..KINDS {
+            let d = random_design(3, 200, 100, 12, Mix::Only(k));
+            assert_eq!(d.ops[0].type_name(), "drop", "kind {k} starts with a drop");
+            let name = d.ops[1].type_name();
+            assert!(
+                d.ops[1..].iter().all(|op| op.type_name() == name),
+                "kind {k}: {:?}",
+                d.ops.iter().map(Op::type_name).collect::<Vec<_>>()
+            );
+            names.push(name);
+        }
+        names.sort_unstable();
+        names.dedup();
+        assert_eq!(names.len(), usize::from(KINDS), "{names:?}");
+    }
 }

@@ -11,10 +11,7 @@
 //! enabled for the wasm32 target in `.cargo/config.toml`).
 
 use crate::Op;
-use crate::compiled::{
-    CombK, CompiledOp, SwirlK, WaveK, comb_shift, drop_back, jiggle_back, rigid_move, swirl_turn,
-    tines_shift, wave_shift,
-};
+use crate::compiled::{CompiledOp, drop_back, jiggle_back, tines_shift};
 use kurbo::Point;
 use std::sync::atomic::{AtomicBool, Ordering};
 
@@ -144,10 +141,10 @@ impl Walker {
                         (x, y) = drop_back(cx, cy, r2, dx, dy, d2);
                     }
                 }
-                CompiledOp::Comb { .. } => (x, y) = comb_shift(x, y, s, -1.0),
-                CompiledOp::Wave { .. } => (x, y) = wave_shift(x, y, s, -1.0),
-                CompiledOp::Swirl { .. } => (x, y) = swirl_turn(x, y, s, -1.0),
-                CompiledOp::Rigid { .. } => (x, y) = rigid_move(x, y, s, -1.0),
+                CompiledOp::Comb(ref c) => (x, y) = c.apply(x, y, -1.0),
+                CompiledOp::Wave(ref w) => (x, y) = w.shift(x, y, -1.0),
+                CompiledOp::Swirl(ref w) => (x, y) = w.apply(x, y, -1.0),
+                CompiledOp::Rigid(ref r) => (x, y) = r.apply(x, y, -1.0),
                 CompiledOp::Tines { .. } => (x, y) = tines_shift(x, y, s, -1.0),
                 CompiledOp::Jiggle { .. } | CompiledOp::Stylus { .. } | CompiledOp::Flow { .. } => {
                     let q = s.inverse(Point::new(x, y)).unwrap_or_default();
@@ -284,22 +281,16 @@ impl Walker {
                 }
                 // The op's constants taken out before the loop, and its variant chosen
                 // once: the loop body then has no branch and vectorises.
-                CompiledOp::Comb { .. } => match CombK::of(s) {
-                    Some(c) if c.spacing > 0.0 => each!(xs, ys, |x, y| c.shift::<true>(x, y, -1.0)),
-                    Some(c) => each!(xs, ys, |x, y| c.shift::<false>(x, y, -1.0)),
-                    None => {}
-                },
-                CompiledOp::Wave { .. } => {
-                    if let Some(w) = WaveK::of(s) {
-                        each!(xs, ys, |x, y| w.shift(x, y, -1.0));
-                    }
+                CompiledOp::Comb(c) if c.spacing > 0.0 => {
+                    each!(xs, ys, |x, y| c.shift::<true>(x, y, -1.0));
                 }
-                CompiledOp::Swirl { .. } => match SwirlK::of(s) {
-                    Some(w) if w.vortex => each!(xs, ys, |x, y| w.turn::<true>(x, y, -1.0)),
-                    Some(w) => each!(xs, ys, |x, y| w.turn::<false>(x, y, -1.0)),
-                    None => {}
-                },
-                CompiledOp::Rigid { .. } => each!(xs, ys, |x, y| rigid_move(x, y, s, -1.0)),
+                CompiledOp::Comb(c) => each!(xs, ys, |x, y| c.shift::<false>(x, y, -1.0)),
+                CompiledOp::Wave(w) => each!(xs, ys, |x, y| w.shift(x, y, -1.0)),
+                CompiledOp::Swirl(w) if w.vortex => {
+                    each!(xs, ys, |x, y| w.turn::<true>(x, y, -1.0));
+                }
+                CompiledOp::Swirl(w) => each!(xs, ys, |x, y| w.turn::<false>(x, y, -1.0)),
+                CompiledOp::Rigid(r) => each!(xs, ys, |x, y| r.apply(x, y, -1.0)),
                 CompiledOp::Tines { .. } => each!(xs, ys, |x, y| tines_shift(x, y, s, -1.0)),
                 CompiledOp::Jiggle { .. } => each!(xs, ys, |x, y| {
                     let q = jiggle_back(Point::new(x, y), s);

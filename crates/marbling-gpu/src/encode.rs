@@ -9,7 +9,9 @@
 //! [`OpKind`] code; a drop pattern is one record per drop, a finite comb and a stylus
 //! are a header record (newest) with data records before it ([`records`]).
 
-use marbling_core::{CompiledOp, Op, OpKind, Rgb8};
+use marbling_core::{
+    CombKernel, CompiledOp, Op, OpKind, Rgb8, RigidKernel, SwirlKernel, WaveKernel,
+};
 use std::f64::consts::TAU;
 
 /// Texels (RGBA f32) per record in the op texture.
@@ -64,7 +66,7 @@ impl GpuOp {
             CompiledOp::Disc {
                 cx, cy, r2, color, ..
             } => ([kind, f(cx), f(cy), f(r2)], color_texel(color)),
-            CompiledOp::Comb {
+            CompiledOp::Comb(CombKernel {
                 ax,
                 ay,
                 mx,
@@ -73,38 +75,38 @@ impl GpuOp {
                 lambda,
                 spacing,
                 ..
-            } => (
+            }) => (
                 [kind, f(ax), f(ay), f(mx)],
                 [f(my), f(al), f(lambda), f(spacing)],
             ),
-            CompiledOp::Wave {
+            CompiledOp::Wave(WaveKernel {
                 mx,
                 my,
                 amp,
                 k,
                 phase,
                 ..
-            } => (
+            }) => (
                 [kind, f(mx), f(my), f(amp)],
                 // The phase reduced to [0, 2π) keeps f32 precision in the sine.
                 [f(k), f(phase.rem_euclid(TAU)), 0.0, 0.0],
             ),
-            CompiledOp::Swirl {
+            CompiledOp::Swirl(SwirlKernel {
                 cx,
                 cy,
                 r,
                 al,
                 lambda,
                 ..
-            } => ([kind, f(cx), f(cy), f(r)], [f(al), f(lambda), 0.0, 0.0]),
-            CompiledOp::Rigid {
+            }) => ([kind, f(cx), f(cy), f(r)], [f(al), f(lambda), 0.0, 0.0]),
+            CompiledOp::Rigid(RigidKernel {
                 cx,
                 cy,
                 sin,
                 cos,
                 ox,
                 oy,
-            } => ([kind, f(cx), f(cy), f(sin)], [f(cos), f(ox), f(oy), 0.0]),
+            }) => ([kind, f(cx), f(cy), f(sin)], [f(cos), f(ox), f(oy), 0.0]),
             CompiledOp::Jiggle {
                 ux,
                 uy,

@@ -9,30 +9,6 @@ use crate::ops::{rotate, solve_kepler};
 use kurbo::{Point, Vec2};
 use std::f64::consts::TAU;
 
-/// A shift or turn of (x, y): forward (`sign` = 1) or inverse (−1). Identity for
-/// other ops.
-#[inline(always)]
-pub(crate) fn rigid_move(x: f64, y: f64, s: &CompiledOp, sign: f64) -> (f64, f64) {
-    let CompiledOp::Rigid {
-        cx,
-        cy,
-        sin,
-        cos,
-        ox,
-        oy,
-    } = *s
-    else {
-        return (x, y);
-    };
-    if sign > 0.0 {
-        let r = rotate(Vec2::new(x - cx, y - cy), sin, cos);
-        (cx + r.x + ox, cy + r.y + oy)
-    } else {
-        let r = rotate(Vec2::new(x - ox - cx, y - oy - cy), -sin, cos);
-        (cx + r.x, cy + r.y)
-    }
-}
-
 /// A finite comb's shift at (x, y) times `sign` (constant along m, so −1 inverts
 /// exactly). Identity for other ops.
 #[inline(always)]
@@ -116,60 +92,37 @@ pub(crate) fn rake_distance(d: f64, s: f64, inv_s: f64) -> f64 {
     s * (0.5 - (fr - 0.5).abs())
 }
 
-/// A comb's constants out of its [`CompiledOp::Comb`], for a loop over samples (which
-/// then has no enum to look into and vectorises).
-#[derive(Clone, Copy, Debug)]
-pub(crate) struct CombK {
-    ax: f64,
-    ay: f64,
-    mx: f64,
-    my: f64,
-    nx: f64,
-    ny: f64,
-    al: f64,
-    lambda: f64,
-    /// Rake spacing, design px; 0 for a single tine.
+/// A tine (`spacing` = 0) or rake: shift αλ/(d + λ) along the unit motion m, where d
+/// is the distance to the (nearest) tine line measured along the unit normal n.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CombKernel {
+    /// Origin x.
+    pub ax: f64,
+    /// Origin y.
+    pub ay: f64,
+    /// Unit motion x.
+    pub mx: f64,
+    /// Unit motion y.
+    pub my: f64,
+    /// Unit normal x (−m.y).
+    pub nx: f64,
+    /// Unit normal y (m.x).
+    pub ny: f64,
+    /// α·λ, design px².
+    pub al: f64,
+    /// λ, design px.
+    pub lambda: f64,
+    /// Tine spacing of a rake, design px; 0 for a single tine.
     pub spacing: f64,
-    /// 1 / spacing (a product in the loop instead of a second division).
-    inv_spacing: f64,
+    /// 1 / spacing (a product in the walk instead of a second division).
+    pub inv_spacing: f64,
 }
 
-impl CombK {
-    /// The comb's constants, or `None` for another op.
-    #[inline(always)]
-    pub fn of(s: &CompiledOp) -> Option<Self> {
-        let CompiledOp::Comb {
-            ax,
-            ay,
-            mx,
-            my,
-            nx,
-            ny,
-            al,
-            lambda,
-            spacing,
-        } = *s
-        else {
-            return None;
-        };
-        Some(Self {
-            ax,
-            ay,
-            mx,
-            my,
-            nx,
-            ny,
-            al,
-            lambda,
-            spacing,
-            inv_spacing: 1.0 / spacing,
-        })
-    }
-
+impl CombKernel {
     /// The shift at (x, y) times `sign` (+1 forward, −1 inverse: the shift is constant
     /// along m, so subtracting it inverts exactly); `RAKE` when `spacing` > 0.
     #[inline(always)]
-    pub fn shift<const RAKE: bool>(&self, x: f64, y: f64, sign: f64) -> (f64, f64) {
+    pub(crate) fn shift<const RAKE: bool>(&self, x: f64, y: f64, sign: f64) -> (f64, f64) {
         let mut d = ((x - self.ax) * self.nx + (y - self.ay) * self.ny).abs();
         if RAKE {
             d = rake_distance(d, self.spacing, self.inv_spacing);
@@ -177,114 +130,70 @@ impl CombK {
         let f = sign * self.al / (d + self.lambda);
         (x + f * self.mx, y + f * self.my)
     }
-}
 
-/// A comb's shift at (x, y) times `sign` ([`CombK::shift`]). Identity for other ops.
-#[inline(always)]
-pub(crate) fn comb_shift(x: f64, y: f64, s: &CompiledOp, sign: f64) -> (f64, f64) {
-    match CombK::of(s) {
-        Some(c) if c.spacing > 0.0 => c.shift::<true>(x, y, sign),
-        Some(c) => c.shift::<false>(x, y, sign),
-        None => (x, y),
-    }
-}
-
-/// A wavy comb's constants out of its [`CompiledOp::Wave`] (see [`CombK`]).
-#[derive(Clone, Copy, Debug)]
-pub(crate) struct WaveK {
-    mx: f64,
-    my: f64,
-    nx: f64,
-    ny: f64,
-    amp: f64,
-    k: f64,
-    phase: f64,
-}
-
-impl WaveK {
-    /// The wavy comb's constants, or `None` for another op.
+    /// [`CombKernel::shift`] for a tine or a rake, whichever this is.
     #[inline(always)]
-    pub fn of(s: &CompiledOp) -> Option<Self> {
-        let CompiledOp::Wave {
-            mx,
-            my,
-            nx,
-            ny,
-            amp,
-            k,
-            phase,
-        } = *s
-        else {
-            return None;
-        };
-        Some(Self {
-            mx,
-            my,
-            nx,
-            ny,
-            amp,
-            k,
-            phase,
-        })
+    pub(crate) fn apply(&self, x: f64, y: f64, sign: f64) -> (f64, f64) {
+        if self.spacing > 0.0 {
+            self.shift::<true>(x, y, sign)
+        } else {
+            self.shift::<false>(x, y, sign)
+        }
     }
+}
 
+/// A wavy comb: shift A·sin(k·(P·n) + φ) along m = (cos t, sin t), n = (sin t, −cos t).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct WaveKernel {
+    /// Unit motion x (cos t).
+    pub mx: f64,
+    /// Unit motion y (sin t).
+    pub my: f64,
+    /// Unit normal x (sin t).
+    pub nx: f64,
+    /// Unit normal y (−cos t).
+    pub ny: f64,
+    /// Amplitude A, design px.
+    pub amp: f64,
+    /// 2π / wavelength, radians per design px.
+    pub k: f64,
+    /// Phase φ, radians.
+    pub phase: f64,
+}
+
+impl WaveKernel {
     /// The shift at (x, y) times `sign` (constant along m).
     #[inline(always)]
-    pub fn shift(&self, x: f64, y: f64, sign: f64) -> (f64, f64) {
+    pub(crate) fn shift(&self, x: f64, y: f64, sign: f64) -> (f64, f64) {
         let f = sign * self.amp * trig::sin(self.k * (x * self.nx + y * self.ny) + self.phase);
         (x + f * self.mx, y + f * self.my)
     }
 }
 
-/// A wavy comb's shift at (x, y) times `sign`. Identity for other ops.
-#[inline(always)]
-pub(crate) fn wave_shift(x: f64, y: f64, s: &CompiledOp, sign: f64) -> (f64, f64) {
-    WaveK::of(s).map_or((x, y), |w| w.shift(x, y, sign))
-}
-
-/// A circular comb's or vortex's constants out of its [`CompiledOp::Swirl`] (see
-/// [`CombK`]).
-#[derive(Clone, Copy, Debug)]
-pub(crate) struct SwirlK {
-    cx: f64,
-    cy: f64,
-    r: f64,
-    al: f64,
-    lambda: f64,
-    /// A vortex (d = ρ) rather than a circular comb (d = |ρ − r|).
+/// A circular comb (d = |ρ − r|) or vortex (d = ρ): rotation by αλ/(d + λ)/ρ radians
+/// about C.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SwirlKernel {
+    /// Centre x.
+    pub cx: f64,
+    /// Centre y.
+    pub cy: f64,
+    /// Radius r of the circular comb (unused by a vortex).
+    pub r: f64,
+    /// α·λ, design px².
+    pub al: f64,
+    /// λ, design px.
+    pub lambda: f64,
+    /// A vortex rather than a circular comb.
     pub vortex: bool,
 }
 
-impl SwirlK {
-    /// The swirl's constants, or `None` for another op.
-    #[inline(always)]
-    pub fn of(s: &CompiledOp) -> Option<Self> {
-        let CompiledOp::Swirl {
-            cx,
-            cy,
-            r,
-            al,
-            lambda,
-            vortex,
-        } = *s
-        else {
-            return None;
-        };
-        Some(Self {
-            cx,
-            cy,
-            r,
-            al,
-            lambda,
-            vortex,
-        })
-    }
-
+impl SwirlKernel {
     /// The rotation of (x, y) by `sign` times its angle (the angle depends on ρ only,
     /// which a rotation about C keeps, so −1 inverts exactly); `VORTEX` as `vortex`.
     /// The centre itself stays (selected, not branched to, so a loop vectorises).
     #[inline(always)]
-    pub fn turn<const VORTEX: bool>(&self, x: f64, y: f64, sign: f64) -> (f64, f64) {
+    pub(crate) fn turn<const VORTEX: bool>(&self, x: f64, y: f64, sign: f64) -> (f64, f64) {
         let (dx, dy) = (x - self.cx, y - self.cy);
         let rho = (dx * dx + dy * dy).sqrt();
         let d = if VORTEX { rho } else { (rho - self.r).abs() };
@@ -294,15 +203,50 @@ impl SwirlK {
         let turned = (self.cx + dx * cs - dy * sn, self.cy + dx * sn + dy * cs);
         if rho == 0.0 { (x, y) } else { turned }
     }
+
+    /// [`SwirlKernel::turn`] for a vortex or a circular comb, whichever this is.
+    #[inline(always)]
+    pub(crate) fn apply(&self, x: f64, y: f64, sign: f64) -> (f64, f64) {
+        if self.vortex {
+            self.turn::<true>(x, y, sign)
+        } else {
+            self.turn::<false>(x, y, sign)
+        }
+    }
 }
 
-/// A swirl's rotation of (x, y) by `sign` times its angle ([`SwirlK::turn`]). Identity
-/// for other ops.
-#[inline(always)]
-pub(crate) fn swirl_turn(x: f64, y: f64, s: &CompiledOp, sign: f64) -> (f64, f64) {
-    match SwirlK::of(s) {
-        Some(w) if w.vortex => w.turn::<true>(x, y, sign),
-        Some(w) => w.turn::<false>(x, y, sign),
-        None => (x, y),
+/// A shift or turn: P′ = C + R(θ)(P − C) + o.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RigidKernel {
+    /// Centre x.
+    pub cx: f64,
+    /// Centre y.
+    pub cy: f64,
+    /// sin θ.
+    pub sin: f64,
+    /// cos θ.
+    pub cos: f64,
+    /// Offset x.
+    pub ox: f64,
+    /// Offset y.
+    pub oy: f64,
+}
+
+impl RigidKernel {
+    /// The move of (x, y): forward (`sign` = 1) or inverse (−1).
+    #[inline(always)]
+    pub(crate) fn apply(&self, x: f64, y: f64, sign: f64) -> (f64, f64) {
+        let (cx, cy) = (self.cx, self.cy);
+        if sign > 0.0 {
+            let r = rotate(Vec2::new(x - cx, y - cy), self.sin, self.cos);
+            (cx + r.x + self.ox, cy + r.y + self.oy)
+        } else {
+            let r = rotate(
+                Vec2::new(x - self.ox - cx, y - self.oy - cy),
+                -self.sin,
+                self.cos,
+            );
+            (cx + r.x, cy + r.y)
+        }
     }
 }

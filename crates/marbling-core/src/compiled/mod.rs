@@ -16,10 +16,8 @@ use std::sync::Arc;
 mod kernels;
 mod trig;
 use kernels::jiggle_forward;
-pub(crate) use kernels::{
-    CombK, SwirlK, WaveK, comb_shift, drop_back, jiggle_back, rake_distance, rigid_move,
-    swirl_turn, tines_shift, wave_shift,
-};
+pub use kernels::{CombKernel, RigidKernel, SwirlKernel, WaveKernel};
+pub(crate) use kernels::{drop_back, jiggle_back, rake_distance, tines_shift};
 
 /// One op with its constants precomputed. Lengths are design pixels. A drop pattern
 /// (`drops`, `sprays`) compiles to one [`CompiledOp::Disc`] per drop; every other op
@@ -40,76 +38,14 @@ pub enum CompiledOp {
         /// The ink.
         color: Rgb8,
     },
-    /// Tine (`spacing == 0`) or rake: shift αλ/(d + λ) along the unit motion m, where d
-    /// is the distance to the (nearest) tine line measured along the unit normal n.
-    Comb {
-        /// Origin x.
-        ax: f64,
-        /// Origin y.
-        ay: f64,
-        /// Unit motion x.
-        mx: f64,
-        /// Unit motion y.
-        my: f64,
-        /// Unit normal x (−m.y).
-        nx: f64,
-        /// Unit normal y (m.x).
-        ny: f64,
-        /// α·λ, design px².
-        al: f64,
-        /// λ, design px.
-        lambda: f64,
-        /// Tine spacing of a rake, 0 for a single tine.
-        spacing: f64,
-    },
-    /// Wavy comb: shift A·sin(k·(P·n) + φ) along m = (cos t, sin t), n = (sin t, −cos t).
-    Wave {
-        /// Unit motion x (cos t).
-        mx: f64,
-        /// Unit motion y (sin t).
-        my: f64,
-        /// Unit normal x (sin t).
-        nx: f64,
-        /// Unit normal y (−cos t).
-        ny: f64,
-        /// Amplitude A, design px.
-        amp: f64,
-        /// 2π / wavelength, radians per design px.
-        k: f64,
-        /// Phase φ, radians.
-        phase: f64,
-    },
-    /// Circular comb (d = |ρ − r|) or vortex (d = ρ): rotation by αλ/(d + λ)/ρ radians
-    /// about C.
-    Swirl {
-        /// Centre x.
-        cx: f64,
-        /// Centre y.
-        cy: f64,
-        /// Radius r of the circular comb (unused by a vortex).
-        r: f64,
-        /// α·λ, design px².
-        al: f64,
-        /// λ, design px.
-        lambda: f64,
-        /// Vortex rather than circular comb.
-        vortex: bool,
-    },
-    /// Shift or turn: P′ = C + R(θ)(P − C) + o.
-    Rigid {
-        /// Centre x.
-        cx: f64,
-        /// Centre y.
-        cy: f64,
-        /// sin θ.
-        sin: f64,
-        /// cos θ.
-        cos: f64,
-        /// Offset x.
-        ox: f64,
-        /// Offset y.
-        oy: f64,
-    },
+    /// Tine or rake.
+    Comb(CombKernel),
+    /// Wavy comb.
+    Wave(WaveKernel),
+    /// Circular comb or vortex.
+    Swirl(SwirlKernel),
+    /// Shift or turn.
+    Rigid(RigidKernel),
     /// Finite comb: shift αλ/(d + λ) along the unit motion m, d = minᵢ |s − oᵢ|,
     /// s = (P − A)·n.
     Tines {
@@ -194,24 +130,24 @@ impl CompiledOp {
             },
             Op::Tine(t) => Self::comb(t.origin, t.direction, t.alpha, t.lambda, 0.0),
             Op::Rake(r) => Self::comb(r.origin, r.direction, r.alpha, r.lambda, r.spacing),
-            Op::Shift(s) => Self::Rigid {
+            Op::Shift(s) => Self::Rigid(RigidKernel {
                 cx: 0.0,
                 cy: 0.0,
                 sin: 0.0,
                 cos: 1.0,
                 ox: s.offset.x,
                 oy: s.offset.y,
-            },
+            }),
             Op::Turn(t) => {
                 let (sin, cos) = t.angle.sin_cos();
-                Self::Rigid {
+                Self::Rigid(RigidKernel {
                     cx: t.center.x,
                     cy: t.center.y,
                     sin,
                     cos,
                     ox: 0.0,
                     oy: 0.0,
-                }
+                })
             }
             Op::Comb(c) => {
                 let m = c.direction.normalize();
@@ -247,7 +183,7 @@ impl CompiledOp {
             }
             Op::Wavy(w) => {
                 let (s, c) = w.angle.sin_cos();
-                Self::Wave {
+                Self::Wave(WaveKernel {
                     mx: c,
                     my: s,
                     nx: s,
@@ -255,30 +191,30 @@ impl CompiledOp {
                     amp: w.amplitude,
                     k: TAU / w.wavelength,
                     phase: w.phase,
-                }
+                })
             }
-            Op::Circular(c) => Self::Swirl {
+            Op::Circular(c) => Self::Swirl(SwirlKernel {
                 cx: c.center.x,
                 cy: c.center.y,
                 r: c.radius,
                 al: c.alpha * c.lambda,
                 lambda: c.lambda,
                 vortex: false,
-            },
-            Op::Vortex(v) => Self::Swirl {
+            }),
+            Op::Vortex(v) => Self::Swirl(SwirlKernel {
                 cx: v.center.x,
                 cy: v.center.y,
                 r: 0.0,
                 al: v.alpha * v.lambda,
                 lambda: v.lambda,
                 vortex: true,
-            },
+            }),
         }
     }
 
     fn comb(origin: Point, dir: Vec2, alpha: f64, lambda: f64, spacing: f64) -> Self {
         let m = dir.normalize();
-        Self::Comb {
+        Self::Comb(CombKernel {
             ax: origin.x,
             ay: origin.y,
             mx: m.x,
@@ -288,7 +224,8 @@ impl CompiledOp {
             al: alpha * lambda,
             lambda,
             spacing,
-        }
+            inv_spacing: 1.0 / spacing,
+        })
     }
 
     /// Which formula this op applies (the code of its GPU record).
@@ -296,11 +233,11 @@ impl CompiledOp {
         match *self {
             Self::Disc { deform: true, .. } => OpKind::Drop,
             Self::Disc { deform: false, .. } => OpKind::Spray,
-            Self::Comb { .. } => OpKind::Comb,
-            Self::Wave { .. } => OpKind::Wave,
-            Self::Swirl { vortex: false, .. } => OpKind::Circular,
-            Self::Swirl { vortex: true, .. } => OpKind::Vortex,
-            Self::Rigid { .. } => OpKind::Rigid,
+            Self::Comb(_) => OpKind::Comb,
+            Self::Wave(_) => OpKind::Wave,
+            Self::Swirl(SwirlKernel { vortex: false, .. }) => OpKind::Circular,
+            Self::Swirl(SwirlKernel { vortex: true, .. }) => OpKind::Vortex,
+            Self::Rigid(_) => OpKind::Rigid,
             Self::Tines { .. } => OpKind::Tines,
             Self::Jiggle { .. } => OpKind::Jiggle,
             Self::Stylus { .. } => OpKind::Stylus,
@@ -357,10 +294,10 @@ impl CompiledOp {
                 let f = (1.0 + r2 / d2).sqrt();
                 (cx + dx * f, cy + dy * f)
             }
-            Self::Comb { .. } => comb_shift(p.x, p.y, self, 1.0),
-            Self::Wave { .. } => wave_shift(p.x, p.y, self, 1.0),
-            Self::Swirl { .. } => swirl_turn(p.x, p.y, self, 1.0),
-            Self::Rigid { .. } => rigid_move(p.x, p.y, self, 1.0),
+            Self::Comb(ref c) => c.apply(p.x, p.y, 1.0),
+            Self::Wave(ref w) => w.shift(p.x, p.y, 1.0),
+            Self::Swirl(ref w) => w.apply(p.x, p.y, 1.0),
+            Self::Rigid(ref r) => r.apply(p.x, p.y, 1.0),
             Self::Tines { .. } => tines_shift(p.x, p.y, self, 1.0),
             Self::Jiggle { .. } => return jiggle_forward(p, self),
             Self::Stylus { ref segments } => {
@@ -389,10 +326,10 @@ impl CompiledOp {
                 }
                 drop_back(cx, cy, r2, dx, dy, d2)
             }
-            Self::Comb { .. } => comb_shift(p.x, p.y, self, -1.0),
-            Self::Wave { .. } => wave_shift(p.x, p.y, self, -1.0),
-            Self::Swirl { .. } => swirl_turn(p.x, p.y, self, -1.0),
-            Self::Rigid { .. } => rigid_move(p.x, p.y, self, -1.0),
+            Self::Comb(ref c) => c.apply(p.x, p.y, -1.0),
+            Self::Wave(ref w) => w.shift(p.x, p.y, -1.0),
+            Self::Swirl(ref w) => w.apply(p.x, p.y, -1.0),
+            Self::Rigid(ref r) => r.apply(p.x, p.y, -1.0),
             Self::Tines { .. } => tines_shift(p.x, p.y, self, -1.0),
             Self::Jiggle { .. } => return Some(jiggle_back(p, self)),
             Self::Stylus { ref segments } => {
