@@ -301,6 +301,19 @@ fn bench_reports_throughput() {
         .collect();
     assert_eq!(lanes.len(), 2, "{text}");
     assert_eq!(lanes[1], "2", "{text}");
+    // `--per-kind`: one row per op kind, named by the op's type.
+    let o = marbling(&["bench", "--size", "16", "--ops", "4", "--per-kind"], None);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = stdout(&o);
+    let rows: Vec<&str> = text
+        .lines()
+        .skip(2)
+        .filter_map(|l| l.split_whitespace().next())
+        .collect();
+    assert_eq!(rows.len(), 14, "{text}");
+    for kind in ["drop", "tine", "shift", "turn", "jiggle", "stylus"] {
+        assert!(rows.contains(&kind), "{kind}: {text}");
+    }
 }
 
 #[test]
