@@ -4,7 +4,7 @@
 //! per cell into a small table (a cell spans many points at the usual frequencies), and
 //! the per-point arithmetic runs in chunks of [`LANES`] points that the compiler turns
 //! into vector code — 8 f32 lanes with AVX2 when the processor has it (chosen at run
-//! time), SSE2's 4 otherwise, `simd128` on the web. A chunk whose points share one cell
+//! time), SSE2's 4 otherwise, 4 in `simd128` on the web. A chunk whose points share one cell
 //! reads that cell's numbers once; a chunk that crosses cells reads them per point.
 //!
 //! Rows whose x values spread over far more cells than they have points (a huge
@@ -14,8 +14,9 @@ use crate::hash::{CellRng, PRIME_X, PRIME_Y, floor_i32, lattice_hash_premul, wra
 use crate::perlin::{GRADIENTS, fade};
 use crate::worley::{Metric, worley2};
 
-/// Points per chunk: one AVX2 register of f32.
-pub const LANES: usize = 8;
+/// Points per chunk: one AVX2 register of f32; on the web one `simd128` register (4),
+/// which also keeps the module small (the chunk loops are unrolled per lane).
+pub const LANES: usize = if cfg!(target_arch = "wasm32") { 4 } else { 8 };
 
 /// `out[i] = perlin2_periodic(xs[i], y, seed, period)` for every i (bit for bit).
 ///
