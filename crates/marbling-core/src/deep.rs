@@ -12,7 +12,7 @@
 //! step's `reach` says how far δ may move s before another kink could be crossed. Past a
 //! reach the walk goes on in absolute f32 from the step's `at`.
 
-use crate::compiled::{CombKernel, CompiledOp, SwirlKernel, WaveKernel, drop_back, jiggle_back};
+use crate::compiled::{CombKernel, CompiledOp, JiggleKernel, SwirlKernel, WaveKernel, drop_back};
 use crate::ops::solve_kepler;
 use crate::walk::Walker;
 use kurbo::{Point, Vec2};
@@ -239,18 +239,20 @@ fn step_back(op: &CompiledOp, r: Point, out: &mut Vec<RefStep>) -> Point {
             out.push(RefStep::Rigid { at: r });
             inverse(op, r)
         }
-        CompiledOp::Jiggle {
-            ux,
-            uy,
-            k,
-            along,
-            phase,
-            ..
-        } => {
+        CompiledOp::Jiggle(
+            j @ JiggleKernel {
+                ux,
+                uy,
+                k,
+                along,
+                phase,
+                ..
+            },
+        ) => {
             let t = k * (r.x * ux + r.y * uy) + phase;
             let phi = solve_kepler(t - (t / TAU).floor() * TAU, k * along);
             out.push(RefStep::Jiggle { at: r, phi });
-            jiggle_back(r, op)
+            Point::from(j.back(r.x, r.y))
         }
         CompiledOp::Stylus { ref segments } => {
             let mut r = r;

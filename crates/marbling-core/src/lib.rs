@@ -39,7 +39,7 @@ pub mod view_spec;
 mod walk;
 
 pub use color::Rgb8;
-pub use compiled::{CombKernel, CompiledOp, RigidKernel, SwirlKernel, WaveKernel};
+pub use compiled::{CombKernel, CompiledOp, JiggleKernel, RigidKernel, SwirlKernel, WaveKernel};
 pub use design::{CURRENT_VERSION, Design, MAX_OPS, MAX_SIDE, SUPPORTED_VERSIONS};
 pub use gestures::GestureSpan;
 pub use image::{PngError, RgbaImage};

@@ -11,7 +11,7 @@
 //! enabled for the wasm32 target in `.cargo/config.toml`).
 
 use crate::Op;
-use crate::compiled::{CompiledOp, drop_back, jiggle_back, tines_shift};
+use crate::compiled::{CompiledOp, drop_back, tines_shift};
 use kurbo::Point;
 use std::sync::atomic::{AtomicBool, Ordering};
 
@@ -146,7 +146,8 @@ impl Walker {
                 CompiledOp::Swirl(ref w) => (x, y) = w.apply(x, y, -1.0),
                 CompiledOp::Rigid(ref r) => (x, y) = r.apply(x, y, -1.0),
                 CompiledOp::Tines { .. } => (x, y) = tines_shift(x, y, s, -1.0),
-                CompiledOp::Jiggle { .. } | CompiledOp::Stylus { .. } | CompiledOp::Flow { .. } => {
+                CompiledOp::Jiggle(ref j) => (x, y) = j.back(x, y),
+                CompiledOp::Stylus { .. } | CompiledOp::Flow { .. } => {
                     let q = s.inverse(Point::new(x, y)).unwrap_or_default();
                     (x, y) = (q.x, q.y);
                 }
@@ -292,10 +293,7 @@ impl Walker {
                 CompiledOp::Swirl(w) => each!(xs, ys, |x, y| w.turn::<false>(x, y, -1.0)),
                 CompiledOp::Rigid(r) => each!(xs, ys, |x, y| r.apply(x, y, -1.0)),
                 CompiledOp::Tines { .. } => each!(xs, ys, |x, y| tines_shift(x, y, s, -1.0)),
-                CompiledOp::Jiggle { .. } => each!(xs, ys, |x, y| {
-                    let q = jiggle_back(Point::new(x, y), s);
-                    (q.x, q.y)
-                }),
+                CompiledOp::Jiggle(j) => j.back_all(xs, ys),
                 CompiledOp::Flow { ref field } => each!(xs, ys, |x, y| {
                     let q = field.inverse(Point::new(x, y));
                     (q.x, q.y)

@@ -10,7 +10,7 @@
 //! are a header record (newest) with data records before it ([`records`]).
 
 use marbling_core::{
-    CombKernel, CompiledOp, Op, OpKind, Rgb8, RigidKernel, SwirlKernel, WaveKernel,
+    CombKernel, CompiledOp, JiggleKernel, Op, OpKind, Rgb8, RigidKernel, SwirlKernel, WaveKernel,
 };
 use std::f64::consts::TAU;
 
@@ -107,14 +107,14 @@ impl GpuOp {
                 ox,
                 oy,
             }) => ([kind, f(cx), f(cy), f(sin)], [f(cos), f(ox), f(oy), 0.0]),
-            CompiledOp::Jiggle {
+            CompiledOp::Jiggle(JiggleKernel {
                 ux,
                 uy,
                 k,
                 along,
                 across,
                 phase,
-            } => (
+            }) => (
                 [kind, f(ux), f(uy), f(k)],
                 [f(along), f(across), f(phase.rem_euclid(TAU)), 0.0],
             ),

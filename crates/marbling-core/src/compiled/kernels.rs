@@ -5,9 +5,8 @@
 
 use super::CompiledOp;
 use super::trig::{self, floor_small};
-use crate::ops::{rotate, solve_kepler};
-use kurbo::{Point, Vec2};
-use std::f64::consts::TAU;
+use crate::ops::rotate;
+use kurbo::Vec2;
 
 /// A finite comb's shift at (x, y) times `sign` (constant along m, so −1 inverts
 /// exactly). Identity for other ops.
@@ -32,45 +31,6 @@ pub(crate) fn tines_shift(x: f64, y: f64, s: &CompiledOp, sign: f64) -> (f64, f6
         .fold(f64::INFINITY, f64::min);
     let f = sign * al / (d + lambda);
     (x + f * mx, y + f * my)
-}
-
-/// A jiggle's move at `p` for the phase `phase_of(t)`, t = k(p·u) + φ₀: P ± (A·sin φ·u +
-/// B·cos φ·v), v = (−u.y, u.x). Identity for other ops.
-pub(super) fn jiggle_move(
-    p: Point,
-    s: &CompiledOp,
-    sign: f64,
-    phase_of: impl Fn(f64, f64) -> f64,
-) -> Point {
-    let CompiledOp::Jiggle {
-        ux,
-        uy,
-        k,
-        along,
-        across,
-        phase,
-    } = *s
-    else {
-        return p;
-    };
-    let (sn, cs) = phase_of(k * (p.x * ux + p.y * uy) + phase, k * along).sin_cos();
-    Point::new(
-        p.x + sign * (along * sn * ux - across * cs * uy),
-        p.y + sign * (along * sn * uy + across * cs * ux),
-    )
-}
-
-/// The jiggle's forward map: φ = t.
-pub(super) fn jiggle_forward(p: Point, s: &CompiledOp) -> Point {
-    jiggle_move(p, s, 1.0, |t, _| t)
-}
-
-/// The jiggle's inverse: φ solves φ + kA·sin φ = t (t reduced to [0, 2π), which sine and
-/// cosine do not see). Identity for other ops.
-pub(crate) fn jiggle_back(p: Point, s: &CompiledOp) -> Point {
-    jiggle_move(p, s, -1.0, |t, ka| {
-        solve_kepler(t - (t / TAU).floor() * TAU, ka)
-    })
 }
 
 /// Inverse of a drop outside its disc: P = C + (P' − C)·√(1 − r²/ρ²), given

@@ -13,11 +13,12 @@ use kurbo::{Point, Vec2};
 use std::f64::consts::TAU;
 use std::sync::Arc;
 
+mod jiggle;
 mod kernels;
 mod trig;
-use kernels::jiggle_forward;
+pub use jiggle::JiggleKernel;
 pub use kernels::{CombKernel, RigidKernel, SwirlKernel, WaveKernel};
-pub(crate) use kernels::{drop_back, jiggle_back, rake_distance, tines_shift};
+pub(crate) use kernels::{drop_back, rake_distance, tines_shift};
 
 /// One op with its constants precomputed. Lengths are design pixels. A drop pattern
 /// (`drops`, `sprays`) compiles to one [`CompiledOp::Disc`] per drop; every other op
@@ -64,21 +65,8 @@ pub enum CompiledOp {
         /// Tine offsets oᵢ along n = (−m.y, m.x), design px.
         offsets: Arc<[f64]>,
     },
-    /// Jiggle: P′ = P + A·sin φ·u + B·cos φ·v, φ = k(P·u) + φ₀, v = (−u.y, u.x).
-    Jiggle {
-        /// u x (cos θ).
-        ux: f64,
-        /// u y (sin θ).
-        uy: f64,
-        /// 2π / wavelength, radians per design px.
-        k: f64,
-        /// A, design px.
-        along: f64,
-        /// B, design px.
-        across: f64,
-        /// φ₀, radians.
-        phase: f64,
-    },
+    /// Jiggle.
+    Jiggle(JiggleKernel),
     /// Stylus: its segments, in order.
     Stylus {
         /// The path's segments of non-zero length.
@@ -163,14 +151,14 @@ impl CompiledOp {
             }
             Op::Jiggle(j) => {
                 let (sin, cos) = j.angle.sin_cos();
-                Self::Jiggle {
+                Self::Jiggle(JiggleKernel {
                     ux: cos,
                     uy: sin,
                     k: TAU / j.wavelength,
                     along: j.along,
                     across: j.across,
                     phase: j.phase,
-                }
+                })
             }
             Op::Stylus(s) => Self::Stylus {
                 segments: s.segments().into(),
@@ -299,7 +287,7 @@ impl CompiledOp {
             Self::Swirl(ref w) => w.apply(p.x, p.y, 1.0),
             Self::Rigid(ref r) => r.apply(p.x, p.y, 1.0),
             Self::Tines { .. } => tines_shift(p.x, p.y, self, 1.0),
-            Self::Jiggle { .. } => return jiggle_forward(p, self),
+            Self::Jiggle(ref j) => return j.forward(p),
             Self::Stylus { ref segments } => {
                 return segments.iter().fold(p, |p, s| s.forward(p));
             }
@@ -331,7 +319,7 @@ impl CompiledOp {
             Self::Swirl(ref w) => w.apply(p.x, p.y, -1.0),
             Self::Rigid(ref r) => r.apply(p.x, p.y, -1.0),
             Self::Tines { .. } => tines_shift(p.x, p.y, self, -1.0),
-            Self::Jiggle { .. } => return Some(jiggle_back(p, self)),
+            Self::Jiggle(ref j) => j.back(p.x, p.y),
             Self::Stylus { ref segments } => {
                 return Some(segments.iter().rev().fold(p, |p, s| s.inverse(p)));
             }
