@@ -18,22 +18,36 @@ use crate::worley::{Metric, worley2};
 /// which also keeps the module small (the chunk loops are unrolled per lane).
 pub const LANES: usize = if cfg!(target_arch = "wasm32") { 4 } else { 8 };
 
+/// Runs `$imp` compiled for AVX2 when the processor has it (checked at run time), as
+/// compiled for the build's baseline otherwise; the arguments are named with their types.
+macro_rules! on_widest_unit {
+    ($imp:ident($($arg:ident: $ty:ty),*)) => {{
+        #[cfg(target_arch = "x86_64")]
+        {
+            #[target_feature(enable = "avx2")]
+            fn avx2($($arg: $ty),*) {
+                $imp($($arg),*)
+            }
+            if std::arch::is_x86_feature_detected!("avx2") {
+                // SAFETY: the processor has AVX2 (checked above), all `avx2` needs.
+                #[allow(unsafe_code)]
+                unsafe {
+                    avx2($($arg),*)
+                };
+                return;
+            }
+        }
+        $imp($($arg),*)
+    }};
+}
+
 /// `out[i] = perlin2_periodic(xs[i], y, seed, period)` for every i (bit for bit).
 ///
 /// # Panics
 /// When `out` is shorter than `xs`.
 pub fn perlin2_row(xs: &[f32], y: f32, seed: u32, period: [i32; 2], out: &mut [f32]) {
     assert!(out.len() >= xs.len(), "perlin2_row: out shorter than xs");
-    #[cfg(target_arch = "x86_64")]
-    if std::arch::is_x86_feature_detected!("avx2") {
-        // SAFETY: the processor has AVX2 (checked above), all the AVX2 build needs.
-        #[allow(unsafe_code)]
-        unsafe {
-            perlin2_row_avx2(xs, y, seed, period, out);
-        }
-        return;
-    }
-    perlin2_row_impl(xs, y, seed, period, out);
+    on_widest_unit!(perlin2_row_impl(xs: &[f32], y: f32, seed: u32, period: [i32; 2], out: &mut [f32]))
 }
 
 /// `f1[i], f2[i] = worley2(xs[i], y, seed, metric, period)` for every i (bit for bit).
@@ -53,38 +67,15 @@ pub fn worley2_row(
         f1.len() >= xs.len() && f2.len() >= xs.len(),
         "worley2_row: outputs shorter than xs"
     );
-    #[cfg(target_arch = "x86_64")]
-    if std::arch::is_x86_feature_detected!("avx2") {
-        // SAFETY: the processor has AVX2 (checked above), all the AVX2 build needs.
-        #[allow(unsafe_code)]
-        unsafe {
-            worley2_row_avx2(xs, y, seed, metric, period, f1, f2);
-        }
-        return;
-    }
-    worley2_row_impl(xs, y, seed, metric, period, f1, f2);
-}
-
-/// [`perlin2_row_impl`] compiled for AVX2.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
-fn perlin2_row_avx2(xs: &[f32], y: f32, seed: u32, period: [i32; 2], out: &mut [f32]) {
-    perlin2_row_impl(xs, y, seed, period, out);
-}
-
-/// [`worley2_row_impl`] compiled for AVX2.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
-fn worley2_row_avx2(
-    xs: &[f32],
-    y: f32,
-    seed: u32,
-    metric: Metric,
-    period: [i32; 2],
-    f1: &mut [f32],
-    f2: &mut [f32],
-) {
-    worley2_row_impl(xs, y, seed, metric, period, f1, f2);
+    on_widest_unit!(worley2_row_impl(
+        xs: &[f32],
+        y: f32,
+        seed: u32,
+        metric: Metric,
+        period: [i32; 2],
+        f1: &mut [f32],
+        f2: &mut [f32]
+    ))
 }
 
 /// The cells a row's points fall in, `[lo, hi]`, or `None` when a table over them would
