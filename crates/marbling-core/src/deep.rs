@@ -12,8 +12,7 @@
 //! step's `reach` says how far δ may move s before another kink could be crossed. Past a
 //! reach the walk goes on in absolute f32 from the step's `at`.
 
-use crate::compiled::{CombKernel, CompiledOp, JiggleKernel, SwirlKernel, WaveKernel, drop_back};
-use crate::ops::solve_kepler;
+use crate::compiled::{CombKernel, CompiledOp, SwirlKernel, WaveKernel, drop_back};
 use crate::walk::Walker;
 use kurbo::{Point, Vec2};
 use std::f64::consts::TAU;
@@ -239,20 +238,11 @@ fn step_back(op: &CompiledOp, r: Point, out: &mut Vec<RefStep>) -> Point {
             out.push(RefStep::Rigid { at: r });
             inverse(op, r)
         }
-        CompiledOp::Jiggle(
-            j @ JiggleKernel {
-                ux,
-                uy,
-                k,
-                along,
-                phase,
-                ..
-            },
-        ) => {
-            let t = k * (r.x * ux + r.y * uy) + phase;
-            let phi = solve_kepler(t - (t / TAU).floor() * TAU, k * along);
+        CompiledOp::Jiggle(ref j) => {
+            // One solve serves the reference step and the move.
+            let phi = j.phase_before(r.x, r.y);
             out.push(RefStep::Jiggle { at: r, phi });
-            Point::from(j.back(r.x, r.y))
+            Point::from(j.back_by(r.x, r.y, phi))
         }
         CompiledOp::Stylus { ref segments } => {
             let mut r = r;

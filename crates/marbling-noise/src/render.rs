@@ -14,7 +14,7 @@ use crate::spec::{BlendBase, DecayValue, DriveSource, NoiseSpec, Source, Transfe
 use crate::spec::{CurlSpec, WhiteSpec, WorleySpec};
 use crate::transfer::{SplineDecayTable, hsv_value_blend};
 use crate::white::white2;
-use crate::worley::{Metric, WORLEY_MOMENTS, WorleyFeature, worley_normalised};
+use crate::worley::{Metric, WorleyFeature, worley_normalised};
 use std::sync::Arc;
 
 /// Largest output side accepted by [`Renderer::new`].
@@ -84,15 +84,8 @@ impl Field for Worley {
         let mut f2 = vec![0.0; xs.len()];
         let p = [self.period, self.period];
         crate::rows::worley2_row(&scaled, y * f, self.seed, self.metric, p, out, &mut f2);
-        let [mean, std] = WORLEY_MOMENTS[self.feature as usize][self.metric as usize];
         for (o, b) in out.iter_mut().zip(f2).take(xs.len()) {
-            // As `worley_normalised`.
-            let d = match self.feature {
-                WorleyFeature::F1 => *o,
-                WorleyFeature::F2 => b,
-                WorleyFeature::F2MinusF1 => b - *o,
-            };
-            *o = (d - mean) / std;
+            *o = crate::worley::normalise([*o, b], self.feature, self.metric);
         }
     }
 }
@@ -453,6 +446,13 @@ impl Renderer {
     pub fn color_row(&self, xs: &[f32], y: f32) -> Vec<[f32; 3]> {
         let mut t = vec![0.0; xs.len()];
         self.intensity_row(xs, y, &mut t);
+        self.colors_of(xs, y, &t)
+    }
+
+    /// The colours of a row whose [`Renderer::intensity_row`] is `t` (for callers that
+    /// keep the intensities too).
+    #[must_use]
+    pub fn colors_of(&self, xs: &[f32], y: f32, t: &[f32]) -> Vec<[f32; 3]> {
         t.iter()
             .zip(xs)
             .map(|(&t, &x)| self.color_of(t, x, y))

@@ -101,7 +101,13 @@ pub fn worley_normalised(
     metric: Metric,
     period: [i32; 2],
 ) -> f32 {
-    let [f1, f2] = worley2(x, y, seed, metric, period);
+    normalise(worley2(x, y, seed, metric, period), feature, metric)
+}
+
+/// The chosen feature of `[F1, F2]` under `metric`, normalised by [`WORLEY_MOMENTS`].
+#[inline]
+#[must_use]
+pub fn normalise([f1, f2]: [f32; 2], feature: WorleyFeature, metric: Metric) -> f32 {
     let d = match feature {
         WorleyFeature::F1 => f1,
         WorleyFeature::F2 => f2,

@@ -49,8 +49,8 @@ impl Heights {
             let y = (j as f32 + 0.5) * self.cell;
             let mut row = vec![0.0; GRID];
             self.renderer.intensity_row(&xs, y, &mut row);
+            self.colors.extend(self.renderer.colors_of(&xs, y, &row));
             self.heights.extend(row);
-            self.colors.extend(self.renderer.color_row(&xs, y));
             if now() - start > budget_ms {
                 break;
             }

@@ -107,9 +107,10 @@ impl JiggleKernel {
         if s.done { s } else { stepped }
     }
 
-    /// Where (x, y) was before the jiggle.
+    /// The phase φ that (x, y) had before the jiggle: the root of φ + kA·sin φ = t, t
+    /// the phase at (x, y) reduced to [0, 2π).
     #[inline(always)]
-    pub(crate) fn back(&self, x: f64, y: f64) -> (f64, f64) {
+    pub(crate) fn phase_before(&self, x: f64, y: f64) -> f64 {
         let (t, mut s) = self.start(x, y);
         for _ in 0..MAX_STEPS {
             s = self.step(t, s);
@@ -117,7 +118,19 @@ impl JiggleKernel {
                 break;
             }
         }
-        self.moved(x, y, -1.0, trig::sin_cos(s.phi))
+        s.phi
+    }
+
+    /// Where (x, y) was before the jiggle, given its [`JiggleKernel::phase_before`].
+    #[inline(always)]
+    pub(crate) fn back_by(&self, x: f64, y: f64, phi: f64) -> (f64, f64) {
+        self.moved(x, y, -1.0, trig::sin_cos(phi))
+    }
+
+    /// Where (x, y) was before the jiggle.
+    #[inline(always)]
+    pub(crate) fn back(&self, x: f64, y: f64) -> (f64, f64) {
+        self.back_by(x, y, self.phase_before(x, y))
     }
 
     /// [`JiggleKernel::back`] of every point, [`LANES`] at a time: each group steps
@@ -152,7 +165,7 @@ impl JiggleKernel {
                 }
             }
             for k in 0..LANES {
-                (x[k], y[k]) = self.moved(x[k], y[k], -1.0, trig::sin_cos(phi[k]));
+                (x[k], y[k]) = self.back_by(x[k], y[k], phi[k]);
             }
         }
         for (x, y) in xc.into_remainder().iter_mut().zip(yc.into_remainder()) {

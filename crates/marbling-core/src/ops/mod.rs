@@ -27,6 +27,7 @@ pub use drop::Drop;
 pub use drops::{DropSet, MAX_DROPS, Radii};
 pub use flow::{FLOW_STEP_PX, Flow, FlowField, MAX_FLOW_STEPS, flow_noise};
 pub use jiggle::Jiggle;
+#[cfg(test)]
 pub(crate) use jiggle::solve_kepler;
 pub(crate) use op_type::OpType;
 pub use rake::Rake;
