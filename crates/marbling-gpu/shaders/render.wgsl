@@ -63,26 +63,35 @@ struct Hit {
 // a flow have a turbulence (its flow is the design's last op): elsewhere
 // `FLOW_ENABLED` is a false constant and the per-sample walk is the plain one.
 fn trace(p0: vec2<f32>) -> vec4<f32> {
-    if !FLOW_ENABLED || params.layers[0].w == 0.0 {
-        return trace_from(p0, p0);
-    }
+    let flowing = FLOW_ENABLED && params.layers[0].w != 0.0;
     var acc = vec3<f32>(0.0);
     var packed = -2.0;
+    // One call site of `trace_from` for both cases (a software GPU's compiler inlines
+    // each call, the whole walk with it): without a turbulence one round at weight 1.
     for (var k = 0u; k < 2u; k++) {
-        let layer = params.layers[k];
-        if layer.z <= 0.0 {
-            continue;
+        var p = p0;
+        var weight = 1.0;
+        if flowing {
+            let layer = params.layers[k];
+            if layer.z <= 0.0 {
+                continue;
+            }
+            let at = u32(layer.w);
+            var h = op_record(at);
+            h.a.z = layer.x;
+            h.a.w = layer.y;
+            p = flow_back(at, h, p0);
+            weight = layer.z;
         }
-        let at = u32(layer.w);
-        var h = op_record(at);
-        h.a.z = layer.x;
-        h.a.w = layer.y;
-        let c = trace_from(p0, flow_back(at, h, p0));
-        acc += layer.z * c.rgb;
+        let c = trace_from(p0, p);
+        acc += weight * c.rgb;
         if packed == -2.0 || packed == c.w {
             packed = c.w;
         } else {
             packed = -1.0;
+        }
+        if !flowing {
+            break;
         }
     }
     return vec4<f32>(acc, packed);
@@ -152,9 +161,19 @@ fn fs_main(@builtin(position) position: vec4<f32>) -> @location(0) vec4<f32> {
 // above and the compute entry of render_compute.wgsl both draw with it.
 fn shade(target_pixel: vec2<f32>) -> vec4<f32> {
     let pixel = target_pixel + params.offset;
-    var r = average(pixel, 0u, params.first_count);
-    if r.w < 0.0 && params.refine_count > 0u {
-        r = average(pixel, params.first_count, params.refine_count);
+    // The first samples, then the refinement's where they disagree, through one call
+    // site of `average`: a software GPU's compiler inlines each call, walk and noise
+    // included (two sites compiled all of it twice).
+    var r = vec4<f32>(0.0, 0.0, 0.0, -1.0);
+    var start = 0u;
+    var count = params.first_count;
+    for (var k = 0u; k < 2u; k++) {
+        r = average(pixel, start, count);
+        if r.w >= 0.0 || params.refine_count == 0u {
+            break;
+        }
+        start = params.first_count;
+        count = params.refine_count;
     }
     if params.encode_srgb == 0u {
         return vec4<f32>(r.rgb, 1.0);

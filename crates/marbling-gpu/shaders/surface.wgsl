@@ -49,7 +49,7 @@ struct SurfaceParams {
 }
 
 fn surface_intensity(p: vec2<f32>, i: u32) -> f32 {
-    let n = sample_noise(p, surface.noises[i]);
+    let n = sample_noise(p, i);
     let transfer = surface.layers[i].transfer;
     if transfer == 0u {
         return noise_to_grey(n);

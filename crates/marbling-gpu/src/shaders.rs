@@ -6,7 +6,7 @@
 //! (schema v2 noise backgrounds and grain overlays) or its stand-in, then its own file.
 //! [`ExactVariant`] names an exact module: its noise types and whether it walks v3 ops.
 
-use marbling_noise::wgsl::{NoiseKind, NoiseKinds};
+use marbling_noise::wgsl::{NoiseKind, NoiseKinds, UniformAt};
 
 use crate::preview_kind::PreviewKind;
 
@@ -62,6 +62,9 @@ pub const RENDER_PLAIN_WGSL: &str = concat!(
 /// `shaders/render_compute.wgsl`: the exact renderer's compute entry point (appended to a
 /// render module).
 pub const RENDER_COMPUTE: &str = include_str!("../shaders/render_compute.wgsl");
+
+/// Where `surface.wgsl`'s `sample_noise(p, i)` reads layer `i`'s noise uniform.
+const SURFACE_NOISES: UniformAt<'static> = UniformAt::Element("surface.noises");
 
 /// Which exact-renderer module a design needs.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -182,8 +185,8 @@ impl ExactVariant {
             (true, false) => [flow_lattice().as_str(), FLOW].join("\n"),
         };
         let surface = if self.surface() {
-            let noise =
-                marbling_noise::wgsl::module_for("noise", self.noises).unwrap_or_else(|| {
+            let noise = marbling_noise::wgsl::module_for("noise", self.noises, SURFACE_NOISES)
+                .unwrap_or_else(|| {
                     unreachable!("marbling-noise always provides its noise module");
                 });
             [noise.as_str(), SURFACE].join("\n")

@@ -2,8 +2,9 @@
 // random-phase (2) kernels, impulses per cell from the cell stream, orientation and
 // frequency optionally driven by an fBm; phasor noise (Tricard et al. 2019) from the same
 // kernels summed as complex numbers, the phase through a profile (keep in sync with
-// crates/marbling-noise/src/gabor.rs and phasor.rs). Needs hash.wgsl, perlin.wgsl,
-// value.wgsl, fbm.wgsl.
+// crates/marbling-noise/src/gabor.rs and phasor.rs). Needs hash.wgsl, fbm.wgsl (FbmParams)
+// and `gabor_drive`: gabor_drive.wgsl, or gabor_drive_off.wgsl in modules without a
+// driven Gabor (the drives' fBm is most of a Gabor module's compile on a software GPU).
 
 const GABOR_TAU: f32 = 6.2831855;
 const GABOR_INV_PI: f32 = 0.31830987;
@@ -67,18 +68,7 @@ fn gabor_raw(p: vec2<f32>, g: GaborParams, orientation_drive: FbmParams, frequen
                     continue;
                 }
                 let ip = vec2<f32>((f32(cx) + ox) * g.cell, (f32(cy) + oy) * g.cell);
-                // The driving fBms at the impulse (0 where not driven), through one call
-                // site: a software GPU's compiler inlines each call of the fBm.
-                var drive = vec2<f32>(0.0, 0.0);
-                for (var d = 0u; d < 2u; d = d + 1u) {
-                    if (g.drives & (1u << d)) != 0u && !(d == 0u && g.kind == 1u) {
-                        var fp = orientation_drive;
-                        if d == 1u {
-                            fp = frequency_drive;
-                        }
-                        drive[d] = fbm(ip, fp);
-                    }
-                }
+                let drive = gabor_drive(ip, g, orientation_drive, frequency_drive);
                 var dir = base;
                 var phase = 0.0;
                 if g.kind == 1u {

@@ -146,7 +146,8 @@ pub struct FibersGpu {
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Pod, Zeroable)]
 pub struct NoiseGpu {
-    /// The [`NoiseKind`] (0 Gabor, 1 fBm, 2 Worley, 3 white, 4 curl, 5 fibers).
+    /// The [`NoiseKind`] (0 Gabor, 1 fBm, 2 Worley, 3 white, 4 curl, 5 fibers, 6 Gabor
+    /// with drives).
     pub noise_type: u32,
     /// Seed (Worley, white).
     pub seed: u32,
@@ -305,7 +306,11 @@ impl NoiseGpu {
                     drive_fbm(&spec.orientation_field, "orientation_field", period)?;
                 let (fd, fa, f_on) = drive_fbm(&spec.frequency_field, "frequency_field", period)?;
                 let g = Gabor::new(spec.params(period, None, None));
-                u.noise_type = NoiseKind::Gabor as u32;
+                u.noise_type = if o_on || f_on {
+                    NoiseKind::DrivenGabor
+                } else {
+                    NoiseKind::Gabor
+                } as u32;
                 u.gabor = GaborGpu::new(&g, o_on.then_some(oa), f_on.then_some(fa));
                 u.gabor_orientation_drive = od;
                 u.gabor_frequency_drive = fd;

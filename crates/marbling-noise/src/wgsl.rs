@@ -21,6 +21,11 @@ pub const WHITE: &str = include_str!("../shaders/white.wgsl");
 pub const CURL: &str = include_str!("../shaders/curl.wgsl");
 /// `gabor.wgsl`: GaborParams, gabor, gabor_raw.
 pub const GABOR: &str = include_str!("../shaders/gabor.wgsl");
+/// `gabor_drive.wgsl`: gabor_drive, the driving fBms at an impulse.
+pub const GABOR_DRIVE: &str = include_str!("../shaders/gabor_drive.wgsl");
+/// `gabor_drive_off.wgsl`: the `gabor_drive` of modules without a
+/// [`NoiseKind::DrivenGabor`] (no fBm compiled for it).
+pub const GABOR_DRIVE_OFF: &str = include_str!("../shaders/gabor_drive_off.wgsl");
 /// `fibers.wgsl`: FiberParams, fibers, fibers_height, fibers_specks.
 pub const FIBERS: &str = include_str!("../shaders/fibers.wgsl");
 /// `transfer.wgsl`: noise_to_grey, threshold_transfer, spline_decay, hsv_value_blend.
@@ -42,6 +47,7 @@ pub const FILES: &[(&str, &str)] = &[
     ("white", WHITE),
     ("curl", CURL),
     ("gabor", GABOR),
+    ("gabor_drive", GABOR_DRIVE),
     ("fibers", FIBERS),
     ("transfer", TRANSFER),
     ("noise", NOISE),
@@ -60,16 +66,37 @@ pub fn dependencies(name: &str) -> Option<&'static [&'static str]> {
         "worley" => &["hash", "worley"],
         "white" => &["hash", "white"],
         "curl" => &["hash", "perlin", "value", "fbm", "curl"],
-        "gabor" => &["hash", "perlin", "value", "fbm", "gabor"],
+        "gabor" | "gabor_drive" => &["hash", "perlin", "value", "fbm", "gabor", "gabor_drive"],
         "fibers" => &["hash", "fibers"],
         "transfer" => &["transfer"],
         "noise" => &[
-            "hash", "perlin", "value", "fbm", "worley", "white", "curl", "gabor", "fibers",
-            "transfer", "noise",
+            "hash",
+            "perlin",
+            "value",
+            "fbm",
+            "worley",
+            "white",
+            "curl",
+            "gabor",
+            "gabor_drive",
+            "fibers",
+            "transfer",
+            "noise",
         ],
         "layers" => &[
-            "hash", "perlin", "value", "fbm", "worley", "white", "curl", "gabor", "fibers",
-            "transfer", "noise", "layers",
+            "hash",
+            "perlin",
+            "value",
+            "fbm",
+            "worley",
+            "white",
+            "curl",
+            "gabor",
+            "gabor_drive",
+            "fibers",
+            "transfer",
+            "noise",
+            "layers",
         ],
         _ => return None,
     })
@@ -91,17 +118,22 @@ pub enum NoiseKind {
     Curl = 4,
     /// Paper or canvas fibres.
     Fibers = 5,
+    /// Sparse Gabor noise whose orientation or frequency an fBm drives: its own type so
+    /// that a module for undriven Gabor noise compiles no fBm (on SwiftShader the drives
+    /// were about half of a Gabor module's compile).
+    DrivenGabor = 6,
 }
 
 impl NoiseKind {
     /// Every type, in `noise_type` order.
-    pub const ALL: [NoiseKind; 6] = [
+    pub const ALL: [NoiseKind; 7] = [
         NoiseKind::Gabor,
         NoiseKind::Fbm,
         NoiseKind::Worley,
         NoiseKind::White,
         NoiseKind::Curl,
         NoiseKind::Fibers,
+        NoiseKind::DrivenGabor,
     ];
 
     /// The type of `noise_type` (`None` for none).
@@ -118,24 +150,38 @@ impl NoiseKind {
             NoiseKind::White => "white",
             NoiseKind::Curl => "curl",
             NoiseKind::Fibers => "fibers",
+            NoiseKind::DrivenGabor => "driven_gabor",
         }
     }
 
-    /// `sample_noise`'s value for this type (WGSL, of `p` and the uniform `u`).
-    fn call(self) -> &'static str {
-        match self {
-            NoiseKind::Gabor => {
-                "gabor(p, u.gabor, u.gabor_orientation_drive, u.gabor_frequency_drive)"
+    /// `sample_noise`'s value for this type: WGSL of `p` and the uniform `u` (a WGSL
+    /// expression of type `NoiseUniform`).
+    fn call(self, u: &str) -> String {
+        let call = match self {
+            NoiseKind::Gabor | NoiseKind::DrivenGabor => {
+                "gabor(p, {u}.gabor, {u}.gabor_orientation_drive, {u}.gabor_frequency_drive)"
             }
-            NoiseKind::Fbm => "fbm(p, u.fbm)",
+            NoiseKind::Fbm => "fbm(p, {u}.fbm)",
             NoiseKind::Worley => {
-                "worley_normalised(p * u.frequency, u.seed, u.feature, u.metric, u.period)"
+                "worley_normalised(p * {u}.frequency, {u}.seed, {u}.feature, {u}.metric, {u}.period)"
             }
-            NoiseKind::White => "white2(p, u.seed, u.period)",
-            NoiseKind::Curl => "curl_component(p, u.fbm, u.feature)",
-            NoiseKind::Fibers => "fibers(p, u.fibers, u.fiber_grid, u.speck_grid)",
-        }
+            NoiseKind::White => "white2(p, {u}.seed, {u}.period)",
+            NoiseKind::Curl => "curl_component(p, {u}.fbm, {u}.feature)",
+            NoiseKind::Fibers => "fibers(p, {u}.fibers, {u}.fiber_grid, {u}.speck_grid)",
+        };
+        call.replace("{u}", u)
     }
+}
+
+/// Where `sample_noise` reads its [`crate::noise_gpu::NoiseGpu`] uniform.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum UniformAt<'a> {
+    /// Its argument: `sample_noise(p: vec2<f32>, u: NoiseUniform)`.
+    Argument,
+    /// Element `i` of a module-scope array, `sample_noise(p: vec2<f32>, i: u32)`
+    /// reading `ARRAY[i]` (e.g. `surface.noises`): no 304-byte struct is copied, which
+    /// on SwiftShader cut a Gabor module's compile by about a sixth.
+    Element(&'a str),
 }
 
 /// A set of noise types: what a module's `sample_noise` can draw. A shader holding
@@ -186,42 +232,55 @@ impl NoiseKinds {
     }
 }
 
-/// `sample_noise` drawing the types `kinds` (0 for any other `noise_type`).
+/// `sample_noise` drawing the types `kinds` (0 for any other `noise_type`), reading its
+/// uniform `at`.
 #[must_use]
-pub fn sample_noise_wgsl(kinds: NoiseKinds) -> String {
+pub fn sample_noise_wgsl(kinds: NoiseKinds, at: UniformAt) -> String {
+    let (parameter, u) = match at {
+        UniformAt::Argument => ("u: NoiseUniform".to_owned(), "u".to_owned()),
+        UniformAt::Element(array) => ("i: u32".to_owned(), format!("{array}[i]")),
+    };
     let cases: String = kinds
         .iter()
         .map(|k| {
             format!(
                 "        case {}u: {{\n            return {};\n        }}\n",
                 k as u32,
-                k.call()
+                k.call(&u)
             )
         })
         .collect();
     format!(
-        "fn sample_noise(p: vec2<f32>, u: NoiseUniform) -> f32 {{\n    switch u.noise_type {{\n{cases}        default: {{\n            return 0.0;\n        }}\n    }}\n}}\n"
+        "fn sample_noise(p: vec2<f32>, {parameter}) -> f32 {{\n    switch {u}.noise_type {{\n{cases}        default: {{\n            return 0.0;\n        }}\n    }}\n}}\n"
     )
 }
 
 /// The source of module `name` with its dependencies prepended, ready for
-/// `create_shader_module` (append an entry point); `sample_noise` draws every type.
+/// `create_shader_module` (append an entry point); `sample_noise` draws every type from
+/// its argument.
 #[must_use]
 pub fn module(name: &str) -> Option<String> {
-    module_for(name, NoiseKinds::ALL)
+    module_for(name, NoiseKinds::ALL, UniformAt::Argument)
 }
 
-/// [`module`] with a `sample_noise` that draws only the types `kinds`.
+/// [`module`] with a `sample_noise` that draws only the types `kinds`, reading its
+/// uniform `at`; without [`NoiseKind::DrivenGabor`] in `kinds` the Gabor noise has no
+/// drives (`gabor_drive_off.wgsl`).
 #[must_use]
-pub fn module_for(name: &str, kinds: NoiseKinds) -> Option<String> {
+pub fn module_for(name: &str, kinds: NoiseKinds, at: UniformAt) -> Option<String> {
     let deps = dependencies(name)?;
     let mut out = String::new();
     for d in deps {
         let (_, src) = FILES.iter().find(|(n, _)| n == d)?;
+        let src = if *d == "gabor_drive" && !kinds.contains(NoiseKind::DrivenGabor) {
+            GABOR_DRIVE_OFF
+        } else {
+            src
+        };
         out.push_str(src);
         out.push('\n');
         if *d == "noise" {
-            out.push_str(&sample_noise_wgsl(kinds));
+            out.push_str(&sample_noise_wgsl(kinds, at));
         }
     }
     Some(out)
