@@ -7,45 +7,16 @@
 
 use marbling_gpu::shaders::ExactVariant;
 use marbling_noise::wgsl::{NoiseKind, NoiseKinds};
-use naga::back::glsl;
+use marbling_testkit::wgsl::webgl2_glsl;
 use std::path::Path;
 
 /// Writes `source`'s `vs_main` and `fs_main` to `dir/name.vert` and `dir/name.frag`.
 fn write(dir: &Path, name: &str, source: &str) -> Result<(), String> {
-    let module = naga::front::wgsl::parse_str(source).map_err(|e| format!("{name}: {e}"))?;
-    let info = naga::valid::Validator::new(
-        naga::valid::ValidationFlags::all(),
-        naga::valid::Capabilities::empty(),
-    )
-    .validate(&module)
-    .map_err(|e| format!("{name}: {e}"))?;
-    let options = glsl::Options {
-        version: glsl::Version::Embedded {
-            version: 300,
-            is_webgl: true,
-        },
-        ..Default::default()
-    };
     for (stage, entry, ext) in [
         (naga::ShaderStage::Vertex, "vs_main", "vert"),
         (naga::ShaderStage::Fragment, "fs_main", "frag"),
     ] {
-        let pipeline = glsl::PipelineOptions {
-            shader_stage: stage,
-            entry_point: entry.to_owned(),
-            multiview: None,
-        };
-        let mut out = String::new();
-        glsl::Writer::new(
-            &mut out,
-            &module,
-            &info,
-            &options,
-            &pipeline,
-            naga::proc::BoundsCheckPolicies::default(),
-        )
-        .and_then(|mut w| w.write())
-        .map_err(|e| format!("{name} {entry}: {e}"))?;
+        let out = webgl2_glsl(source, stage, entry).map_err(|e| format!("{name}: {e}"))?;
         let path = dir.join(format!("{name}.{ext}"));
         std::fs::write(&path, out).map_err(|e| format!("{}: {e}", path.display()))?;
     }

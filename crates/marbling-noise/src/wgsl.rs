@@ -54,6 +54,24 @@ pub const FILES: &[(&str, &str)] = &[
     ("layers", LAYERS),
 ];
 
+/// The files of the `layers` module, in order; the `noise` module's are these without
+/// `layers`.
+const LAYERS_FILES: &[&str] = &[
+    "hash",
+    "perlin",
+    "value",
+    "fbm",
+    "worley",
+    "white",
+    "curl",
+    "gabor",
+    "gabor_drive",
+    "fibers",
+    "transfer",
+    "noise",
+    "layers",
+];
+
 /// The files a module needs, itself last.
 #[must_use]
 pub fn dependencies(name: &str) -> Option<&'static [&'static str]> {
@@ -69,35 +87,8 @@ pub fn dependencies(name: &str) -> Option<&'static [&'static str]> {
         "gabor" | "gabor_drive" => &["hash", "perlin", "value", "fbm", "gabor", "gabor_drive"],
         "fibers" => &["hash", "fibers"],
         "transfer" => &["transfer"],
-        "noise" => &[
-            "hash",
-            "perlin",
-            "value",
-            "fbm",
-            "worley",
-            "white",
-            "curl",
-            "gabor",
-            "gabor_drive",
-            "fibers",
-            "transfer",
-            "noise",
-        ],
-        "layers" => &[
-            "hash",
-            "perlin",
-            "value",
-            "fbm",
-            "worley",
-            "white",
-            "curl",
-            "gabor",
-            "gabor_drive",
-            "fibers",
-            "transfer",
-            "noise",
-            "layers",
-        ],
+        "noise" => &LAYERS_FILES[..LAYERS_FILES.len() - 1],
+        "layers" => LAYERS_FILES,
         _ => return None,
     })
 }

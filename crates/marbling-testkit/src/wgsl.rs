@@ -68,6 +68,44 @@ pub fn check_uniform(module: &naga::Module, name: &str, host: &[(&str, usize)], 
     );
 }
 
+/// The GLSL ES 3.00 that WebGL2 compiles for entry point `entry` (of `stage`) of the
+/// WGSL `source`, written by naga's WebGL2 writer as wgpu's GL backend uses it; an error
+/// names the step that failed.
+pub fn webgl2_glsl(source: &str, stage: naga::ShaderStage, entry: &str) -> Result<String, String> {
+    use naga::back::glsl;
+    let module = naga::front::wgsl::parse_str(source).map_err(|e| e.emit_to_string(source))?;
+    let info = naga::valid::Validator::new(
+        naga::valid::ValidationFlags::all(),
+        naga::valid::Capabilities::empty(),
+    )
+    .validate(&module)
+    .map_err(|e| e.emit_to_string(source))?;
+    let options = glsl::Options {
+        version: glsl::Version::Embedded {
+            version: 300,
+            is_webgl: true,
+        },
+        ..Default::default()
+    };
+    let pipeline = glsl::PipelineOptions {
+        shader_stage: stage,
+        entry_point: entry.to_owned(),
+        multiview: None,
+    };
+    let mut out = String::new();
+    glsl::Writer::new(
+        &mut out,
+        &module,
+        &info,
+        &options,
+        &pipeline,
+        naga::proc::BoundsCheckPolicies::default(),
+    )
+    .and_then(|mut w| w.write())
+    .map_err(|e| format!("{entry} → GLSL ES 3.00: {e}"))?;
+    Ok(out)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

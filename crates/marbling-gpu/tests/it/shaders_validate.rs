@@ -54,40 +54,12 @@ fn a_broken_shader_is_caught() {
 /// in the browser), so nothing in the WGSL needs a feature WebGL2 lacks.
 #[test]
 fn every_entry_point_translates_to_webgl2_glsl() {
-    use naga::back::glsl;
     for (name, source) in all() {
         let module = naga::front::wgsl::parse_str(&source).expect("parses");
-        let info = naga::valid::Validator::new(
-            naga::valid::ValidationFlags::all(),
-            naga::valid::Capabilities::empty(),
-        )
-        .validate(&module)
-        .expect("validates");
-        let options = glsl::Options {
-            version: glsl::Version::Embedded {
-                version: 300,
-                is_webgl: true,
-            },
-            ..Default::default()
-        };
         for entry in &module.entry_points {
             let (stage, entry) = (entry.stage, entry.name.as_str());
-            let pipeline = glsl::PipelineOptions {
-                shader_stage: stage,
-                entry_point: entry.to_owned(),
-                multiview: None,
-            };
-            let mut out = String::new();
-            glsl::Writer::new(
-                &mut out,
-                &module,
-                &info,
-                &options,
-                &pipeline,
-                naga::proc::BoundsCheckPolicies::default(),
-            )
-            .and_then(|mut w| w.write())
-            .unwrap_or_else(|e| panic!("{name}.wgsl {entry} → GLSL ES 300: {e}"));
+            let out = marbling_testkit::wgsl::webgl2_glsl(&source, stage, entry)
+                .unwrap_or_else(|e| panic!("{name}.wgsl {entry}: {e}"));
             assert!(out.starts_with("#version 300 es"), "{name} {entry}");
             let missing = missing_from_glsl_es_300(&out);
             assert!(
