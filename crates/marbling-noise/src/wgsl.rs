@@ -178,7 +178,7 @@ pub enum UniformAt<'a> {
 /// A set of noise types: what a module's `sample_noise` can draw. A shader holding
 /// only the types a design uses compiles and runs far faster on SwiftShader, which
 /// compiles and runs every case of a switch (measured in the browser: a Perlin
-/// background 40 s with a 10 s compile for all six types, 9 s for Perlin's alone).
+/// background 40 s with a 10 s compile for every type, 9 s for Perlin's alone).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub struct NoiseKinds(u8);
 
